@@ -1,0 +1,55 @@
+#pragma once
+// The GO / APPROACH / WAIT / LEAVE state machine (SPEC 3). All agents decide at once from
+// the states of the previous step, so the result never depends on agent order:
+//  - LEAVE agents count down their timeout, then search again (GO, new random heading);
+//  - WAIT agents resume GO when isolated (if the rules say so), else leave with P_l(i);
+//  - searching agents (GO, APPROACH) within s of a waiting agent join it (if allowed); the
+//    rest pair up with the nearest other searching agent (greedy by distance, so pairs are
+//    mutual); with joining allowed, a searcher whose neighbour paired joins that pair;
+//  - Soysal's searchers head for the nearest non-leaving agent within s_a (APPROACH).
+#include <cstdint>
+#include <vector>
+
+#include "controllers/aggregation_rules.hpp"
+#include "controllers/controller.hpp"
+
+namespace swarmagg {
+
+class AggregationController final : public Controller {
+ public:
+  explicit AggregationController(const AggregationRules& rules) : rules_(rules) {}
+
+  void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
+              std::span<MotionCommand> commands, EventCounts& events) override;
+
+ private:
+  struct SearchPair {
+    double distance;
+    std::uint32_t a;
+    std::uint32_t b;
+  };
+
+  bool searching(std::uint32_t agent) const;
+  bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
+  double leave_probability(std::uint32_t agent, const ControllerInput& input) const;
+  bool isolated(std::uint32_t agent, const ControllerInput& input, const SwarmState& swarm) const;
+
+  void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
+                      const CounterRng& rng);
+  void update_waiting(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
+                      const CounterRng& rng);
+  void count_leave(std::uint32_t agent, const ControllerInput& input, EventCounts& events);
+  void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
+  void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
+  void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);
+  Vec2 escape_direction(std::uint32_t agent, const ControllerInput& input, Vec2 fallback) const;
+  MotionCommand command_for(std::uint32_t agent, const SwarmState& swarm) const;
+
+  AggregationRules rules_;
+  std::vector<AgentState> previous_;
+  std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
+  std::vector<SearchPair> pairs_;
+  std::vector<std::int32_t> leavers_left_;  // per aggregate: members not yet counted leaving
+};
+
+}  // namespace swarmagg

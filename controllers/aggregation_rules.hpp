@@ -1,0 +1,34 @@
+#pragma once
+// The parameters of the aggregation state machine that Bayindir's, Soysal's and the
+// collision experiment's controllers share (SPEC 3); each controller only builds these.
+#include <optional>
+
+#include "config/world_spec.hpp"
+
+namespace swarmagg {
+
+struct LeaveRule {
+  double base = 0.0;     // probability per step for an agent of an aggregate of size 1
+  int size_exponent = 0;  // P_l(i) = base / i^size_exponent
+  LeaveSize size_source = LeaveSize::Aggregate;
+};
+
+struct AggregationRules {
+  bool join = true;   // searching agents may join waiting agents
+  bool leave = true;  // waiting agents may leave
+  bool resume_when_isolated = true;
+  LeaveRule leave_rule;
+  double leave_timeout = 10.0;  // tu
+  double speed = 1.0;
+  double dt = 0.1;
+  double detection_radius = 4.0;
+  std::optional<double> approach_radius;  // Soysal's APPROACH state
+  double tumble = 0.0;                    // heading redraw probability per step while GO
+};
+
+AggregationRules bayindir_rules(const WorldSpec& spec);
+AggregationRules soysal_rules(const WorldSpec& spec);
+// The paper's collision check: pairs form (join: false) and leave at once (p = 1).
+AggregationRules collision_paper_rules(const WorldSpec& spec);
+
+}  // namespace swarmagg

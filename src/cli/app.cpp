@@ -1,0 +1,37 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "core/errors.hpp"
+#include "run/interrupt.hpp"
+
+namespace swarmagg::cli {
+
+int main(int argc, char** argv) {
+  CLI::App app{"swarmagg: self-organized aggregation in 2D robot swarms"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", SWARMAGG_VERSION);
+  Action action;
+  // One line per subcommand (keep this list in the order of `swarmagg --help`).
+  add_run_command(app, action);
+  add_validate_command(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const Interrupted& e) {
+    std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
+    return e.exit_code();
+  } catch (const InputError& e) {
+    std::cerr << "swarmagg: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "swarmagg: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace swarmagg::cli

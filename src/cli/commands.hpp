@@ -1,0 +1,17 @@
+#pragma once
+// Every subcommand lives in its own file and adds itself to the application with one of
+// these functions. The action it stores runs after a successful parse and returns the exit
+// code (0 success, 2 bad input, 1 failure); exceptions are mapped in app.cpp.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace swarmagg::cli {
+
+using Action = std::function<int()>;
+
+void add_run_command(CLI::App& app, Action& action);
+void add_validate_command(CLI::App& app, Action& action);
+
+int main(int argc, char** argv);
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,21 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/world_options.hpp"
+#include "config/world_writer.hpp"
+
+namespace swarmagg::cli {
+
+void add_validate_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<WorldOptions>();
+  CLI::App* command = app.add_subcommand("validate", "Check a world file and print it fully resolved");
+  options->add_to(*command);
+  command->callback([options, &action] {
+    action = [options] {
+      std::cout << world_to_yaml(options->load());
+      return 0;
+    };
+  });
+}
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,27 @@
+#include "cli/world_options.hpp"
+
+#include "config/world_loader.hpp"
+
+namespace swarmagg::cli {
+
+void WorldOptions::add_to(CLI::App& command, bool run_options) {
+  command.add_option("world", path, "World file (YAML)")->required();
+  command.add_option("--set", overrides,
+                     "Override a world key, e.g. --set robots.count=80 (repeatable)");
+  if (!run_options) return;
+  command.add_option("--engine", engine, "Engine: kinematic or box2d (engine.type)");
+  command.add_option("--replicates", replicates, "Number of replicates (run.replicates)");
+  command.add_option("--seed", seed, "World seed (run.seed)");
+  command.add_option("--threads", threads, "Threads (run.threads; 0 = all cores)");
+}
+
+WorldSpec WorldOptions::load() const {
+  std::vector<std::string> all = overrides;
+  if (engine) all.push_back("engine.type=" + *engine);
+  if (replicates) all.push_back("run.replicates=" + std::to_string(*replicates));
+  if (seed) all.push_back("run.seed=" + std::to_string(*seed));
+  if (threads) all.push_back("run.threads=" + std::to_string(*threads));
+  return load_world(path, all);
+}
+
+}  // namespace swarmagg::cli

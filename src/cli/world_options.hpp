@@ -1,0 +1,26 @@
+#pragma once
+// The options every world-taking subcommand shares: the world file, --set overrides and
+// the common shortcuts, each of which is just another override of a world key.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+
+namespace swarmagg::cli {
+
+struct WorldOptions {
+  std::string path;
+  std::vector<std::string> overrides;
+  std::optional<std::string> engine;
+  std::optional<int> replicates;
+  std::optional<std::uint64_t> seed;
+  std::optional<int> threads;
+
+  // Adds WORLD and --set; with `run_options`, also --engine/--replicates/--seed/--threads.
+  void add_to(CLI::App& command, bool run_options = true);
+  WorldSpec load() const;
+};
+
+}  // namespace swarmagg::cli

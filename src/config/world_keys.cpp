@@ -1,0 +1,297 @@
+#include "config/world_keys.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace swarmagg {
+namespace {
+
+template <typename T>
+using Access = std::function<T&(WorldSpec&)>;
+
+std::string scalar_text(const YAML::Node& node, const std::string& expected) {
+  if (!node.IsScalar()) throw KeyValueError{expected};
+  return node.Scalar();
+}
+
+double read_real(const YAML::Node& node, const std::string& expected) {
+  const std::string text = scalar_text(node, expected);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
+    throw KeyValueError{expected};
+  }
+  return value;
+}
+
+long long read_integer(const YAML::Node& node, const std::string& expected) {
+  const std::string text = scalar_text(node, expected);
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) throw KeyValueError{expected};
+  return value;
+}
+
+struct RealBounds {
+  double low;
+  bool low_inclusive;
+  double high;
+  std::string expected;
+};
+
+const RealBounds kPositive{0.0, false, std::numeric_limits<double>::infinity(),
+                           "a positive number"};
+const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(),
+                              "a number >= 0"};
+const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
+
+WorldKey real_key(std::string path, Access<double> access, const RealBounds& bounds) {
+  auto read = [access, bounds](WorldSpec& w, const YAML::Node& node) {
+    const double v = read_real(node, bounds.expected);
+    const bool above = bounds.low_inclusive ? v >= bounds.low : v > bounds.low;
+    if (!above || v > bounds.high) throw KeyValueError{bounds.expected};
+    access(w) = v;
+  };
+  auto write = [access](const WorldSpec& w) {
+    return YAML::Node(format_number(access(const_cast<WorldSpec&>(w))));
+  };
+  return {std::move(path), bounds.expected, read, write};
+}
+
+template <typename Int>
+WorldKey integer_key(std::string path, Access<Int> access, long long low, long long high) {
+  std::string expected = "a whole number from " + std::to_string(low) + " to " +
+                         std::to_string(high);
+  auto read = [access, low, high, expected](WorldSpec& w, const YAML::Node& node) {
+    const long long v = read_integer(node, expected);
+    if (v < low || v > high) throw KeyValueError{expected};
+    access(w) = static_cast<Int>(v);
+  };
+  auto write = [access](const WorldSpec& w) {
+    return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
+  };
+  return {std::move(path), expected, read, write};
+}
+
+WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
+  std::string expected = "a whole number from 0 to 18446744073709551615";
+  auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
+    const std::string text = scalar_text(node, expected);
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size()) throw KeyValueError{expected};
+    access(w) = value;
+  };
+  auto write = [access](const WorldSpec& w) {
+    return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
+  };
+  return {std::move(path), expected, read, write};
+}
+
+WorldKey bool_key(std::string path, Access<bool> access) {
+  const std::string expected = "true or false";
+  auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
+    const std::string text = scalar_text(node, expected);
+    if (text == "true") {
+      access(w) = true;
+    } else if (text == "false") {
+      access(w) = false;
+    } else {
+      throw KeyValueError{expected};
+    }
+  };
+  auto write = [access](const WorldSpec& w) {
+    return YAML::Node(access(const_cast<WorldSpec&>(w)) ? "true" : "false");
+  };
+  return {std::move(path), expected, read, write};
+}
+
+template <typename Enum>
+WorldKey enum_key(std::string path, Access<Enum> access,
+                  std::vector<std::pair<std::string, Enum>> names) {
+  std::string expected = "one of:";
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    expected += (k == 0 ? " " : ", ") + names[k].first;
+  }
+  auto read = [access, names, expected](WorldSpec& w, const YAML::Node& node) {
+    const std::string text = scalar_text(node, expected);
+    for (const auto& [name, value] : names) {
+      if (name == text) {
+        access(w) = value;
+        return;
+      }
+    }
+    throw KeyValueError{expected};
+  };
+  auto write = [access, names](const WorldSpec& w) {
+    const Enum value = access(const_cast<WorldSpec&>(w));
+    for (const auto& [name, v] : names) {
+      if (v == value) return YAML::Node(name);
+    }
+    return YAML::Node();
+  };
+  return {std::move(path), expected, read, write};
+}
+
+WorldKey string_key(std::string path, Access<std::string> access) {
+  const std::string expected = "a text";
+  auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
+    access(w) = scalar_text(node, expected);
+  };
+  auto write = [access](const WorldSpec& w) {
+    return YAML::Node(access(const_cast<WorldSpec&>(w)));
+  };
+  return {std::move(path), expected, read, write};
+}
+
+WorldKey name_key() {
+  const std::string expected = "a name of letters, digits, '-', '_' or '.'";
+  auto read = [expected](WorldSpec& w, const YAML::Node& node) {
+    const std::string text = scalar_text(node, expected);
+    const bool ok = !text.empty() && text.size() <= 128 && text.front() != '.' &&
+                    text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_.") == std::string::npos;
+    if (!ok) throw KeyValueError{expected};
+    w.name = text;
+  };
+  auto write = [](const WorldSpec& w) { return YAML::Node(w.name); };
+  return {"name", expected, read, write};
+}
+
+WorldKey placement_key() {
+  const std::string expected = "'random' or a list of [x, y, heading_deg]";
+  auto read = [expected](WorldSpec& w, const YAML::Node& node) {
+    if (node.IsScalar() && node.Scalar() == "random") {
+      w.robots.placement.clear();
+      return;
+    }
+    if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
+    std::vector<PlacedAgent> placed;
+    for (const YAML::Node& item : node) {
+      if (!item.IsSequence() || item.size() != 3) throw KeyValueError{expected};
+      placed.push_back({read_real(item[0], expected), read_real(item[1], expected),
+                        read_real(item[2], expected)});
+    }
+    w.robots.placement = std::move(placed);
+  };
+  auto write = [](const WorldSpec& w) {
+    if (w.robots.placement.empty()) return YAML::Node("random");
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (const PlacedAgent& a : w.robots.placement) {
+      YAML::Node item(YAML::NodeType::Sequence);
+      item.SetStyle(YAML::EmitterStyle::Flow);
+      item.push_back(format_number(a.x));
+      item.push_back(format_number(a.y));
+      item.push_back(format_number(a.heading_deg));
+      list.push_back(item);
+    }
+    return list;
+  };
+  return {"robots.placement", expected, read, write};
+}
+
+std::vector<WorldKey> build_keys() {
+  constexpr long long kMaxAgents = 100'000'000;
+  constexpr long long kMaxInt = 1'000'000'000;
+  std::vector<WorldKey> keys;
+  keys.push_back(name_key());
+  keys.push_back(real_key("arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive));
+  keys.push_back(real_key("arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive));
+  keys.push_back(enum_key<Topology>("arena.topology", [](WorldSpec& w) -> Topology& { return w.arena.topology; },
+                                    {{"torus", Topology::Torus}, {"walls", Topology::Walls}}));
+  keys.push_back(integer_key<int>("robots.count", [](WorldSpec& w) -> int& { return w.robots.count; }, 1, kMaxAgents));
+  keys.push_back(real_key("robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive));
+  keys.push_back(real_key("robots.detection_radius", [](WorldSpec& w) -> double& { return w.robots.detection_radius; }, kPositive));
+  keys.push_back(real_key("robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative));
+  keys.push_back(placement_key());
+  keys.push_back(enum_key<ControllerType>(
+      "controller.type", [](WorldSpec& w) -> ControllerType& { return w.controller.type; },
+      {{"bayindir", ControllerType::Bayindir}, {"soysal", ControllerType::Soysal},
+       {"collision", ControllerType::Collision}}));
+  keys.push_back(real_key("controller.p_leave", [](WorldSpec& w) -> double& { return w.controller.p_leave; }, kProbability));
+  keys.push_back(real_key("controller.leave_timeout", [](WorldSpec& w) -> double& { return w.controller.leave_timeout; }, kNonNegative));
+  keys.push_back(bool_key("controller.join", [](WorldSpec& w) -> bool& { return w.controller.join; }));
+  keys.push_back(bool_key("controller.leave", [](WorldSpec& w) -> bool& { return w.controller.leave; }));
+  keys.push_back(enum_key<IsolatedWait>(
+      "controller.isolated_wait", [](WorldSpec& w) -> IsolatedWait& { return w.controller.isolated_wait; },
+      {{"resume", IsolatedWait::Resume}, {"stay", IsolatedWait::Stay}}));
+  keys.push_back(real_key("controller.approach_radius", [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive));
+  keys.push_back(real_key("controller.p0", [](WorldSpec& w) -> double& { return w.controller.p0; }, kProbability));
+  keys.push_back(enum_key<LeaveLaw>(
+      "controller.leave_law", [](WorldSpec& w) -> LeaveLaw& { return w.controller.leave_law; },
+      {{"constant", LeaveLaw::Constant}, {"inverse", LeaveLaw::Inverse},
+       {"inverse_square", LeaveLaw::InverseSquare}}));
+  keys.push_back(enum_key<LeaveSize>(
+      "controller.leave_size", [](WorldSpec& w) -> LeaveSize& { return w.controller.leave_size; },
+      {{"aggregate", LeaveSize::Aggregate}, {"neighbours", LeaveSize::Neighbours}}));
+  keys.push_back(enum_key<CollisionMode>(
+      "controller.collision_mode", [](WorldSpec& w) -> CollisionMode& { return w.controller.collision_mode; },
+      {{"ghost", CollisionMode::Ghost}, {"paper", CollisionMode::Paper}}));
+  keys.push_back(real_key("controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; }, kProbability));
+  keys.push_back(enum_key<EngineType>(
+      "engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
+      {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
+  keys.push_back(real_key("engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive));
+  keys.push_back(real_key("engine.box2d.repulsion_gain", [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative));
+  keys.push_back(real_key("engine.box2d.linear_damping", [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative));
+  keys.push_back(integer_key<int>("engine.box2d.velocity_iterations", [](WorldSpec& w) -> int& { return w.engine.box2d.velocity_iterations; }, 1, 100));
+  keys.push_back(integer_key<int>("engine.box2d.position_iterations", [](WorldSpec& w) -> int& { return w.engine.box2d.position_iterations; }, 1, 100));
+  keys.push_back(integer_key<int>("engine.box2d.substeps", [](WorldSpec& w) -> int& { return w.engine.box2d.substeps; }, 1, 1000));
+  keys.push_back(real_key("run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive));
+  keys.push_back(integer_key<int>("run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000));
+  keys.push_back(seed_key("run.seed", [](WorldSpec& w) -> std::uint64_t& { return w.run.seed; }));
+  keys.push_back(integer_key<int>("run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
+  keys.push_back(integer_key<int>("run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
+  keys.push_back(enum_key<Kappa>("model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
+                                 {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));
+  keys.push_back(enum_key<CreationVariant>(
+      "model.creation", [](WorldSpec& w) -> CreationVariant& { return w.model.creation; },
+      {{"original", CreationVariant::Original}, {"collision", CreationVariant::Collision}}));
+  keys.push_back(enum_key<LeavingVariant>(
+      "model.leaving", [](WorldSpec& w) -> LeavingVariant& { return w.model.leaving; },
+      {{"original", LeavingVariant::Original}, {"peripheral", LeavingVariant::Peripheral}}));
+  keys.push_back(bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }));
+  keys.push_back(integer_key<int>("model.stochastic_replicates", [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
+  keys.push_back(integer_key<int>("render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
+  keys.push_back(integer_key<int>("render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 16, 8192));
+  keys.push_back(integer_key<int>("render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 16, 8192));
+  keys.push_back(integer_key<int>("render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000));
+  keys.push_back(string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }));
+  return keys;
+}
+
+}  // namespace
+
+std::string format_number(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+const std::vector<WorldKey>& world_keys() {
+  static const std::vector<WorldKey> keys = build_keys();
+  return keys;
+}
+
+const WorldKey* find_world_key(const std::string& path) {
+  for (const WorldKey& key : world_keys()) {
+    if (key.path == path) return &key;
+  }
+  return nullptr;
+}
+
+const std::vector<std::string>& world_blocks() {
+  static const std::vector<std::string> blocks = {"arena", "robots", "controller", "engine",
+                                                  "engine.box2d", "run", "model", "render"};
+  return blocks;
+}
+
+std::vector<std::string> world_key_paths() {
+  std::vector<std::string> paths;
+  for (const WorldKey& key : world_keys()) paths.push_back(key.path);
+  return paths;
+}
+
+}  // namespace swarmagg

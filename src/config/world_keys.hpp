@@ -1,0 +1,36 @@
+#pragma once
+// The registry of world-file keys (SPEC 7): every dotted key path, what it expects, how to
+// read it into a WorldSpec and how to write it back. The loader, `--set`, `validate` and
+// the resolved-world writer all go through this one table.
+#include <yaml-cpp/yaml.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+
+namespace swarmagg {
+
+// Thrown by a key's reader when a value does not fit; the loader adds file, line and key.
+struct KeyValueError {
+  std::string expected;
+};
+
+struct WorldKey {
+  std::string path;      // e.g. "robots.count"
+  std::string expected;  // e.g. "a whole number >= 1"
+  std::function<void(WorldSpec&, const YAML::Node&)> read;
+  std::function<YAML::Node(const WorldSpec&)> write;
+};
+
+const std::vector<WorldKey>& world_keys();
+const WorldKey* find_world_key(const std::string& path);
+// Blocks that hold keys ("arena", "engine", "engine.box2d", ...), in writing order.
+const std::vector<std::string>& world_blocks();
+std::vector<std::string> world_key_paths();
+
+// Shortest decimal text that reads back to the same double.
+std::string format_number(double value);
+
+}  // namespace swarmagg

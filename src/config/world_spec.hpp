@@ -1,0 +1,122 @@
+#pragma once
+// The immutable description of a world, parsed once from YAML (config/world_loader) and
+// shared read-only by every replicate, engine, controller, observer and model. Every field
+// has the default SPEC.md section 7 gives; the key registry (config/world_keys) maps the
+// dotted YAML key paths onto these fields.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace swarmagg {
+
+enum class Topology { Torus, Walls };
+enum class ControllerType { Bayindir, Soysal, Collision };
+enum class IsolatedWait { Resume, Stay };
+enum class LeaveLaw { Constant, Inverse, InverseSquare };
+enum class LeaveSize { Aggregate, Neighbours };
+enum class CollisionMode { Ghost, Paper };
+enum class EngineType { Kinematic, Box2D };
+enum class Kappa { Kinetic, Maxwell, Paper };
+enum class CreationVariant { Original, Collision };
+enum class LeavingVariant { Original, Peripheral };
+
+struct ArenaSpec {
+  double width = 180.0;
+  double height = 180.0;
+  Topology topology = Topology::Torus;
+  double area() const { return width * height; }
+};
+
+struct PlacedAgent {
+  double x = 0.0;
+  double y = 0.0;
+  double heading_deg = 0.0;  // counter-clockwise from +x
+  friend bool operator==(const PlacedAgent&, const PlacedAgent&) = default;
+};
+
+struct RobotsSpec {
+  int count = 150;
+  double radius = 1.0;            // r, body radius
+  double detection_radius = 4.0;  // s, centre to centre
+  double speed = 1.0;             // v
+  std::vector<PlacedAgent> placement;  // empty: uniform random placement
+  bool random_placement() const { return placement.empty(); }
+};
+
+struct ControllerSpec {
+  ControllerType type = ControllerType::Bayindir;
+  double p_leave = 0.0;        // bayindir: per step
+  double leave_timeout = 10.0;  // tu
+  bool join = true;
+  bool leave = true;
+  IsolatedWait isolated_wait = IsolatedWait::Resume;
+  double approach_radius = 12.0;  // soysal: s_a
+  double p0 = 0.00002;            // soysal: per step
+  LeaveLaw leave_law = LeaveLaw::Constant;
+  LeaveSize leave_size = LeaveSize::Aggregate;
+  CollisionMode collision_mode = CollisionMode::Ghost;
+  double tumble = 0.0;  // collision: heading redraw probability per step
+};
+
+struct Box2DSpec {
+  double repulsion_gain = 20.0;     // force per unit mass at zero distance, fading to 0 at s
+  double linear_damping = 0.0;
+  int velocity_iterations = 8;
+  int position_iterations = 3;
+  int substeps = 1;                 // Box2D steps per simulation step
+};
+
+struct EngineSpec {
+  EngineType type = EngineType::Kinematic;
+  double dt = 0.1;
+  Box2DSpec box2d;
+};
+
+struct RunSpec {
+  double duration = 5000.0;  // tu
+  int replicates = 10;
+  std::uint64_t seed = 1;
+  int record_every = 10;  // steps between recorded rows
+  int threads = 0;        // 0: as many as the machine has
+};
+
+struct ModelSpec {
+  Kappa kappa = Kappa::Kinetic;
+  CreationVariant creation = CreationVariant::Collision;
+  LeavingVariant leaving = LeavingVariant::Peripheral;
+  bool periphery_cap = true;
+  int stochastic_replicates = 10;
+};
+
+struct RenderSpec {
+  int every = 0;  // 0: no frames
+  int width = 800;
+  int height = 800;
+  int replicate = 0;
+  std::string dir;  // empty: renders/<world name>/, or <out>/frames/ when --out is given
+};
+
+struct WorldSpec {
+  std::string name = "world";
+  std::string source;  // the file it was loaded from, for messages
+  ArenaSpec arena;
+  RobotsSpec robots;
+  ControllerSpec controller;
+  EngineSpec engine;
+  RunSpec run;
+  ModelSpec model;
+  RenderSpec render;
+
+  // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
+  std::int64_t steps() const { return std::llround(run.duration / engine.dt); }
+  // The largest radius any sensor of this world's controller reads.
+  double sensing_radius() const {
+    return controller.type == ControllerType::Soysal
+               ? std::max(robots.detection_radius, controller.approach_radius)
+               : robots.detection_radius;
+  }
+};
+
+}  // namespace swarmagg

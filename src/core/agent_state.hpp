@@ -1,0 +1,42 @@
+#pragma once
+// The controller state of every agent of one replicate (mutable, owned by the replicate).
+// The state value doubles as the signal an agent displays to the engine (motion_command.hpp).
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "core/vec2.hpp"
+
+namespace swarmagg {
+
+enum class AgentState : std::uint8_t { Go = 0, Wait = 1, Leave = 2, Approach = 3 };
+constexpr int kAgentStateCount = 4;
+
+constexpr std::string_view to_string(AgentState s) {
+  switch (s) {
+    case AgentState::Go: return "GO";
+    case AgentState::Wait: return "WAIT";
+    case AgentState::Leave: return "LEAVE";
+    case AgentState::Approach: return "APPROACH";
+  }
+  return "?";
+}
+
+constexpr std::int32_t kNoPartner = -1;
+
+struct SwarmState {
+  std::vector<AgentState> state;
+  std::vector<Vec2> heading;             // unit vector of the current straight-line motion
+  std::vector<double> leave_time_left;   // tu left in LEAVE
+  std::vector<std::int32_t> partner;     // the agent a pair formed with (join: false), or kNoPartner
+
+  void resize(std::size_t n) {
+    state.assign(n, AgentState::Go);
+    heading.assign(n, Vec2{1.0, 0.0});
+    leave_time_left.assign(n, 0.0);
+    partner.assign(n, kNoPartner);
+  }
+  std::size_t size() const { return state.size(); }
+};
+
+}  // namespace swarmagg

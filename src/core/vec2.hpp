@@ -1,0 +1,39 @@
+#pragma once
+// A 2D vector of doubles: positions, offsets and velocities in arena units.
+#include <cmath>
+
+namespace swarmagg {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+
+  constexpr Vec2& operator+=(Vec2 o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  constexpr Vec2& operator-=(Vec2 o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
+  constexpr Vec2& operator*=(double k) {
+    x *= k;
+    y *= k;
+    return *this;
+  }
+  friend constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+  friend constexpr Vec2 operator*(Vec2 a, double k) { return {a.x * k, a.y * k}; }
+  friend constexpr Vec2 operator*(double k, Vec2 a) { return {a.x * k, a.y * k}; }
+  friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
+};
+
+constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+constexpr double norm2(Vec2 a) { return dot(a, a); }
+inline double norm(Vec2 a) { return std::sqrt(norm2(a)); }
+inline Vec2 from_angle(double radians) { return {std::cos(radians), std::sin(radians)}; }
+
+}  // namespace swarmagg

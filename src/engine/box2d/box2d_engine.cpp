@@ -1,0 +1,376 @@
+#include "engine/box2d/box2d_engine.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "engine/box2d/contact_rules.hpp"
+#include "engine/box2d/fixture_tags.hpp"
+#include "engine/box2d/periodic_body.hpp"
+#include "engine/box2d/sensor_links.hpp"
+#include "geometry/arena_geometry.hpp"
+
+namespace swarmagg {
+namespace {
+
+using box2d::AgentControls;
+using box2d::BodyShapes;
+using box2d::ContactRules;
+using box2d::FixtureRole;
+using box2d::PeriodicBody;
+using box2d::SensorLink;
+using box2d::SensorLinks;
+using box2d::WallSide;
+
+// Box2D clamps a body's translation to b2_maxTranslation (2 u) per b2World::Step, silently.
+// Every step is cut into enough substeps that no body travels more than half of that in
+// one, which also bounds how far the torus images must reach ahead of a body.
+constexpr double kMaxTravelPerSubstep = 0.5 * b2_maxTranslation;
+constexpr int kMaxSubsteps = 4096;
+constexpr double kWallThickness = 10.0;
+
+b2Vec2 to_b2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+Vec2 from_b2(b2Vec2 v) { return {static_cast<double>(v.x), static_cast<double>(v.y)}; }
+
+class Box2DEngine final : public Engine {
+ public:
+  Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions);
+  Box2DEngine(const Box2DEngine&) = delete;
+  Box2DEngine& operator=(const Box2DEngine&) = delete;
+
+  StepReport step(std::span<const MotionCommand> commands,
+                  std::span<const Signal> signals) override;
+  std::span<const Vec2> positions() const override { return positions_; }
+  const NeighbourLists& neighbours() const override { return neighbours_; }
+  std::span<const std::uint8_t> reflections() const override { return reflections_; }
+
+ private:
+  std::size_t size() const { return bodies_.size(); }
+  Vec2 body_position(AgentId agent) const {
+    return from_b2(bodies_[agent].body()->GetPosition());
+  }
+  void create_walls();
+  void apply_signals(std::span<const MotionCommand> commands, std::span<const Signal> signals);
+  void compute_repulsion();
+  int substeps_for(std::span<const MotionCommand> commands) const;
+  void apply_forces(float h);
+  void wrap_bodies();
+  void collect(std::span<const MotionCommand> commands);
+
+  ArenaGeometry geometry_;
+  double dt_;
+  double detection_radius_;
+  double sensing_radius_;
+  double repulsion_gain_;
+  int min_substeps_;
+  int velocity_iterations_;
+  int position_iterations_;
+  BodyShapes shapes_;
+
+  // Declared before the world so that the world, whose callbacks use them, dies first.
+  AgentControls controls_;
+  SensorLinks links_;
+  std::vector<PeriodicBody> bodies_;
+  ContactRules rules_;
+  std::unique_ptr<b2World> world_;
+  b2Body* walls_ = nullptr;
+
+  std::vector<Vec2> forces_;
+  std::vector<Vec2> positions_;
+  NeighbourLists neighbours_;
+  std::vector<std::uint8_t> reflections_;
+};
+
+void check_spec(const WorldSpec& spec, const BodyShapes& shapes) {
+  const Box2DSpec& b = spec.engine.box2d;
+  std::ostringstream why;
+  if (!(spec.engine.dt > 0.0)) why << "engine.dt must be > 0";
+  else if (b.substeps < 1) why << "engine.box2d.substeps must be >= 1";
+  else if (b.velocity_iterations < 1 || b.position_iterations < 1)
+    why << "engine.box2d.velocity_iterations and position_iterations must be >= 1";
+  else if (!(spec.robots.radius > 0.0)) why << "robots.radius must be > 0";
+  else if (!(spec.robots.detection_radius > 0.0)) why << "robots.detection_radius must be > 0";
+  else if (b.repulsion_gain < 0.0 || b.linear_damping < 0.0)
+    why << "engine.box2d.repulsion_gain and linear_damping must be >= 0";
+  else if (spec.robots.speed * spec.engine.dt / kMaxTravelPerSubstep > kMaxSubsteps)
+    why << "robots.speed * engine.dt = " << spec.robots.speed * spec.engine.dt
+        << " u per step would need more than " << kMaxSubsteps
+        << " Box2D substeps (Box2D moves a body at most " << b2_maxTranslation
+        << " u per step)";
+  else if (shapes.torus && std::min(spec.arena.width, spec.arena.height) <=
+                               2.0 * static_cast<double>(shapes.keep_margin))
+    why << "a torus arena must be wider and higher than " << 2.0 * shapes.keep_margin
+        << " for the Box2D engine (twice the sensing radius plus " << 2.0 * (shapes.keep_margin -
+                                                                              spec.sensing_radius())
+        << ": the periodic images of two edges must not meet)";
+  if (!why.str().empty()) {
+    throw InputError((spec.source.empty() ? spec.name : spec.source) + ": " + why.str());
+  }
+}
+
+BodyShapes shapes_for(const WorldSpec& spec) {
+  BodyShapes shapes;
+  const double s = spec.robots.detection_radius;
+  const double sensing = std::max(spec.sensing_radius(), s);
+  shapes.solid_radius = static_cast<float>(spec.robots.radius);
+  shapes.detect_radius = static_cast<float>(0.5 * s);
+  shapes.sense_radius = sensing > s ? static_cast<float>(0.5 * sensing) : 0.0f;
+  shapes.width = static_cast<float>(spec.arena.width);
+  shapes.height = static_cast<float>(spec.arena.height);
+  shapes.torus = spec.arena.topology == Topology::Torus;
+  // A pair interacts across the seam only when both centres are within `sensing` of it; a
+  // body moves at most kMaxTravelPerSubstep between two image updates.
+  shapes.add_margin = static_cast<float>(sensing + kMaxTravelPerSubstep + 0.5);
+  shapes.keep_margin = shapes.add_margin + 1.0f;
+  shapes.linear_damping = static_cast<float>(spec.engine.box2d.linear_damping);
+  return shapes;
+}
+
+Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
+    : geometry_(spec.arena),
+      dt_(spec.engine.dt),
+      detection_radius_(spec.robots.detection_radius),
+      sensing_radius_(std::max(spec.sensing_radius(), spec.robots.detection_radius)),
+      repulsion_gain_(spec.engine.box2d.repulsion_gain),
+      min_substeps_(spec.engine.box2d.substeps),
+      velocity_iterations_(spec.engine.box2d.velocity_iterations),
+      position_iterations_(spec.engine.box2d.position_iterations),
+      shapes_(shapes_for(spec)),
+      rules_(controls_, links_, bodies_) {
+  check_spec(spec, shapes_);
+  const std::size_t n = initial_positions.size();
+  controls_.resize(n);
+  links_.reset(n);
+  forces_.assign(n, Vec2{});
+  positions_.assign(n, Vec2{});
+  reflections_.assign(n, 0);
+
+  world_ = std::make_unique<b2World>(b2Vec2(0.0f, 0.0f));
+  world_->SetAllowSleeping(false);
+  // Continuous collision only matters against static bodies (the walls); without walls it
+  // would only scan every contact once more per step.
+  world_->SetContinuousPhysics(!shapes_.torus);
+  world_->SetContactFilter(&rules_);
+  world_->SetContactListener(&rules_);
+
+  bodies_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec2 p = geometry_.wrap(initial_positions[i]);
+    if (!shapes_.torus && (p.x < 0.0 || p.x > geometry_.width() || p.y < 0.0 ||
+                           p.y > geometry_.height())) {
+      throw InputError("agent " + std::to_string(i) + " is placed outside the walled arena");
+    }
+    bodies_[i].create(*world_, static_cast<AgentId>(i), to_b2(p), shapes_);
+  }
+  if (!shapes_.torus) create_walls();
+
+  // A step of zero length runs only Box2D's contact update: the overlaps of the initial
+  // placement become sensor links (neither encounters nor halts).
+  world_->Step(0.0f, velocity_iterations_, position_iterations_);
+  collect({});
+}
+
+void Box2DEngine::create_walls() {
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  walls_ = world_->CreateBody(&def);
+  const float w = shapes_.width;
+  const float h = shapes_.height;
+  const float t = static_cast<float>(kWallThickness);
+  struct Box {
+    WallSide side;
+    b2Vec2 half;
+    b2Vec2 centre;
+  };
+  const Box boxes[] = {
+      {WallSide::Left, {0.5f * t, 0.5f * h + t}, {-0.5f * t, 0.5f * h}},
+      {WallSide::Right, {0.5f * t, 0.5f * h + t}, {w + 0.5f * t, 0.5f * h}},
+      {WallSide::Bottom, {0.5f * w + t, 0.5f * t}, {0.5f * w, -0.5f * t}},
+      {WallSide::Top, {0.5f * w + t, 0.5f * t}, {0.5f * w, h + 0.5f * t}},
+  };
+  for (const Box& box : boxes) {
+    b2PolygonShape shape;
+    shape.SetAsBox(box.half.x, box.half.y, box.centre, 0.0f);
+    b2FixtureDef fixture;
+    fixture.shape = &shape;
+    fixture.friction = 0.0f;
+    fixture.restitution = 0.0f;
+    fixture.filter = box2d::filter_for(FixtureRole::Wall);
+    fixture.userData.pointer =
+        box2d::encode_tag({static_cast<AgentId>(box.side), FixtureRole::Wall});
+    walls_->CreateFixture(&fixture);
+  }
+}
+
+void Box2DEngine::apply_signals(std::span<const MotionCommand> commands,
+                                std::span<const Signal> signals) {
+  bool refiltered = false;
+  for (std::size_t i = 0; i < size(); ++i) {
+    const MotionCommand& c = commands[i];
+    controls_.halt_on[i] = c.halt_on;
+    controls_.repelled_by[i] = c.repelled_by;
+    controls_.halted[i] = 0;
+    if (signals[i] == controls_.signal[i] && c.blocked_by == controls_.blocked_by[i]) continue;
+    controls_.signal[i] = signals[i];
+    controls_.blocked_by[i] = c.blocked_by;
+    bodies_[i].refilter_solids();
+    refiltered = true;
+  }
+  if (refiltered) {
+    // Refiltering drops contacts that are no longer solid at the next contact update, but
+    // pairs that just became solid would only be found after the coming solver pass. Find
+    // them now so a body cannot sink into a neighbour it was just told to respect. (The
+    // contact manager is a non-const member of the non-const world: the cast is safe.)
+    const_cast<b2ContactManager&>(world_->GetContactManager()).FindNewContacts();
+  }
+}
+
+void Box2DEngine::compute_repulsion() {
+  const double s = detection_radius_;
+  for (std::size_t i = 0; i < size(); ++i) {
+    Vec2 force;
+    const SignalMask repelled_by = controls_.repelled_by[i];
+    if (repelled_by != 0 && repulsion_gain_ > 0.0 && !controls_.halted[i]) {
+      const Vec2 pi = body_position(static_cast<AgentId>(i));
+      for (const SensorLink& link : links_.of(static_cast<AgentId>(i))) {
+        if ((repelled_by & mask_of(controls_.signal[link.other])) == 0) continue;
+        const Vec2 d = geometry_.displacement(pi, body_position(link.other));
+        const double distance = norm(d);
+        if (distance >= s || distance <= 0.0) continue;
+        // Linear in the distance: `gain` (per unit mass) at contact of the centres, 0 at s.
+        force += d * (-repulsion_gain_ * (1.0 - distance / s) / distance);
+      }
+    }
+    forces_[i] = force;
+  }
+}
+
+int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < size(); ++i) {
+    fastest = std::max(fastest, norm(commands[i].velocity + forces_[i] * dt_));
+  }
+  const double needed = std::ceil(fastest * dt_ / kMaxTravelPerSubstep);
+  if (needed > kMaxSubsteps) {
+    throw std::runtime_error("Box2D engine: a commanded speed of " + std::to_string(fastest) +
+                             " u/tu needs more than " + std::to_string(kMaxSubsteps) +
+                             " substeps per step");
+  }
+  return std::max(min_substeps_, static_cast<int>(needed));
+}
+
+void Box2DEngine::apply_forces(float h) {
+  constexpr float kCap = 0.999f * b2_maxTranslation;
+  const float inv_damping = 1.0f / (1.0f + h * shapes_.linear_damping);
+  for (std::size_t i = 0; i < size(); ++i) {
+    b2Body* body = bodies_[i].body();
+    const b2Vec2 force = to_b2(forces_[i]);
+    if (force.x != 0.0f || force.y != 0.0f) body->ApplyForceToCenter(force, true);
+    // What Box2D will integrate before its contact solver; it would clamp beyond the cap.
+    const b2Vec2 v = inv_damping * (body->GetLinearVelocity() + h * force);
+    if (h * v.Length() > kCap) {
+      throw std::runtime_error("Box2D engine: agent " + std::to_string(i) + " would move " +
+                               std::to_string(h * v.Length()) +
+                               " u in one Box2D step; Box2D would clamp it to " +
+                               std::to_string(b2_maxTranslation));
+    }
+  }
+}
+
+void Box2DEngine::wrap_bodies() {
+  if (!shapes_.torus) return;
+  for (PeriodicBody& body : bodies_) {
+    body.wrap();
+    body.update_images();
+  }
+}
+
+StepReport Box2DEngine::step(std::span<const MotionCommand> commands,
+                             std::span<const Signal> signals) {
+  if (commands.size() != size() || signals.size() != size()) {
+    throw std::invalid_argument("Box2D engine: one command and one signal per agent expected");
+  }
+  apply_signals(commands, signals);
+  for (std::size_t i = 0; i < size(); ++i) {
+    bodies_[i].body()->SetLinearVelocity(to_b2(commands[i].velocity));
+  }
+  compute_repulsion();
+  const int substeps = substeps_for(commands);
+  const float h = static_cast<float>(dt_ / substeps);
+
+  rules_.start_step();
+  for (int k = 0; k < substeps; ++k) {
+    if (k > 0) compute_repulsion();
+    apply_forces(h);
+    // Box2D first updates contacts (sensor events of the previous substep's motion fire
+    // here, and guarded moves stop their bodies), then solves and moves the bodies.
+    world_->Step(h, velocity_iterations_, position_iterations_);
+    wrap_bodies();
+  }
+  // Contact update only: the sensor events of the last substep's motion.
+  world_->Step(0.0f, velocity_iterations_, position_iterations_);
+  const std::uint64_t encounters = rules_.finish_step();
+  collect(commands);
+  return {encounters};
+}
+
+void Box2DEngine::collect(std::span<const MotionCommand> commands) {
+  const std::size_t n = size();
+  for (std::size_t i = 0; i < n; ++i) {
+    positions_[i] = geometry_.wrap(body_position(static_cast<AgentId>(i)));
+  }
+  const bool separate_sense = shapes_.sense_radius > 0.0f;
+  neighbours_.reset(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto agent = static_cast<AgentId>(i);
+    for (const SensorLink& link : links_.of(agent)) {
+      if ((separate_sense ? link.sense : link.detect) == 0) continue;
+      // Box2D's sensors work in float; the exact test is on the centre distance.
+      const Vec2 d = geometry_.displacement(positions_[i], positions_[link.other]);
+      const double distance = norm(d);
+      if (distance <= sensing_radius_) neighbours_.push({link.other, d, distance});
+    }
+    neighbours_.close_agent(agent);
+  }
+
+  std::fill(reflections_.begin(), reflections_.end(), std::uint8_t{0});
+  if (walls_ == nullptr || commands.empty()) return;
+  for (b2ContactEdge* edge = walls_->GetContactList(); edge != nullptr; edge = edge->next) {
+    b2Contact* contact = edge->contact;
+    if (!contact->IsTouching()) continue;
+    box2d::FixtureTag wall = box2d::tag_of(contact->GetFixtureA());
+    box2d::FixtureTag agent = box2d::tag_of(contact->GetFixtureB());
+    if (wall.role != FixtureRole::Wall) std::swap(wall, agent);
+    const Vec2 v = commands[agent.agent].velocity;
+    // Box2D stops the body at the wall; the bumper bit lets the controller turn its heading
+    // the way the kinematic engine's reflection does.
+    switch (static_cast<WallSide>(wall.agent)) {
+      case WallSide::Left:
+        if (v.x < 0.0) reflections_[agent.agent] |= ReflectedX;
+        break;
+      case WallSide::Right:
+        if (v.x > 0.0) reflections_[agent.agent] |= ReflectedX;
+        break;
+      case WallSide::Bottom:
+        if (v.y < 0.0) reflections_[agent.agent] |= ReflectedY;
+        break;
+      case WallSide::Top:
+        if (v.y > 0.0) reflections_[agent.agent] |= ReflectedY;
+        break;
+    }
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> make_box2d_engine(const WorldSpec& spec,
+                                          std::span<const Vec2> initial_positions) {
+  return std::make_unique<Box2DEngine>(spec, initial_positions);
+}
+
+}  // namespace swarmagg

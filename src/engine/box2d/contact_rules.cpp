@@ -1,0 +1,51 @@
+#include "engine/box2d/contact_rules.hpp"
+
+#include "engine/box2d/fixture_tags.hpp"
+
+namespace swarmagg::box2d {
+
+bool ContactRules::ShouldCollide(b2Fixture* a, b2Fixture* b) {
+  // Box2D's own category test first (overriding the filter replaces it).
+  const b2Filter& fa = a->GetFilterData();
+  const b2Filter& fb = b->GetFilterData();
+  if ((fa.maskBits & fb.categoryBits) == 0 || (fb.maskBits & fa.categoryBits) == 0) return false;
+  const FixtureTag ta = tag_of(a);
+  const FixtureTag tb = tag_of(b);
+  if (ta.role == FixtureRole::Solid && tb.role == FixtureRole::Solid) {
+    return controls_.solid(ta.agent, tb.agent);
+  }
+  return true;
+}
+
+void ContactRules::halt(AgentId agent) {
+  if (controls_.halted[agent]) return;
+  controls_.halted[agent] = 1;
+  // Called from inside b2World::Step, between the contact update and the solver: the body
+  // stops for the rest of this (sub)step already.
+  bodies_[agent].body()->SetLinearVelocity(b2Vec2(0.0f, 0.0f));
+}
+
+void ContactRules::BeginContact(b2Contact* contact) {
+  const FixtureTag ta = tag_of(contact->GetFixtureA());
+  const FixtureTag tb = tag_of(contact->GetFixtureB());
+  if (ta.role != tb.role) return;
+  if (ta.role == FixtureRole::Sense) {
+    links_.begin(ta.agent, tb.agent, SensorKind::Sense);
+    return;
+  }
+  if (ta.role != FixtureRole::Detect) return;
+  if (!links_.begin(ta.agent, tb.agent, SensorKind::Detect) || !stepping_) return;
+  ++encounters_;
+  if (controls_.halt_on[ta.agent] & mask_of(controls_.signal[tb.agent])) halt(ta.agent);
+  if (controls_.halt_on[tb.agent] & mask_of(controls_.signal[ta.agent])) halt(tb.agent);
+}
+
+void ContactRules::EndContact(b2Contact* contact) {
+  const FixtureTag ta = tag_of(contact->GetFixtureA());
+  const FixtureTag tb = tag_of(contact->GetFixtureB());
+  if (ta.role != tb.role) return;
+  if (ta.role == FixtureRole::Detect) links_.end(ta.agent, tb.agent, SensorKind::Detect);
+  if (ta.role == FixtureRole::Sense) links_.end(ta.agent, tb.agent, SensorKind::Sense);
+}
+
+}  // namespace swarmagg::box2d

@@ -1,0 +1,49 @@
+#pragma once
+// The one interface both engines implement. An engine owns the bodies of one replicate
+// (positions and velocities), executes the controllers' motion commands for one step of dt,
+// and reports what the agents perceive afterwards and which pairs met during the step.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "core/vec2.hpp"
+#include "engine/motion_command.hpp"
+#include "engine/neighbour_lists.hpp"
+
+namespace swarmagg {
+
+// Bumper bits an engine sets when a wall reflected an agent during the last step, so the
+// controller can turn its heading the same way.
+enum Reflection : std::uint8_t { ReflectedX = 1, ReflectedY = 2 };
+
+struct StepReport {
+  // Pairs whose centres came within the detection radius s during the step, having been
+  // farther apart at its start (first contacts; swept, so none is missed at any speed).
+  std::uint64_t encounters = 0;
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+
+  // Advances every body by one step of dt. `signals[i]` is what agent i displays during
+  // the step; `commands[i]` what it asks for.
+  virtual StepReport step(std::span<const MotionCommand> commands,
+                          std::span<const Signal> signals) = 0;
+
+  virtual std::span<const Vec2> positions() const = 0;
+  // Agents within the sensing radius of each agent, as of the end of the last step (or
+  // the initial placement before the first step).
+  virtual const NeighbourLists& neighbours() const = 0;
+  virtual std::span<const std::uint8_t> reflections() const = 0;
+
+  // Threads the engine may use inside one step (results must not depend on it).
+  virtual void set_threads(int /*threads*/) {}
+};
+
+// Builds the engine `spec.engine.type` names, with the bodies at `initial_positions`.
+std::unique_ptr<Engine> make_engine(const WorldSpec& spec, std::span<const Vec2> initial_positions);
+
+}  // namespace swarmagg

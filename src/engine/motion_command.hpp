@@ -1,0 +1,30 @@
+#pragma once
+// What a controller asks of one agent's body for one step. Engines execute these without
+// knowing any controller rule: signals are opaque small integers every agent displays
+// (its state, as a robot would show an LED colour), and the masks say which displayed
+// signals matter to this body.
+#include <cstdint>
+
+#include "core/vec2.hpp"
+
+namespace swarmagg {
+
+using Signal = std::uint8_t;  // at most 32 distinct values
+using SignalMask = std::uint32_t;
+
+constexpr SignalMask mask_of(Signal s) { return SignalMask{1} << s; }
+
+struct MotionCommand {
+  Vec2 velocity;  // desired velocity, u/tu
+  // Guarded move: stop at the first moment within the step at which an agent displaying one
+  // of these signals comes within the detection radius s.
+  SignalMask halt_on = 0;
+  // Bodies displaying these signals are solid to this one (contact at distance 2r); all
+  // other bodies pass over it like the paper's point particles.
+  SignalMask blocked_by = 0;
+  // Bodies displaying these signals push this one away within s (body engines; the
+  // kinematic engine leaves avoidance to the commanded velocity).
+  SignalMask repelled_by = 0;
+};
+
+}  // namespace swarmagg

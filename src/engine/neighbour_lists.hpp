@@ -1,0 +1,41 @@
+#pragma once
+// Each agent's perceived agents after a step: every other agent whose centre lies within
+// the world's sensing radius (torus-aware), nearest first. Stored as one flat array with
+// per-agent offsets so refilling it every step allocates nothing after warm-up.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec2.hpp"
+
+namespace swarmagg {
+
+using AgentId = std::uint32_t;
+
+struct Neighbour {
+  AgentId id = 0;
+  Vec2 offset;  // from the perceiving agent to the neighbour (minimum image)
+  double distance = 0.0;
+};
+
+class NeighbourLists {
+ public:
+  void reset(std::size_t agent_count) {
+    begin_.assign(agent_count + 1, 0);
+    items_.clear();
+  }
+  // Agents must be filled in order 0, 1, 2, ...: push their neighbours, then close them.
+  void push(const Neighbour& n) { items_.push_back(n); }
+  void close_agent(AgentId agent);  // sorts the agent's neighbours by distance
+  std::span<const Neighbour> of(AgentId agent) const {
+    return {items_.data() + begin_[agent], items_.data() + begin_[agent + 1]};
+  }
+  std::size_t agent_count() const { return begin_.empty() ? 0 : begin_.size() - 1; }
+  std::size_t total() const { return items_.size(); }
+
+ private:
+  std::vector<std::uint32_t> begin_;
+  std::vector<Neighbour> items_;
+};
+
+}  // namespace swarmagg

@@ -1,0 +1,58 @@
+#pragma once
+// Distances and wrapping in the arena. On a torus every displacement is the minimum image
+// (the shortest of the periodic copies); with walls it is the plain difference.
+#include <cmath>
+
+#include "config/world_spec.hpp"
+#include "core/vec2.hpp"
+
+namespace swarmagg {
+
+class ArenaGeometry {
+ public:
+  ArenaGeometry(double width, double height, Topology topology)
+      : width_(width), height_(height), torus_(topology == Topology::Torus) {}
+  explicit ArenaGeometry(const ArenaSpec& arena)
+      : ArenaGeometry(arena.width, arena.height, arena.topology) {}
+
+  double width() const { return width_; }
+  double height() const { return height_; }
+  bool torus() const { return torus_; }
+
+  // The displacement from `from` to `to`.
+  Vec2 displacement(Vec2 from, Vec2 to) const {
+    Vec2 d = to - from;
+    if (torus_) {
+      d.x = minimum_image(d.x, width_);
+      d.y = minimum_image(d.y, height_);
+    }
+    return d;
+  }
+  double distance(Vec2 a, Vec2 b) const { return norm(displacement(a, b)); }
+
+  // On a torus, the same point expressed inside [0, width) x [0, height).
+  Vec2 wrap(Vec2 p) const {
+    if (!torus_) return p;
+    return {wrap_coordinate(p.x, width_), wrap_coordinate(p.y, height_)};
+  }
+
+  static double minimum_image(double d, double length) {
+    if (d > 0.5 * length) return d - length;
+    if (d < -0.5 * length) return d + length;
+    return d;
+  }
+  static double wrap_coordinate(double x, double length) {
+    if (x >= 0.0 && x < length) return x;
+    double w = std::fmod(x, length);
+    if (w < 0.0) w += length;
+    // fmod of a tiny negative number plus length can round up to length itself.
+    return w >= length ? 0.0 : w;
+  }
+
+ private:
+  double width_;
+  double height_;
+  bool torus_;
+};
+
+}  // namespace swarmagg

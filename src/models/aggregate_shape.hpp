@@ -1,0 +1,12 @@
+#pragma once
+// Circle-packing estimates for an aggregate of m agents shared by both models (Bayindir's
+// fit): outer radius R1(m) = r * 1.20 * m^0.48 for agents of radius r, and the number of
+// agents on its periphery pi (1.20 m^0.48 - 1) (SPEC 5.2, 5.3; the paper prints sqrt(m)).
+namespace swarmagg {
+
+double aggregate_radius(double agent_radius, double size);
+
+// Uncapped: exceeds m for small m (3.25, 4.19, 5.02 for m = 3, 4, 5).
+double periphery_agents(double size);
+
+}  // namespace swarmagg

@@ -1,0 +1,22 @@
+#pragma once
+// The expected-value Bayindir model (SPEC 5.2): per step, with every event computed from the
+// state before the step,
+//   C = creation(y), G_m = n_m y g_m, D = loss_2 n_2, S_m = loss_m n_m (m >= 3),
+//   y' = y - 2C - sum G_m + 2D + sum S_m,  n_2' = n_2 + C - D - G_2 + S_3,
+//   n_m' = n_m + G_{m-1} - G_m + S_{m+1} - S_m.
+// Every event moves agents between y and the n_m, so y + sum m n_m = N is conserved.
+#include <cstdint>
+#include <vector>
+
+#include "models/bayindir_rates.hpp"
+#include "models/bayindir_state.hpp"
+
+namespace swarmagg {
+
+void advance_expected(const BayindirRates& rates, BayindirState& state);
+
+// The state at each step of `grid` (increasing, from 0), starting from all searching.
+std::vector<TimeseriesRow> bayindir_expected_series(const BayindirRates& rates,
+                                                    const std::vector<std::int64_t>& grid);
+
+}  // namespace swarmagg

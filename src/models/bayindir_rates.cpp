@@ -1,0 +1,71 @@
+#include "models/bayindir_rates.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/errors.hpp"
+#include "models/aggregate_shape.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+std::vector<double> growth_probabilities(const WorldSpec& world) {
+  const int n = world.robots.count;
+  std::vector<double> growth(n + 1, 0.0);
+  if (!world.controller.join) return growth;
+  const double s = world.robots.detection_radius;
+  const double effective_radius = s / 4.0;  // SPEC 5.2 [choice]: r_eff = s/4, not robots.radius
+  for (int m = 2; m < n; ++m) {
+    const double capture_radius = s + aggregate_radius(effective_radius, m) - effective_radius;
+    growth[m] = 2.0 * capture_radius * world.robots.speed * world.engine.dt / world.arena.area();
+  }
+  return growth;
+}
+
+std::vector<double> loss_probabilities(const WorldSpec& world) {
+  const int n = world.robots.count;
+  std::vector<double> loss(n + 1, 0.0);
+  if (!world.controller.leave) return loss;
+  const double p = world.controller.p_leave;
+  if (n >= 2) loss[2] = 2.0 * p;
+  for (int m = 3; m <= n; ++m) loss[m] = p * std::min<double>(m, periphery_agents(m));
+  return loss;
+}
+
+// Sufficient conditions for the expected-value equations to keep every count >= 0 and for
+// the stochastic draws to be probabilities: a searcher is consumed with total probability
+// <= 1 per step, and an aggregate grows or loses an agent with total probability <= 1.
+void check_probabilities(const BayindirRates& rates) {
+  const int n = rates.agents;
+  const double per_searcher_creation = 2.0 * rates.creation.at(n) / std::max(1, n);
+  double per_searcher_growth = 0.0;  // sum n_m g_m <= N max_m(g_m / m): g_m / m decreases
+  for (int m = 2; m <= n; ++m) per_searcher_growth = std::max(per_searcher_growth, rates.growth[m] / m * n);
+  bool ok = per_searcher_creation + per_searcher_growth <= 1.0;
+  for (int m = 2; m <= n; ++m) ok = ok && n * rates.growth[m] + rates.loss[m] <= 1.0;
+  if (!ok) {
+    throw InputError(
+        "model: the per-step event probabilities of the Bayindir model exceed 1 for this "
+        "world; reduce engine.dt");
+  }
+}
+
+}  // namespace
+
+BayindirRates bayindir_rates(const WorldSpec& world, CreationVariant variant) {
+  BayindirRates rates;
+  rates.agents = world.robots.count;
+  rates.forms_aggregates = world.controller.type != ControllerType::Collision;
+  rates.creation = creation_per_step(world, variant);
+  if (rates.forms_aggregates) {
+    rates.growth = growth_probabilities(world);
+    rates.loss = loss_probabilities(world);
+  } else {
+    rates.growth.assign(rates.agents + 1, 0.0);
+    rates.loss.assign(rates.agents + 1, 0.0);
+  }
+  check_probabilities(rates);
+  return rates;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,84 @@
+#include "models/bayindir_stochastic.hpp"
+
+#include <algorithm>
+
+#include "models/output_grid.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+// Draws `trials` events of total expectation `expected` as Binomial(trials, expected/trials):
+// the mean is exact and the count never exceeds the trials available.
+std::int64_t draw_with_mean(std::int64_t trials, double expected, UniformStream& uniforms) {
+  if (trials <= 0) return 0;
+  return binomial_draw(trials, expected / static_cast<double>(trials), uniforms);
+}
+
+void count_encounters(const BayindirRates& rates, BayindirState& state, UniformStream& uniforms) {
+  const auto y = static_cast<std::int64_t>(state.searching);
+  const std::int64_t pairs = y * (y - 1) / 2;
+  state.totals.encounters += static_cast<double>(draw_with_mean(pairs, rates.creation.at(y), uniforms));
+}
+
+}  // namespace
+
+void advance_stochastic(const BayindirRates& rates, BayindirState& state,
+                        UniformStream& uniforms) {
+  if (!rates.forms_aggregates) {
+    count_encounters(rates, state, uniforms);
+    return;
+  }
+  const auto y = static_cast<std::int64_t>(state.searching);
+  const std::int64_t creations = draw_with_mean(y / 2, rates.creation.at(y), uniforms);
+  std::int64_t searchers_left = y - 2 * creations;
+  std::int64_t growths = 0, dissipations = 0, shrinks = 0;
+  std::vector<double>& count = state.aggregates;
+  // Same upward walk as the expected-value model: n_m is read before it changes.
+  std::int64_t inflow_from_below = creations;
+  for (int m = 2; m <= state.agents(); ++m) {
+    const auto present = static_cast<std::int64_t>(count[m]);
+    std::int64_t grow = 0, lose = 0;
+    if (present > 0) {
+      const double grow_probability = static_cast<double>(y) * rates.growth[m];
+      grow = std::min(binomial_draw(present, grow_probability, uniforms), searchers_left);
+      lose = binomial_draw(present - grow, rates.loss[m] / (1.0 - grow_probability), uniforms);
+    }
+    searchers_left -= grow;
+    count[m] += static_cast<double>(inflow_from_below - grow - lose);
+    if (m >= 3) count[m - 1] += static_cast<double>(lose);
+    inflow_from_below = grow;
+    growths += grow;
+    (m == 2 ? dissipations : shrinks) += lose;
+  }
+  state.searching = static_cast<double>(searchers_left + 2 * dissipations + shrinks);
+  state.totals.creations += static_cast<double>(creations);
+  state.totals.encounters += static_cast<double>(creations);
+  state.totals.growths += static_cast<double>(growths);
+  state.totals.dissipations += static_cast<double>(dissipations);
+  state.totals.shrinks += static_cast<double>(shrinks);
+}
+
+std::vector<TimeseriesRow> bayindir_stochastic_series(const BayindirRates& rates,
+                                                      const std::vector<std::int64_t>& grid,
+                                                      std::uint64_t seed, int replicates,
+                                                      std::uint64_t stream) {
+  std::vector<TimeseriesRow> rows;
+  for (int replicate = 0; replicate < replicates; ++replicate) {
+    const CounterRng rng = CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
+    BayindirState state = BayindirState::all_searching(rates.agents);
+    walk_grid(
+        grid,
+        [&](std::int64_t step) {
+          UniformStream uniforms(rng, static_cast<std::uint64_t>(step), stream);
+          advance_stochastic(rates, state, uniforms);
+        },
+        [&](std::int64_t step) {
+          rows.push_back(
+              to_timeseries_row(state, rates.forms_aggregates, false, replicate, step));
+        });
+  }
+  return rows;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,31 @@
+#pragma once
+// The stochastic Bayindir model: the same per-step events as the expected-value model, drawn
+// as whole numbers so that replicates show the spread a simulation's box plots show. Given
+// the state, each step's expected events equal the expected-value model's exactly:
+//   creations ~ Binomial(floor(y/2), C / floor(y/2)) (each uses two of the y searchers);
+//   each aggregate of size m independently grows with probability y g_m, else loses an
+//   agent with probability loss_m / (1 - y g_m), i.e. one multinomial draw per size.
+// Only if the draws ask for more searchers than exist is growth cut short (not reachable
+// while bayindir_rates' probability bound keeps expected use far below y). Collision worlds
+// draw encounters ~ Binomial(y(y-1)/2, C / (y(y-1)/2)). Draws come from the counter-based
+// generator keyed by (run.seed, replicate), so results are reproducible per seed.
+#include <cstdint>
+#include <vector>
+
+#include "models/bayindir_rates.hpp"
+#include "models/bayindir_state.hpp"
+#include "models/binomial_draw.hpp"
+
+namespace swarmagg {
+
+void advance_stochastic(const BayindirRates& rates, BayindirState& state,
+                        UniformStream& uniforms);
+
+// `replicates` independent runs from all searching; rows ordered by replicate, then step.
+// `stream` separates the draws of different variants of one world.
+std::vector<TimeseriesRow> bayindir_stochastic_series(const BayindirRates& rates,
+                                                      const std::vector<std::int64_t>& grid,
+                                                      std::uint64_t seed, int replicates,
+                                                      std::uint64_t stream);
+
+}  // namespace swarmagg

@@ -1,0 +1,42 @@
+#include "models/binomial_draw.hpp"
+
+#include <cmath>
+
+namespace swarmagg {
+
+namespace {
+
+// Inversion walks the CDF from 0, which takes about trials * probability iterations and
+// needs P(0) = (1 - q)^n to stay far from underflow; above this mean the trials are split
+// in two halves (the sum of independent binomials with the same q is binomial).
+constexpr double kLargestInvertedMean = 20.0;
+
+std::int64_t invert_cdf(std::int64_t trials, double q, double u) {
+  const double odds = q / (1.0 - q);
+  double probability = std::exp(static_cast<double>(trials) * std::log1p(-q));
+  double cumulative = probability;
+  std::int64_t successes = 0;
+  while (u >= cumulative && successes < trials) {
+    probability *= odds * static_cast<double>(trials - successes) /
+                   static_cast<double>(successes + 1);
+    ++successes;
+    cumulative += probability;
+  }
+  return successes;
+}
+
+}  // namespace
+
+std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStream& uniforms) {
+  if (trials <= 0 || probability <= 0.0) return 0;
+  if (probability >= 1.0) return trials;
+  if (probability > 0.5) return trials - binomial_draw(trials, 1.0 - probability, uniforms);
+  if (static_cast<double>(trials) * probability > kLargestInvertedMean) {
+    const std::int64_t half = trials / 2;
+    return binomial_draw(half, probability, uniforms) +
+           binomial_draw(trials - half, probability, uniforms);
+  }
+  return invert_cdf(trials, probability, uniforms.next());
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,29 @@
+#pragma once
+// Binomial variates from the counter-based generator, so a stochastic model run is a pure
+// function of (seed, replicate, step): a UniformStream hands out the uniforms of one step of
+// one stream in order, and binomial_draw is exact (inversion of the CDF) and portable,
+// unlike std::binomial_distribution whose algorithm the standard library chooses.
+#include <cstdint>
+
+#include "core/rng.hpp"
+
+namespace swarmagg {
+
+class UniformStream {
+ public:
+  UniformStream(const CounterRng& rng, std::uint64_t step, std::uint64_t stream)
+      : rng_(rng), step_(step), stream_(stream) {}
+  double next() { return rng_.uniform(step_, drawn_++, Draw::Model, stream_); }
+
+ private:
+  CounterRng rng_;
+  std::uint64_t step_;
+  std::uint64_t stream_;
+  std::uint64_t drawn_ = 0;
+};
+
+// Number of successes in `trials` independent trials of probability `probability`
+// (clamped to [0, 1]).
+std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStream& uniforms);
+
+}  // namespace swarmagg

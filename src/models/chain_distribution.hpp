@@ -1,0 +1,23 @@
+#pragma once
+// Distributions of a finite continuous-time Markov chain given its generator Q (rates per
+// step), computed so that every arithmetic step adds or multiplies non-negative numbers:
+// no cancellation, so results stay non-negative and accurate for any number of steps.
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "models/partition_chain.hpp"
+
+namespace swarmagg {
+
+// expm(Q): the transition matrix of one step.
+Eigen::MatrixXd one_step_transition(const Generator& generator);
+
+// Row j is the distribution after steps[j] steps from state `initial`, e_initial expm(k Q).
+Eigen::MatrixXd transient_distributions(const Generator& generator, int initial,
+                                        const std::vector<std::int64_t>& steps);
+
+// The stationary distribution (pi Q = 0, sum pi = 1) of an irreducible chain.
+Eigen::VectorXd stationary_distribution(const Generator& generator);
+
+}  // namespace swarmagg

@@ -1,0 +1,34 @@
+#pragma once
+// The steps at which models report. The Bayindir model reports on the simulation's record
+// grid (every run.record_every steps), so its rows line up with timeseries.csv. The
+// partition model costs per reported step, so it reports at a modest number of steps,
+// log-spaced (early transient) and evenly spaced (late approach), rounded to the record grid.
+#include <cstdint>
+#include <vector>
+
+#include "config/world_spec.hpp"
+
+namespace swarmagg {
+
+// 0, k, 2k, ... up to world.steps(), k = run.record_every.
+std::vector<std::int64_t> record_grid(const WorldSpec& world);
+
+// 0 plus about `points` log-spaced and `points` evenly spaced steps in (0, world.steps()],
+// rounded to multiples of run.record_every, sorted, without duplicates.
+std::vector<std::int64_t> sparse_grid(const WorldSpec& world, int points);
+
+// Steps the model from 0 to grid.back(): at each step, calls record(step) when the step is
+// on the grid, then advance(step) unless it is the last.
+template <typename Advance, typename Record>
+void walk_grid(const std::vector<std::int64_t>& grid, Advance&& advance, Record&& record) {
+  std::size_t next = 0;
+  for (std::int64_t step = 0; next < grid.size(); ++step) {
+    if (step == grid[next]) {
+      record(step);
+      ++next;
+    }
+    if (next < grid.size()) advance(step);
+  }
+}
+
+}  // namespace swarmagg

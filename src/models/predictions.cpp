@@ -1,0 +1,127 @@
+#include "models/predictions.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "models/bayindir_expected.hpp"
+#include "models/bayindir_stochastic.hpp"
+#include "models/output_grid.hpp"
+#include "models/sample_statistics.hpp"
+#include "models/soysal_model.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+constexpr CreationVariant kCreationVariants[] = {CreationVariant::Original,
+                                                 CreationVariant::Collision};
+
+std::string creation_variant_name(CreationVariant variant) {
+  return variant == CreationVariant::Original ? "original" : "collision";
+}
+
+std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
+  const std::vector<std::int64_t> grid = record_grid(world);
+  std::vector<VariantPrediction> predictions;
+  for (const CreationVariant variant : kCreationVariants) {
+    predictions.push_back({"bayindir", creation_variant_name(variant), false,
+                           bayindir_expected_series(bayindir_rates(world, variant), grid), {}});
+  }
+  if (world.model.stochastic_replicates <= 0) return predictions;
+  for (const CreationVariant variant : kCreationVariants) {
+    const auto stream = static_cast<std::uint64_t>(variant);
+    predictions.push_back({"bayindir", creation_variant_name(variant) + "-stochastic", true,
+                           bayindir_stochastic_series(bayindir_rates(world, variant), grid,
+                                                      world.run.seed,
+                                                      world.model.stochastic_replicates, stream),
+                           {}});
+  }
+  return predictions;
+}
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b);
+  return buffer;
+}
+
+// The quantity a variant is judged by: NOA, or encounters for the collision check.
+std::optional<double> headline(const TimeseriesRow& row) {
+  return row.noa ? row.noa : row.encounters;
+}
+
+std::string final_value_summary(const VariantPrediction& prediction) {
+  const std::int64_t last_step = prediction.series.back().step;
+  const char* name = prediction.series.back().noa ? "NOA" : "encounters";
+  std::vector<double> finals;
+  for (const TimeseriesRow& row : prediction.series) {
+    if (row.step == last_step && headline(row)) finals.push_back(*headline(row));
+  }
+  std::string text = std::string(name) + " at step " + std::to_string(last_step) + ": ";
+  if (!prediction.stochastic) return text + format("%.4g", finals.front());
+  return text + format("%.4g +- %.2g", sample_mean(finals), sample_sd(finals)) + " (mean +- sd of " +
+         std::to_string(finals.size()) + " replicates)";
+}
+
+std::string stationary_summary(const VariantPrediction& prediction) {
+  const TidyValue* most_likely = nullptr;
+  const TidyValue* noa = nullptr;
+  for (const TidyValue& value : prediction.extra) {
+    if (value.quantity.starts_with("stationary:") &&
+        (!most_likely || value.value > most_likely->value)) {
+      most_likely = &value;
+    }
+    if (value.quantity == "stationary_noa") noa = &value;
+  }
+  if (!most_likely || !noa) return "";
+  return "; stationary NOA " + format("%.4g", noa->value) + ", most likely partition " +
+         most_likely->quantity.substr(std::string("stationary:").size()) +
+         format(" (p = %.3g)", most_likely->value);
+}
+
+}  // namespace
+
+std::vector<VariantPrediction> predict(const WorldSpec& world) {
+  if (world.controller.type != ControllerType::Soysal) return bayindir_predictions(world);
+  return {soysal_prediction(world, LeavingVariant::Original),
+          soysal_prediction(world, LeavingVariant::Peripheral)};
+}
+
+std::vector<std::string> model_caveats(const WorldSpec& world) {
+  std::vector<std::string> caveats;
+  const ControllerSpec& controller = world.controller;
+  if (controller.type == ControllerType::Collision) {
+    caveats.push_back(
+        "the encounter prediction assumes all N agents keep moving at speed v with uniform "
+        "headings (collision_mode: ghost); in collision_mode: paper the leave runs after each "
+        "encounter are not modelled");
+    return caveats;
+  }
+  if (controller.leave) {
+    caveats.push_back(
+        "the models have no LEAVE timeout: an agent that leaves is counted as free at once");
+  }
+  if (controller.type == ControllerType::Bayindir &&
+      controller.isolated_wait == IsolatedWait::Stay) {
+    caveats.push_back(
+        "the Bayindir model assumes isolated_wait: resume (a dissolved pair frees both agents)");
+  }
+  if (controller.type == ControllerType::Soysal && controller.leave_size == LeaveSize::Neighbours) {
+    caveats.push_back(
+        "the partition model takes P_l(i) from the aggregate size i, not from the neighbour "
+        "count (leave_size: neighbours)");
+  }
+  if (world.arena.topology == Topology::Walls) {
+    caveats.push_back(
+        "the models assume agents spread uniformly over the arena area; walls are not modelled");
+  }
+  return caveats;
+}
+
+std::string prediction_summary(const VariantPrediction& prediction) {
+  std::string text = prediction.model + " " + prediction.variant + ": ";
+  if (prediction.series.empty()) return text + "no prediction";
+  return text + final_value_summary(prediction) + stationary_summary(prediction);
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,84 @@
+#include "models/soysal_model.hpp"
+
+#include <string>
+
+#include "core/errors.hpp"
+#include "models/chain_distribution.hpp"
+#include "models/output_grid.hpp"
+#include "models/partition_chain.hpp"
+#include "models/soysal_rates.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+// Per-state values of the derived quantities, so that expectations are dot products.
+struct StateObservables {
+  Eigen::VectorXd noa, free, largest;
+};
+
+StateObservables observables_of(const std::vector<Partition>& states) {
+  const auto n = static_cast<Eigen::Index>(states.size());
+  StateObservables values{Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    values.noa(i) = aggregate_count(states[i]);
+    values.free(i) = free_agents(states[i]);
+    values.largest(i) = largest_aggregate(states[i]);
+  }
+  return values;
+}
+
+TimeseriesRow expected_row(const Eigen::RowVectorXd& distribution,
+                           const StateObservables& values, int agents, std::int64_t step) {
+  TimeseriesRow row;
+  row.step = step;
+  row.noa = distribution.dot(values.noa);
+  row.searching = distribution.dot(values.free);
+  row.waiting = agents - *row.searching;
+  row.largest = distribution.dot(values.largest);
+  return row;
+}
+
+void add_stationary(const PartitionChain& chain, const StateObservables& values,
+                    VariantPrediction& prediction) {
+  const Eigen::VectorXd stationary = stationary_distribution(chain.generator);
+  for (std::size_t i = 0; i < chain.states.size(); ++i) {
+    prediction.extra.push_back(
+        {"stationary:" + partition_label(chain.states[i]), std::nullopt, stationary(static_cast<Eigen::Index>(i))});
+  }
+  prediction.extra.push_back({"stationary_noa", std::nullopt, stationary.dot(values.noa)});
+  prediction.extra.push_back({"stationary_searching", std::nullopt, stationary.dot(values.free)});
+  prediction.extra.push_back({"stationary_largest", std::nullopt, stationary.dot(values.largest)});
+}
+
+}  // namespace
+
+std::string leaving_variant_name(LeavingVariant variant) {
+  return variant == LeavingVariant::Original ? "original" : "peripheral";
+}
+
+VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant) {
+  const int agents = world.robots.count;
+  if (partition_count(agents) > kLargestPartitionChain) {
+    throw InputError("model: the partition model of " + std::to_string(agents) + " agents has " +
+                     std::to_string(partition_count(agents)) + " states; at most " +
+                     std::to_string(kLargestPartitionChain) + " (N <= 25) are supported");
+  }
+  const PartitionChain chain = build_partition_chain(soysal_rates(world, variant));
+  VariantPrediction prediction{"soysal", leaving_variant_name(variant), false, {}, {}};
+  const StateObservables values = observables_of(chain.states);
+  const std::vector<std::int64_t> grid = sparse_grid(world, kPartitionReportPoints);
+  const Eigen::MatrixXd distributions = transient_distributions(chain.generator, chain.all_free, grid);
+  for (std::size_t j = 0; j < grid.size(); ++j) {
+    const Eigen::RowVectorXd distribution = distributions.row(static_cast<Eigen::Index>(j));
+    prediction.series.push_back(expected_row(distribution, values, agents, grid[j]));
+    for (std::size_t i = 0; i < chain.states.size(); ++i) {
+      prediction.extra.push_back({"partition:" + partition_label(chain.states[i]), grid[j],
+                                  distribution(static_cast<Eigen::Index>(i))});
+    }
+  }
+  if (chain.recurrent) add_stationary(chain, values, prediction);
+  return prediction;
+}
+
+}  // namespace swarmagg

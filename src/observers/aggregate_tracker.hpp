@@ -1,0 +1,43 @@
+#pragma once
+// Aggregates (SPEC 4): connected components of WAIT agents under "centre distance <= s",
+// torus-aware, recomputed from scratch each time, so an aggregate split by a leaver counts
+// as two. With partner links only (join: false), only the two agents of a pair are linked.
+// Components of one agent are not aggregates.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/agent_state.hpp"
+#include "engine/neighbour_lists.hpp"
+#include "observers/union_find.hpp"
+
+namespace swarmagg {
+
+enum class AggregateLinks { Proximity, PartnersOnly };
+
+class AggregateTracker {
+ public:
+  void update(const NeighbourLists& neighbours, const SwarmState& swarm,
+              double detection_radius, AggregateLinks links);
+
+  int count() const { return count_; }
+  int largest() const { return largest_; }
+  // Aggregate index of each agent (0 .. count-1, in order of each aggregate's lowest agent
+  // index), or -1 when the agent belongs to no aggregate.
+  std::span<const std::int32_t> aggregate_of() const { return aggregate_of_; }
+  // Size of each agent's aggregate (0 when in none).
+  std::span<const std::int32_t> size_of_agent() const { return size_of_agent_; }
+  // Size of every aggregate, by aggregate index.
+  std::span<const std::int32_t> sizes() const { return sizes_; }
+
+ private:
+  UnionFind sets_;
+  std::vector<std::int32_t> aggregate_of_;
+  std::vector<std::int32_t> size_of_agent_;
+  std::vector<std::int32_t> sizes_;
+  std::vector<std::int32_t> index_of_root_;
+  int count_ = 0;
+  int largest_ = 0;
+};
+
+}  // namespace swarmagg

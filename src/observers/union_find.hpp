@@ -1,0 +1,38 @@
+#pragma once
+// Disjoint sets over agent indices, with path halving and union by size.
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace swarmagg {
+
+class UnionFind {
+ public:
+  void reset(std::size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0u);
+    size_.assign(n, 1u);
+  }
+  std::uint32_t find(std::uint32_t a) {
+    while (parent_[a] != a) {
+      parent_[a] = parent_[parent_[a]];
+      a = parent_[a];
+    }
+    return a;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+  }
+  std::uint32_t size_of(std::uint32_t a) { return size_[find(a)]; }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+  std::vector<std::uint32_t> size_;
+};
+
+}  // namespace swarmagg

@@ -1,0 +1,17 @@
+#pragma once
+// timeseries.csv (SPEC 7): one tidy row per replicate and recorded step, cumulative events.
+#include <span>
+#include <string>
+
+#include "observers/timeseries_row.hpp"
+
+namespace swarmagg {
+
+inline constexpr const char* kTimeseriesHeader =
+    "replicate,step,time,noa,searching,waiting,leaving,approaching,largest,creations,growths,"
+    "dissipations,shrinks,encounters";
+
+std::string timeseries_csv_line(const TimeseriesRow& row);
+std::string timeseries_csv(std::span<const TimeseriesRow> rows);
+
+}  // namespace swarmagg

@@ -1,0 +1,64 @@
+#pragma once
+// The colours of a rendered frame. Agent states use the Okabe-Ito palette, which stays
+// distinguishable under the common colour-vision deficiencies; the README legend quotes
+// these values. Aggregates are shaded with light tints keyed by their lowest member index,
+// so an aggregate keeps its tint from frame to frame while that member stays in it.
+#include <array>
+#include <cstdint>
+
+#include "core/agent_state.hpp"
+
+namespace swarmagg {
+
+struct Rgba8 {
+  std::uint8_t r = 0;
+  std::uint8_t g = 0;
+  std::uint8_t b = 0;
+  std::uint8_t a = 255;
+  friend constexpr bool operator==(Rgba8, Rgba8) = default;
+};
+
+namespace palette {
+
+inline constexpr Rgba8 kGo{0, 114, 178, 255};         // blue #0072B2
+inline constexpr Rgba8 kWait{213, 94, 0, 255};        // vermillion #D55E00
+inline constexpr Rgba8 kLeave{0, 158, 115, 255};      // bluish green #009E73
+inline constexpr Rgba8 kApproach{204, 121, 167, 255};  // reddish purple #CC79A7
+
+inline constexpr Rgba8 kArena{255, 255, 255, 255};   // arena floor
+inline constexpr Rgba8 kMargin{224, 224, 224, 255};  // outside the arena, header band
+inline constexpr Rgba8 kText{32, 32, 32, 255};
+inline constexpr Rgba8 kBodyOutline{32, 32, 32, 220};
+inline constexpr Rgba8 kDetection{0, 0, 0, 96};  // detection circle, blended over the floor
+inline constexpr Rgba8 kLink{48, 48, 48, 200};   // aggregate members within s of each other
+inline constexpr Rgba8 kWall{32, 32, 32, 255};   // walls topology only
+
+inline constexpr std::array<Rgba8, 8> kAggregateTints{{
+    {198, 222, 242, 255},  // light blue
+    {250, 236, 184, 255},  // light yellow
+    {200, 236, 212, 255},  // light green
+    {228, 212, 240, 255},  // light lilac
+    {196, 238, 238, 255},  // light cyan
+    {246, 214, 196, 255},  // light peach
+    {216, 222, 232, 255},  // light slate
+    {228, 236, 190, 255},  // light olive
+}};
+
+constexpr Rgba8 state_colour(AgentState s) {
+  switch (s) {
+    case AgentState::Go: return kGo;
+    case AgentState::Wait: return kWait;
+    case AgentState::Leave: return kLeave;
+    case AgentState::Approach: return kApproach;
+  }
+  return kText;
+}
+
+// The tint of the aggregate whose lowest member index is `lowest_member`.
+constexpr Rgba8 aggregate_tint(std::int32_t lowest_member) {
+  auto h = static_cast<std::uint32_t>(lowest_member) * 2654435761u;  // Knuth's hash
+  return kAggregateTints[(h >> 16) % kAggregateTints.size()];
+}
+
+}  // namespace palette
+}  // namespace swarmagg

@@ -1,0 +1,194 @@
+#include "render/video.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+
+extern char** environ;
+
+namespace swarmagg {
+namespace {
+
+bool executable(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec) && ::access(path.c_str(), X_OK) == 0;
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// ffmpeg's image2 demuxer reads '%' in the input name as a pattern: escape the directory.
+std::string escape_percent(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    out += c;
+    if (c == '%') out += '%';
+  }
+  return out;
+}
+
+std::string format_number(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+struct SpawnResult {
+  int status = 0;
+  std::string errors;  // the tail of the child's stderr
+};
+
+SpawnResult run(const std::filesystem::path& program, const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+
+  int pipe_fds[2];
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 2);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(pipe_fds[1]);
+  if (spawned != 0) {
+    ::close(pipe_fds[0]);
+    throw std::runtime_error("cannot run " + program.string() + ": " + std::strerror(spawned));
+  }
+
+  SpawnResult result;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t got = ::read(pipe_fds[0], buffer, sizeof buffer);
+    if (got > 0) {
+      result.errors.append(buffer, static_cast<std::size_t>(got));
+      if (result.errors.size() > 8192) result.errors.erase(0, result.errors.size() - 4096);
+    } else if (got == 0 || errno != EINTR) {
+      break;
+    }
+  }
+  ::close(pipe_fds[0]);
+  while (::waitpid(pid, &result.status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error("cannot wait for " + program.string());
+  }
+  return result;
+}
+
+std::string describe_status(int status) {
+  if (WIFEXITED(status)) return "exit status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) return "signal " + std::to_string(WTERMSIG(status));
+  return "status " + std::to_string(status);
+}
+
+}  // namespace
+
+std::filesystem::path find_program(std::string_view name) {
+  if (name.empty()) return {};
+  if (name.find('/') != std::string_view::npos) {
+    return executable(name) ? std::filesystem::path(name) : std::filesystem::path();
+  }
+  const char* path = std::getenv("PATH");
+  const std::string dirs = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = dirs.find(':', start);
+    std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (dir.empty()) dir = ".";
+    const auto candidate = std::filesystem::path(dir) / name;
+    if (executable(candidate)) return candidate;
+    if (end == std::string::npos) return {};
+    start = end + 1;
+  }
+}
+
+void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
+                    double fps) {
+  VideoOptions options;
+  options.fps = fps;
+  assemble_video(frames_dir, output, options);
+}
+
+void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
+                    const VideoOptions& options) {
+  if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 1000.0) {
+    throw InputError("video frame rate " + format_number(options.fps) +
+                     ": expected a number of frames per second in (0, 1000]");
+  }
+  if (options.crf < 0 || options.crf > 51) {
+    throw InputError("video quality (crf) " + std::to_string(options.crf) +
+                     ": expected 0 (best) to 51 (worst)");
+  }
+  const std::string extension = lower(output.extension().string());
+  if (extension.empty() || output.stem().empty()) {
+    throw InputError("video output '" + output.string() +
+                     "' needs a file name with an extension, e.g. swarm.mp4");
+  }
+  if (!std::filesystem::exists(frames_dir / "frame_000000.png")) {
+    throw InputError("no frames to assemble in " + frames_dir.string() +
+                     " (expected frame_000000.png, frame_000001.png, ...)");
+  }
+  const std::filesystem::path program = find_program(options.ffmpeg);
+  if (program.empty()) {
+    throw std::runtime_error(
+        "cannot assemble a video: '" + options.ffmpeg +
+        "' is not installed (or not on PATH). Install it with `sudo apt-get install ffmpeg` "
+        "(Debian/Ubuntu); the PNG frames are kept in " + frames_dir.string());
+  }
+
+  if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
+  const auto temporary = output.parent_path() / ("." + output.stem().string() + "." +
+                                                 std::to_string(::getpid()) + ".tmp" +
+                                                 output.extension().string());
+  std::vector<std::string> args{options.ffmpeg, "-nostdin", "-hide_banner", "-loglevel",
+                                "error",        "-y",       "-framerate",   format_number(options.fps),
+                                "-start_number", "0",        "-i",
+                                escape_percent((frames_dir / "frame_%06d.png").string())};
+  const bool h264 = extension == ".mp4" || extension == ".mkv" || extension == ".mov" ||
+                    extension == ".m4v";
+  if (h264) {
+    // yuv420p (what players expect) needs even sides: pad odd frames by one pixel.
+    for (const char* a : {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
+                          "yuv420p", "-crf"}) {
+      args.emplace_back(a);
+    }
+    args.push_back(std::to_string(options.crf));
+    if (extension != ".mkv") {
+      args.emplace_back("-movflags");
+      args.emplace_back("+faststart");
+    }
+  }
+  args.push_back(temporary.string());
+
+  const SpawnResult result = run(program, args);
+  if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("ffmpeg failed (" + describe_status(result.status) + ") making " +
+                             output.string() + ": " + result.errors);
+  }
+  std::filesystem::rename(temporary, output);
+}
+
+}  // namespace swarmagg

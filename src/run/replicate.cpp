@@ -1,0 +1,52 @@
+#include "run/replicate.hpp"
+
+#include "run/initial_placement.hpp"
+
+namespace swarmagg {
+namespace {
+
+AggregateLinks links_for(const WorldSpec& spec) {
+  const bool partners_only =
+      !spec.controller.join || (spec.controller.type == ControllerType::Collision &&
+                                spec.controller.collision_mode == CollisionMode::Paper);
+  return partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity;
+}
+
+}  // namespace
+
+Replicate::Replicate(const WorldSpec& spec, int index)
+    : spec_(spec),
+      index_(index),
+      rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))) {
+  InitialPlacement placement = place_agents(spec, rng_);
+  engine_ = make_engine(spec, placement.positions);
+  controller_ = make_controller(spec);
+  swarm_.resize(placement.positions.size());
+  swarm_.heading = std::move(placement.headings);
+  commands_.resize(swarm_.size());
+  signals_.resize(swarm_.size());
+  update_aggregates();
+}
+
+Replicate::~Replicate() = default;
+
+void Replicate::update_aggregates() {
+  aggregates_.update(engine_->neighbours(), swarm_, spec_.robots.detection_radius,
+                     links_for(spec_));
+}
+
+void Replicate::step() {
+  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_};
+  controller_->decide(input, swarm_, rng_, commands_, events_);
+  for (std::size_t i = 0; i < swarm_.size(); ++i) signals_[i] = static_cast<Signal>(swarm_.state[i]);
+  events_.encounters += engine_->step(commands_, signals_).encounters;
+  ++step_;
+  update_aggregates();
+}
+
+SwarmSnapshot Replicate::snapshot() const {
+  return {&spec_, step_, time(), engine_->positions(), swarm_.state, aggregates_.aggregate_of(),
+          aggregates_.count()};
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,54 @@
+#pragma once
+// One replicate: its own engine (bodies), controller state, aggregate tracker and event
+// counts, all mutable and owned here, reading the shared immutable WorldSpec. A replicate
+// is advanced one step at a time; observers read it through snapshot().
+#include <cstdint>
+#include <memory>
+
+#include "config/world_spec.hpp"
+#include "controllers/controller.hpp"
+#include "core/agent_state.hpp"
+#include "core/rng.hpp"
+#include "engine/engine.hpp"
+#include "observers/aggregate_tracker.hpp"
+#include "observers/event_counts.hpp"
+#include "observers/swarm_snapshot.hpp"
+
+namespace swarmagg {
+
+class Replicate {
+ public:
+  Replicate(const WorldSpec& spec, int index);
+  ~Replicate();
+
+  void step();  // advances by one step of dt
+  std::int64_t steps_done() const { return step_; }
+  double time() const { return static_cast<double>(step_) * spec_.engine.dt; }
+
+  const WorldSpec& spec() const { return spec_; }
+  int index() const { return index_; }
+  std::uint64_t seed() const { return rng_.key(); }
+  const Engine& engine() const { return *engine_; }
+  Engine& engine() { return *engine_; }
+  const SwarmState& swarm() const { return swarm_; }
+  const AggregateTracker& aggregates() const { return aggregates_; }
+  const EventCounts& events() const { return events_; }
+  SwarmSnapshot snapshot() const;
+
+ private:
+  void update_aggregates();
+
+  const WorldSpec& spec_;
+  int index_;
+  CounterRng rng_;
+  std::unique_ptr<Engine> engine_;
+  std::unique_ptr<Controller> controller_;
+  SwarmState swarm_;
+  AggregateTracker aggregates_;
+  EventCounts events_;
+  std::vector<MotionCommand> commands_;
+  std::vector<Signal> signals_;
+  std::int64_t step_ = 0;
+};
+
+}  // namespace swarmagg

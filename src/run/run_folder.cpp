@@ -1,0 +1,122 @@
+#include "run/run_folder.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "config/world_keys.hpp"
+#include "config/world_writer.hpp"
+#include "core/rng.hpp"
+#include "output/atomic_file.hpp"
+#include "output/timeseries_csv.hpp"
+
+namespace swarmagg {
+namespace {
+
+nlohmann::json spread(const std::vector<double>& values) {
+  double mean = 0.0;
+  for (double v : values) mean += v;
+  mean /= static_cast<double>(values.size());
+  double squares = 0.0;
+  for (double v : values) squares += (v - mean) * (v - mean);
+  const double sd = values.size() > 1 ? std::sqrt(squares / static_cast<double>(values.size() - 1)) : 0.0;
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return {{"mean", mean}, {"sd", sd}, {"min", *low}, {"max", *high}};
+}
+
+nlohmann::json replicate_summary(const ReplicateOutcome& r) {
+  const TimeseriesRow& last = r.rows.back();
+  return {{"replicate", r.index},
+          {"seed", r.seed},
+          {"wall_seconds", r.wall_seconds},
+          {"final",
+           {{"step", last.step},
+            {"time", last.time},
+            {"noa", last.noa},
+            {"searching", last.states.searching},
+            {"waiting", last.states.waiting},
+            {"leaving", last.states.leaving},
+            {"approaching", last.states.approaching},
+            {"largest", last.largest},
+            {"aggregate_sizes", r.final_aggregate_sizes}}},
+          {"events",
+           {{"creations", last.events.creations},
+            {"growths", last.events.growths},
+            {"dissipations", last.events.dissipations},
+            {"shrinks", last.events.shrinks},
+            {"encounters", last.events.encounters}}}};
+}
+
+}  // namespace
+
+std::string resolved_world_text(const WorldSpec& spec) {
+  std::string text = "# Resolved by swarmagg " SWARMAGG_VERSION " (" SWARMAGG_GIT_HASH
+                     "); every key is shown.\n";
+  text += "# Replicate k draws from the generator keyed by (run.seed, k):";
+  for (int k = 0; k < spec.run.replicates && k < 1000; ++k) {
+    text += (k % 4 == 0 ? "\n#  " : "  ") + std::to_string(k) + ": " +
+            std::to_string(CounterRng::for_replicate(spec.run.seed, k).key());
+  }
+  return text + "\n" + world_to_yaml(spec);
+}
+
+std::vector<TimeseriesRow> all_rows(const RunResult& result) {
+  std::vector<TimeseriesRow> rows;
+  for (const ReplicateOutcome& r : result.replicates) rows.insert(rows.end(), r.rows.begin(), r.rows.end());
+  return rows;
+}
+
+nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result) {
+  nlohmann::json replicates = nlohmann::json::array();
+  std::vector<double> noa, largest, encounters_per_time;
+  for (const ReplicateOutcome& r : result.replicates) {
+    replicates.push_back(replicate_summary(r));
+    noa.push_back(r.rows.back().noa);
+    largest.push_back(r.rows.back().largest);
+    encounters_per_time.push_back(static_cast<double>(r.rows.back().events.encounters) /
+                                  r.rows.back().time);
+  }
+  return {{"swarmagg", SWARMAGG_VERSION},
+          {"git", SWARMAGG_GIT_HASH},
+          {"world", spec.name},
+          {"engine", spec.engine.type == EngineType::Box2D ? "box2d" : "kinematic"},
+          {"agents", spec.robots.count},
+          {"steps", spec.steps()},
+          {"duration", spec.run.duration},
+          {"dt", spec.engine.dt},
+          {"seed", spec.run.seed},
+          {"threads", result.threads},
+          {"wall_seconds", result.wall_seconds},
+          {"final_noa", spread(noa)},
+          {"final_largest", spread(largest)},
+          {"encounters_per_time", spread(encounters_per_time)},
+          {"replicates", replicates}};
+}
+
+std::string partitions_csv(const RunResult& result, std::int64_t steps) {
+  std::string text = "replicate,partition,time_fraction\n";
+  for (const ReplicateOutcome& r : result.replicates) {
+    for (const auto& [partition, count] : r.partition_steps) {
+      text += std::to_string(r.index) + "," + partition + "," +
+              format_number(static_cast<double>(count) / static_cast<double>(steps)) + "\n";
+    }
+  }
+  return text;
+}
+
+void write_run_folder(const WorldSpec& spec, const RunResult& result,
+                      const std::filesystem::path& out) {
+  std::filesystem::create_directories(out);
+  write_file_atomic(out / "timeseries.csv", timeseries_csv(all_rows(result)));
+  if (spec.controller.type == ControllerType::Soysal) {
+    write_file_atomic(out / "partitions.csv", partitions_csv(result, spec.steps()));
+  }
+  write_file_atomic(out / "summary.json", run_summary(spec, result).dump(2) + "\n");
+  // Written last: a folder whose resolved world matches is a complete run (reproduce reuses it).
+  write_file_atomic(out / "world.resolved.yaml", resolved_world_text(spec));
+}
+
+std::filesystem::path default_run_folder(const WorldSpec& spec) {
+  return std::filesystem::path("runs") / spec.name;
+}
+
+}  // namespace swarmagg

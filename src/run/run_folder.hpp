@@ -1,0 +1,26 @@
+#pragma once
+// The run output folder (SPEC 7): world.resolved.yaml, timeseries.csv, summary.json and,
+// for Soysal worlds, partitions.csv; each written atomically.
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "config/world_spec.hpp"
+#include "run/world_runner.hpp"
+
+namespace swarmagg {
+
+// The resolved world with the swarmagg version and every replicate's seed as comments; it
+// loads back as the same world.
+std::string resolved_world_text(const WorldSpec& spec);
+nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result);
+std::string partitions_csv(const RunResult& result, std::int64_t steps);
+std::vector<TimeseriesRow> all_rows(const RunResult& result);
+
+void write_run_folder(const WorldSpec& spec, const RunResult& result,
+                      const std::filesystem::path& out);
+
+// runs/<world name> unless --out says otherwise.
+std::filesystem::path default_run_folder(const WorldSpec& spec);
+
+}  // namespace swarmagg

@@ -1,0 +1,43 @@
+#pragma once
+// Runs the replicates of a world in parallel threads. Each replicate owns all its mutable
+// state and draws from its own generator, so the results are identical for any thread
+// count. Results stay in memory, ordered by replicate; run_folder writes them.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "observers/timeseries_row.hpp"
+#include "run/replicate_observer.hpp"
+
+namespace swarmagg {
+
+struct ReplicateOutcome {
+  int index = 0;
+  std::uint64_t seed = 0;  // the replicate's generator key
+  std::vector<TimeseriesRow> rows;
+  std::vector<std::int32_t> final_aggregate_sizes;
+  std::map<std::string, std::int64_t> partition_steps;  // Soysal worlds
+  double wall_seconds = 0.0;
+};
+
+struct RunResult {
+  std::vector<ReplicateOutcome> replicates;
+  double wall_seconds = 0.0;
+  int threads = 1;
+};
+
+struct RunOptions {
+  int threads = 0;        // 0: the world's run.threads, else the machine's cores
+  bool progress = false;  // a progress line on stderr
+  ObserverFactory observers;
+};
+
+// The thread count a run uses for `replicates` replicates.
+int effective_threads(const WorldSpec& spec, int requested);
+
+ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer);
+RunResult run_world(const WorldSpec& spec, const RunOptions& options);
+
+}  // namespace swarmagg

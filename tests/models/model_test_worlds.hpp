@@ -1,0 +1,31 @@
+#pragma once
+// Worlds for the model tests, set like the paper's experiments (SPEC 6): s = 4, r = 1,
+// v = 1, dt = 0.1.
+#include "config/world_spec.hpp"
+
+namespace swarmagg::testing {
+
+inline WorldSpec bayindir_world(int agents, double p_leave, bool join, bool leave,
+                                double side = 180.0) {
+  WorldSpec world;
+  world.arena.width = world.arena.height = side;
+  world.robots.count = agents;
+  world.controller.type = ControllerType::Bayindir;
+  world.controller.p_leave = p_leave;
+  world.controller.join = join;
+  world.controller.leave = leave;
+  return world;
+}
+
+inline WorldSpec soysal_world(int agents, double side, double p0 = 2e-5,
+                              LeaveLaw law = LeaveLaw::Constant) {
+  WorldSpec world;
+  world.arena.width = world.arena.height = side;
+  world.robots.count = agents;
+  world.controller.type = ControllerType::Soysal;
+  world.controller.p0 = p0;
+  world.controller.leave_law = law;
+  return world;
+}
+
+}  // namespace swarmagg::testing

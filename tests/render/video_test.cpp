@@ -1,0 +1,106 @@
+#include "render/video.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/errors.hpp"
+#include "render/frame_recorder.hpp"
+#include "render_testing.hpp"
+
+namespace swarmagg {
+namespace {
+
+void record_frames(const std::filesystem::path& dir, int count, int width = 96, int height = 64) {
+  WorldSpec spec = testing::tiny_world();
+  spec.render.width = width;
+  spec.render.height = height;
+  testing::Swarm swarm = testing::random_swarm(spec, 10, 0.0);
+  FrameRecorder recorder(spec, dir);
+  for (int f = 0; f < count; ++f) {
+    swarm.positions[0].x = 2.0 * f;
+    recorder.record(swarm.snapshot());
+  }
+}
+
+std::string head(const std::filesystem::path& path, std::size_t n) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(n, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(n));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  return bytes;
+}
+
+TEST(FindProgram, FindsShellOnPathAndNothingForNonsense) {
+  EXPECT_FALSE(find_program("sh").empty());
+  EXPECT_TRUE(find_program("swarmagg-no-such-program-xyz").empty());
+  EXPECT_TRUE(find_program("/no/such/dir/ffmpeg").empty());
+  EXPECT_TRUE(find_program("").empty());
+}
+
+TEST(AssembleVideo, SaysHowToInstallFfmpegWhenItIsMissing) {
+  testing::ScratchDir scratch("video-missing");
+  record_frames(scratch.path(), 1);
+  VideoOptions options;
+  options.ffmpeg = "swarmagg-no-such-ffmpeg";
+  try {
+    assemble_video(scratch.path(), scratch.path() / "out.mp4", options);
+    FAIL() << "expected an error";
+  } catch (const InputError&) {
+    FAIL() << "a missing tool is not bad input";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("apt-get install ffmpeg"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "out.mp4"));
+}
+
+TEST(AssembleVideo, RejectsBadInput) {
+  testing::ScratchDir scratch("video-bad");
+  EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out.mp4", 25.0), InputError)
+      << "no frames";
+  record_frames(scratch.path(), 1);
+  EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out.mp4", 0.0), InputError);
+  EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out.mp4", -3.0), InputError);
+  EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out", 25.0), InputError);
+  VideoOptions options;
+  options.crf = 99;
+  EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out.mp4", options), InputError);
+}
+
+TEST(AssembleVideo, MakesAnMp4FromTheFrames) {
+  if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  // A directory name with characters a shell or ffmpeg's pattern syntax would misread.
+  testing::ScratchDir scratch("video mp4 $(echo no) 100%");
+  const auto frames = scratch.path() / "frames";
+  record_frames(frames, 5, 97, 63);  // odd sides must be padded for yuv420p
+  const auto output = scratch.path() / "out dir" / "swarm.mp4";
+  assemble_video(frames, output, 10.0);
+  ASSERT_TRUE(std::filesystem::exists(output));
+  EXPECT_GT(std::filesystem::file_size(output), 500u);
+  EXPECT_EQ(head(output, 8).substr(4), "ftyp");  // an ISO media file
+  EXPECT_FALSE(std::filesystem::exists("no"));
+  std::size_t entries = 0;  // no temporary file left beside the video
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(output.parent_path())) {
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1u);
+}
+
+TEST(AssembleVideo, ReportsFfmpegFailuresWithItsMessage) {
+  if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  testing::ScratchDir scratch("video-fail");
+  record_frames(scratch.path(), 2);
+  // Corrupt the first frame: ffmpeg fails, the error says so, no video appears.
+  { std::ofstream(scratch.path() / "frame_000000.png", std::ios::trunc) << "garbage"; }
+  try {
+    assemble_video(scratch.path(), scratch.path() / "bad.mp4", 25.0);
+    FAIL() << "expected ffmpeg to fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("ffmpeg failed"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "bad.mp4"));
+}
+
+}  // namespace
+}  // namespace swarmagg
