@@ -13,19 +13,14 @@ bool AggregationController::may_join(std::uint32_t agent) const {
   return searching(agent) || (rules_.join && previous_[agent] == AgentState::Wait);
 }
 
-double AggregationController::leave_probability(std::uint32_t agent,
-                                                const ControllerInput& input) const {
-  const LeaveRule& rule = rules_.leave_rule;
-  if (rule.size_exponent == 0) return rule.base;
-  double size = input.aggregates.size_of_agent()[agent];
-  if (rule.size_source == LeaveSize::Neighbours) {
-    size = 1.0;
-    for (const Neighbour& n : input.neighbours.of(agent)) {
-      if (n.distance > rules_.detection_radius) break;
-      size += 1.0;
-    }
+int AggregationController::perceived_within_s(std::uint32_t agent,
+                                              const ControllerInput& input) const {
+  int count = 0;
+  for (const Neighbour& n : input.neighbours.of(agent)) {
+    if (n.distance > rules_.detection_radius) break;
+    ++count;
   }
-  return rule.base / std::pow(std::max(size, 1.0), rule.size_exponent);
+  return count;
 }
 
 bool AggregationController::isolated(std::uint32_t agent, const ControllerInput& input,
@@ -62,7 +57,11 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   }
   if (!rules_.leave) return;
   const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
-  if (u >= leave_probability(agent, input)) return;
+  const LeaveRule& rule = rules_.leave_rule;
+  const int size = input.aggregates.size_of_agent()[agent];
+  const bool counts_neighbours = rule.size_exponent != 0 && rule.size_source == LeaveSize::Neighbours;
+  const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
+  if (u >= leave_probability(rule, size, perceived)) return;
   swarm.state[agent] = AgentState::Leave;
   swarm.partner[agent] = kNoPartner;
   swarm.leave_time_left[agent] = rules_.leave_timeout;

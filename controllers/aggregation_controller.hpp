@@ -31,7 +31,7 @@ class AggregationController final : public Controller {
 
   bool searching(std::uint32_t agent) const;
   bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
-  double leave_probability(std::uint32_t agent, const ControllerInput& input) const;
+  int perceived_within_s(std::uint32_t agent, const ControllerInput& input) const;
   bool isolated(std::uint32_t agent, const ControllerInput& input, const SwarmState& swarm) const;
 
   void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,

@@ -1,5 +1,8 @@
 #include "controllers/aggregation_rules.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace swarmagg {
 namespace {
 
@@ -25,6 +28,12 @@ int exponent_of(LeaveLaw law) {
 }
 
 }  // namespace
+
+double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived) {
+  if (rule.size_exponent == 0) return rule.base;
+  const int size = rule.size_source == LeaveSize::Neighbours ? perceived + 1 : aggregate_size;
+  return rule.base / std::pow(static_cast<double>(std::max(size, 1)), rule.size_exponent);
+}
 
 AggregationRules bayindir_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);

@@ -26,6 +26,10 @@ struct AggregationRules {
   double tumble = 0.0;                    // heading redraw probability per step while GO
 };
 
+// P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives
+// `perceived` agents within s (which of the two is i is the rule's size_source).
+double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived);
+
 AggregationRules bayindir_rules(const WorldSpec& spec);
 AggregationRules soysal_rules(const WorldSpec& spec);
 // The paper's collision check: pairs form (join: false) and leave at once (p = 1).

@@ -13,6 +13,7 @@ struct RunCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  bool check = false;
 };
 
 int run_command(const RunCommandOptions& options) {
@@ -22,6 +23,7 @@ int run_command(const RunCommandOptions& options) {
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = !options.quiet;
+  run_options.check = options.check;
   const RunResult result = run_world(spec, run_options);
   write_run_folder(spec, result, out);
   if (!options.quiet) {
@@ -43,6 +45,8 @@ void add_run_command(CLI::App& app, Action& action) {
   options->world.add_to(*command);
   command->add_option("--out", options->out, "Output folder (default runs/<world name>)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--check", options->check,
+                    "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });
 }
 

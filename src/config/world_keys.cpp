@@ -265,8 +265,13 @@ std::vector<WorldKey> build_keys() {
 }  // namespace
 
 std::string format_number(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  // Plain decimals read best in world files (0.0001, not 1e-04); very large or very small
+  // magnitudes keep the exponent. Both are the shortest text that reads back exactly.
+  const double magnitude = std::fabs(value);
+  const bool plain = magnitude == 0.0 || (magnitude >= 1e-6 && magnitude < 1e15);
+  char buffer[400];
+  const auto result = plain ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
+                            : std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
 }
 

@@ -1,6 +1,7 @@
 #include "run/replicate.hpp"
 
 #include "run/initial_placement.hpp"
+#include "run/invariants.hpp"
 
 namespace swarmagg {
 namespace {
@@ -42,6 +43,7 @@ void Replicate::step() {
   events_.encounters += engine_->step(commands_, signals_).encounters;
   ++step_;
   update_aggregates();
+  if (checking_) check_invariants(*this);
 }
 
 SwarmSnapshot Replicate::snapshot() const {

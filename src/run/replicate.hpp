@@ -22,6 +22,8 @@ class Replicate {
   ~Replicate();
 
   void step();  // advances by one step of dt
+  // Checks the invariants (run/invariants.hpp) after every step; on by default in Debug.
+  void set_checking(bool on) { checking_ = on; }
   std::int64_t steps_done() const { return step_; }
   double time() const { return static_cast<double>(step_) * spec_.engine.dt; }
 
@@ -49,6 +51,11 @@ class Replicate {
   std::vector<MotionCommand> commands_;
   std::vector<Signal> signals_;
   std::int64_t step_ = 0;
+#ifdef NDEBUG
+  bool checking_ = false;
+#else
+  bool checking_ = true;
+#endif
 };
 
 }  // namespace swarmagg

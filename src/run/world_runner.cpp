@@ -48,9 +48,11 @@ int effective_threads(const WorldSpec& spec, int requested) {
   return std::clamp(threads, 1, spec.run.replicates);
 }
 
-ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer) {
+ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
+                               bool check) {
   const auto start = Clock::now();
   Replicate replicate(spec, index);
+  if (check) replicate.set_checking(true);
   ReplicateOutcome outcome;
   outcome.index = index;
   outcome.seed = replicate.seed();
@@ -95,7 +97,7 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
       try {
         auto observer = options.observers ? options.observers(index) : nullptr;
         result.replicates[static_cast<std::size_t>(index)] =
-            run_replicate(spec, index, observer.get());
+            run_replicate(spec, index, observer.get(), options.check);
       } catch (...) {
         std::lock_guard lock(failure_mutex);
         if (!failure) failure = std::current_exception();

@@ -31,13 +31,15 @@ struct RunResult {
 struct RunOptions {
   int threads = 0;        // 0: the world's run.threads, else the machine's cores
   bool progress = false;  // a progress line on stderr
+  bool check = false;     // check invariants after every step (run/invariants.hpp)
   ObserverFactory observers;
 };
 
 // The thread count a run uses for `replicates` replicates.
 int effective_threads(const WorldSpec& spec, int requested);
 
-ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer);
+ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
+                               bool check = false);
 RunResult run_world(const WorldSpec& spec, const RunOptions& options);
 
 }  // namespace swarmagg

@@ -1,0 +1,145 @@
+#include "config/world_loader.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "config/world_writer.hpp"
+#include "core/errors.hpp"
+
+namespace swarmagg {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+std::string error_of(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+  try {
+    load_world_text(yaml, "w.yaml", overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(WorldLoader, AMinimalWorldGetsEveryDefault) {
+  const WorldSpec spec = load_world_text("robots: {count: 50}\n", "w.yaml");
+  EXPECT_EQ(spec.robots.count, 50);
+  EXPECT_DOUBLE_EQ(spec.robots.detection_radius, 4.0);
+  EXPECT_DOUBLE_EQ(spec.engine.dt, 0.1);
+  EXPECT_EQ(spec.arena.topology, Topology::Torus);
+  EXPECT_EQ(spec.steps(), 50000);
+}
+
+TEST(WorldLoader, ReadsEveryBlock) {
+  const WorldSpec spec = load_world_text(R"(
+name: t
+arena: {width: 90, height: 60, topology: walls}
+robots: {count: 3, radius: 0.5, detection_radius: 3, speed: 2}
+controller: {type: soysal, approach_radius: 9, p0: 0.001, leave_law: inverse_square}
+engine: {type: box2d, dt: 0.05, box2d: {substeps: 2}}
+run: {duration: 10, replicates: 2, seed: 99, record_every: 5}
+model: {kappa: maxwell, leaving: original, periphery_cap: false}
+render: {every: 3, width: 320, height: 240}
+)",
+                                         "w.yaml");
+  EXPECT_EQ(spec.name, "t");
+  EXPECT_EQ(spec.arena.topology, Topology::Walls);
+  EXPECT_DOUBLE_EQ(spec.robots.speed, 2.0);
+  EXPECT_EQ(spec.controller.type, ControllerType::Soysal);
+  EXPECT_EQ(spec.controller.leave_law, LeaveLaw::InverseSquare);
+  EXPECT_EQ(spec.engine.type, EngineType::Box2D);
+  EXPECT_EQ(spec.engine.box2d.substeps, 2);
+  EXPECT_EQ(spec.run.seed, 99u);
+  EXPECT_EQ(spec.model.kappa, Kappa::Maxwell);
+  EXPECT_FALSE(spec.model.periphery_cap);
+  EXPECT_EQ(spec.render.width, 320);
+  EXPECT_DOUBLE_EQ(spec.sensing_radius(), 9.0);
+}
+
+TEST(WorldLoader, ExplicitPlacementSetsTheCount) {
+  const WorldSpec spec =
+      load_world_text("robots: {placement: [[10, 10, 90], [20, 10, 0]]}\n", "w.yaml");
+  EXPECT_EQ(spec.robots.count, 2);
+  EXPECT_EQ(spec.robots.placement[0], (PlacedAgent{10, 10, 90}));
+}
+
+TEST(WorldLoader, OverridesUseTheSameKeyPaths) {
+  const WorldSpec spec = load_world_text("robots: {count: 50}\n", "w.yaml",
+                                         {"robots.count=80", "controller.join=false"});
+  EXPECT_EQ(spec.robots.count, 80);
+  EXPECT_FALSE(spec.controller.join);
+}
+
+TEST(WorldLoader, TheResolvedWorldLoadsBackUnchanged) {
+  const WorldSpec spec = load_world_text(
+      "name: r\nrobots: {placement: [[10.25, 10, 33.5]]}\nengine: {dt: 0.07}\n"
+      "controller: {p_leave: 0.0001}\n",
+      "w.yaml");
+  const std::string text = world_to_yaml(spec);
+  EXPECT_EQ(world_to_yaml(load_world_text(text, "resolved.yaml")), text);
+  EXPECT_THAT(text, HasSubstr("dt: 0.07"));
+  EXPECT_THAT(text, HasSubstr("p_leave: 0.0001"));
+}
+
+TEST(WorldLoaderErrors, AMissingFileIsNamed) {
+  try {
+    load_world("/nonexistent/w.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("/nonexistent/w.yaml: cannot open"));
+  }
+}
+
+TEST(WorldLoaderErrors, SyntaxErrorsGiveTheLine) {
+  EXPECT_THAT(error_of("robots:\n  count: [1, 2\n"), AllOf(HasSubstr("w.yaml:"), HasSubstr("YAML syntax error")));
+}
+
+TEST(WorldLoaderErrors, UnknownKeysSuggestTheClosestKnownOne) {
+  EXPECT_THAT(error_of("robots:\n  cont: 5\n"),
+              AllOf(HasSubstr("w.yaml:2:3"), HasSubstr("unknown key 'robots.cont'"),
+                    HasSubstr("did you mean 'robots.count'")));
+  EXPECT_THAT(error_of("engine: {dtt: 0.1}\n"), HasSubstr("did you mean 'engine.dt'"));
+  EXPECT_THAT(error_of("{}", {"robot.count=3"}), HasSubstr("did you mean 'robots.count'"));
+}
+
+TEST(WorldLoaderErrors, WrongTypesSayWhatWasExpected) {
+  EXPECT_THAT(error_of("robots:\n  count: many\n"),
+              AllOf(HasSubstr("w.yaml:2:10"), HasSubstr("robots.count: expected a whole number"),
+                    HasSubstr("got 'many'")));
+  EXPECT_THAT(error_of("controller: {join: maybe}\n"), HasSubstr("controller.join: expected true or false"));
+  EXPECT_THAT(error_of("arena: {topology: sphere}\n"), HasSubstr("one of: torus, walls"));
+  EXPECT_THAT(error_of("robots: 5\n"), HasSubstr("robots: expected a mapping of keys"));
+  EXPECT_THAT(error_of("robots: {radius: [1]}\n"), HasSubstr("got a list"));
+}
+
+TEST(WorldLoaderErrors, ImpossibleValuesAreRefused) {
+  EXPECT_THAT(error_of("robots: {radius: -1}\n"), HasSubstr("robots.radius: expected a positive number"));
+  EXPECT_THAT(error_of("engine: {dt: 0}\n"), HasSubstr("engine.dt: expected a positive number"));
+  EXPECT_THAT(error_of("robots: {radius: 3, detection_radius: 4}\n"),
+              HasSubstr("robots.detection_radius: must be at least twice robots.radius"));
+  EXPECT_THAT(error_of("arena: {width: 20, height: 20}\nrobots: {count: 1000}\n"),
+              HasSubstr("robots.count: 1000 agents"));
+  EXPECT_THAT(error_of("controller: {p_leave: 1.5}\n"), HasSubstr("a probability between 0 and 1"));
+  EXPECT_THAT(error_of("arena: {width: .nan}\n"), HasSubstr("arena.width: expected a positive number"));
+  EXPECT_THAT(error_of("arena: {width: 1e999}\n"), HasSubstr("arena.width: expected a positive number"));
+  EXPECT_THAT(error_of("robots: {count: 99999999999999999999}\n"), HasSubstr("robots.count"));
+}
+
+TEST(WorldLoaderErrors, EmptyOrNonMappingDocumentsAreRefused) {
+  EXPECT_THAT(error_of(""), HasSubstr("the world file is empty"));
+  EXPECT_THAT(error_of("- 1\n- 2\n"), HasSubstr("expected a mapping of world keys"));
+}
+
+TEST(WorldLoaderErrors, PlacementMustFitTheCountAndTheArena) {
+  EXPECT_THAT(error_of("robots: {count: 3, placement: [[1, 1, 0]]}\n"),
+              HasSubstr("lists 1 agents but robots.count is 3"));
+  EXPECT_THAT(error_of("robots: {placement: [[500, 1, 0]]}\n"), HasSubstr("is outside"));
+  EXPECT_THAT(error_of("robots: {placement: [[1, 1]]}\n"), HasSubstr("[x, y, heading_deg]"));
+}
+
+TEST(WorldLoaderErrors, DuplicateKeysAreRefused) {
+  EXPECT_THAT(error_of("robots: {count: 3, count: 4}\n"), HasSubstr("given twice"));
+}
+
+}  // namespace
+}  // namespace swarmagg

@@ -1,0 +1,263 @@
+#include "controllers/aggregation_controller.hpp"
+
+#include <gtest/gtest.h>
+
+#include "controller_fixture.hpp"
+
+namespace swarmagg {
+namespace {
+
+using testing::ControllerFixture;
+
+constexpr SignalMask kGoMask = mask_of(static_cast<Signal>(AgentState::Go));
+constexpr SignalMask kWaitMask = mask_of(static_cast<Signal>(AgentState::Wait));
+
+WorldSpec bayindir(bool join, bool leave, double p) {
+  WorldSpec spec;
+  spec.controller.type = ControllerType::Bayindir;
+  spec.controller.join = join;
+  spec.controller.leave = leave;
+  spec.controller.p_leave = p;
+  spec.controller.leave_timeout = 1.0;
+  return spec;
+}
+
+TEST(BayindirController, TwoSearchersWithinSFormAPair) {
+  ControllerFixture f(bayindir(true, true, 0.0));
+  const auto a = f.add(10, 10);
+  const auto b = f.add(13.5, 10);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.swarm.state[b], AgentState::Wait);
+  EXPECT_EQ(f.swarm.partner[a], static_cast<std::int32_t>(b));
+  EXPECT_EQ(f.events.creations, 1u);
+  EXPECT_EQ(f.events.growths, 0u);
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.0, 0.0}));
+}
+
+TEST(BayindirController, ALoneSearcherGoesStraightGuardedByItsTargets) {
+  ControllerFixture f(bayindir(true, true, 0.0));
+  const auto a = f.add(10, 10);
+  f.add(20, 10);  // 10 away: not perceived
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Go);
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{1.0, 0.0}));
+  EXPECT_EQ(f.commands[a].halt_on & (kGoMask | kWaitMask), kGoMask | kWaitMask);
+}
+
+TEST(BayindirController, ASearcherJoinsAWaitingAgentWhenJoiningIsAllowed) {
+  ControllerFixture f(bayindir(true, true, 0.0));
+  f.add(10, 10, AgentState::Wait);
+  f.add(13, 10, AgentState::Wait);
+  const auto c = f.add(16.5, 10);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[c], AgentState::Wait);
+  EXPECT_EQ(f.events.growths, 1u);
+  EXPECT_EQ(f.events.creations, 0u);
+}
+
+TEST(BayindirController, WithoutJoiningSearchersIgnoreWaitingAgents) {
+  ControllerFixture f(bayindir(false, false, 0.0));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Wait);
+  f.swarm.partner[a] = static_cast<std::int32_t>(b);
+  f.swarm.partner[b] = static_cast<std::int32_t>(a);
+  const auto c = f.add(16.5, 10);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[c], AgentState::Go);
+  EXPECT_EQ(f.commands[c].halt_on & kWaitMask, 0u);
+  EXPECT_EQ(f.commands[c].blocked_by & kWaitMask, 0u);  // passes over them
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+}
+
+TEST(BayindirController, ThreeSearchersMeetingFormOnePairAndAGrowthWhenJoining) {
+  ControllerFixture f(bayindir(true, true, 0.0));
+  f.add(10, 10);
+  f.add(13, 10);
+  f.add(16.5, 10);
+  f.decide();
+  for (AgentState s : f.swarm.state) EXPECT_EQ(s, AgentState::Wait);
+  EXPECT_EQ(f.events.creations, 1u);
+  EXPECT_EQ(f.events.growths, 1u);
+}
+
+TEST(BayindirController, ThreeSearchersWithoutJoiningLeaveTheOddOneSearching) {
+  ControllerFixture f(bayindir(false, false, 0.0));
+  const auto a = f.add(10, 10);
+  const auto b = f.add(13, 10);  // nearest pair: a-b (3 apart)
+  const auto c = f.add(16.5, 10);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.swarm.state[b], AgentState::Wait);
+  EXPECT_EQ(f.swarm.state[c], AgentState::Go);
+  EXPECT_EQ(f.events.creations, 1u);
+}
+
+TEST(BayindirController, PairsAcrossTheSeamAreMutual) {
+  ControllerFixture f(bayindir(false, false, 0.0));
+  const auto a = f.add(99, 50);
+  const auto b = f.add(2, 50);
+  f.decide();
+  EXPECT_EQ(f.swarm.partner[a], static_cast<std::int32_t>(b));
+  EXPECT_EQ(f.swarm.partner[b], static_cast<std::int32_t>(a));
+}
+
+TEST(BayindirController, WaitingAgentsLeaveWithProbabilityOneAndCountDissipation) {
+  ControllerFixture f(bayindir(true, true, 1.0));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Wait);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Leave);
+  EXPECT_EQ(f.swarm.state[b], AgentState::Leave);
+  // Both members of one pair leaving in the same step dissolve it once.
+  EXPECT_EQ(f.events.dissipations, 1u);
+  // Each moves away from the other.
+  EXPECT_LT(f.commands[a].velocity.x, 0.0);
+  EXPECT_GT(f.commands[b].velocity.x, 0.0);
+  EXPECT_EQ(f.commands[a].blocked_by & kWaitMask, kWaitMask);
+}
+
+TEST(BayindirController, LeaversFromATripleCountShrinkThenDissipation) {
+  // All three leave in one step (p = 1); counted one after another the aggregate goes
+  // 3 -> 2 (a shrink), 2 -> 1 (a dissipation), and the last leaver is no event.
+  ControllerFixture f(bayindir(true, true, 1.0));
+  f.add(10, 10, AgentState::Wait);
+  f.add(13, 10, AgentState::Wait);
+  f.add(16, 10, AgentState::Wait);
+  f.decide();
+  EXPECT_EQ(f.events.shrinks, 1u);
+  EXPECT_EQ(f.events.dissipations, 1u);
+}
+
+TEST(BayindirController, NobodyLeavesWhenLeavingIsOff) {
+  ControllerFixture f(bayindir(true, false, 1.0));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  f.add(13, 10, AgentState::Wait);
+  for (int k = 0; k < 50; ++k) f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.events.dissipations, 0u);
+}
+
+TEST(BayindirController, LeaveLastsTheTimeoutThenSearchesAgain) {
+  ControllerFixture f(bayindir(true, true, 0.0));
+  const auto a = f.add(10, 10, AgentState::Leave);
+  f.swarm.leave_time_left[a] = 1.0;  // 10 steps of 0.1
+  for (int k = 0; k < 9; ++k) {
+    f.decide();
+    ASSERT_EQ(f.swarm.state[a], AgentState::Leave) << "step " << k;
+  }
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Go);
+  EXPECT_NEAR(norm(f.swarm.heading[a]), 1.0, 1e-12);
+}
+
+TEST(BayindirController, AnIsolatedWaitingAgentResumesOrStaysAsConfigured) {
+  ControllerFixture resume(bayindir(true, true, 0.0));
+  const auto a = resume.add(10, 10, AgentState::Wait);
+  resume.add(13, 10, AgentState::Leave);  // its partner, leaving
+  resume.decide();
+  EXPECT_EQ(resume.swarm.state[a], AgentState::Go);
+
+  WorldSpec stay_spec = bayindir(true, true, 0.0);
+  stay_spec.controller.isolated_wait = IsolatedWait::Stay;
+  ControllerFixture stay(stay_spec);
+  const auto b = stay.add(10, 10, AgentState::Wait);
+  stay.add(13, 10, AgentState::Leave);
+  stay.decide();
+  EXPECT_EQ(stay.swarm.state[b], AgentState::Wait);
+}
+
+TEST(BayindirController, WithoutJoiningAWaitingAgentResumesWhenItsPartnerLeft) {
+  ControllerFixture f(bayindir(false, true, 0.0));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Leave);
+  const auto c = f.add(10, 13, AgentState::Wait);  // an unrelated waiting agent nearby
+  f.swarm.partner[a] = static_cast<std::int32_t>(b);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Go);
+  EXPECT_EQ(f.swarm.state[c], AgentState::Go);  // c has no partner either
+}
+
+WorldSpec soysal() {
+  WorldSpec spec;
+  spec.controller.type = ControllerType::Soysal;
+  spec.controller.approach_radius = 12.0;
+  spec.controller.p0 = 0.0;
+  return spec;
+}
+
+TEST(SoysalController, ASearcherApproachesTheNearestAgentWithinTheApproachRadius) {
+  ControllerFixture f(soysal());
+  const auto a = f.add(50, 50);
+  f.add(50, 60);  // 10 away: within s_a = 12, beyond s = 4
+  f.add(50, 39);  // 11 away
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Approach);
+  EXPECT_NEAR(f.commands[a].velocity.x, 0.0, 1e-12);
+  EXPECT_NEAR(f.commands[a].velocity.y, 1.0, 1e-12);
+}
+
+TEST(SoysalController, ApproachersIgnoreLeaversAndGiveUpWhenAlone) {
+  ControllerFixture f(soysal());
+  const auto a = f.add(50, 50, AgentState::Approach);
+  f.add(50, 60, AgentState::Leave);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Go);
+}
+
+TEST(SoysalController, AnApproacherReachingSWaits) {
+  ControllerFixture f(soysal());
+  const auto a = f.add(50, 50, AgentState::Approach);
+  f.add(50, 53.9, AgentState::Wait);
+  f.add(50, 57.8, AgentState::Wait);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.events.growths, 1u);
+}
+
+TEST(LeaveProbability, FollowsTheLeaveLawAndSizeSource) {
+  const LeaveRule constant{0.02, 0, LeaveSize::Aggregate};
+  EXPECT_DOUBLE_EQ(leave_probability(constant, 5, 2), 0.02);
+  const LeaveRule inverse{0.02, 1, LeaveSize::Aggregate};
+  EXPECT_DOUBLE_EQ(leave_probability(inverse, 4, 1), 0.005);
+  const LeaveRule square{0.02, 2, LeaveSize::Aggregate};
+  EXPECT_DOUBLE_EQ(leave_probability(square, 2, 1), 0.005);
+  const LeaveRule by_neighbours{0.02, 1, LeaveSize::Neighbours};
+  EXPECT_DOUBLE_EQ(leave_probability(by_neighbours, 10, 3), 0.005);  // 3 perceived + itself
+}
+
+TEST(CollisionController, PaperModePairsThenBothLeaveAtOnce) {
+  WorldSpec spec;
+  spec.controller.type = ControllerType::Collision;
+  spec.controller.collision_mode = CollisionMode::Paper;
+  spec.controller.leave_timeout = 1.0;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10);
+  const auto b = f.add(13, 10);
+  f.spec.controller.join = false;  // the fixture links partners only, as the replicate does
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.events.creations, 1u);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Leave);
+  EXPECT_EQ(f.swarm.state[b], AgentState::Leave);
+  EXPECT_EQ(f.events.dissipations, 1u);
+}
+
+TEST(CollisionController, GhostModeMovesStraightAndTumbles) {
+  WorldSpec spec;
+  spec.controller.type = ControllerType::Collision;
+  spec.controller.collision_mode = CollisionMode::Ghost;
+  spec.controller.tumble = 1.0;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10);
+  f.add(12, 10);
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Go);
+  EXPECT_EQ(f.commands[a].halt_on, 0u);
+  EXPECT_NE(f.swarm.heading[a], (Vec2{1.0, 0.0}));  // tumble = 1 redraws every step
+  EXPECT_NEAR(norm(f.commands[a].velocity), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarmagg

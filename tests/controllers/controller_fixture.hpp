@@ -1,0 +1,62 @@
+#pragma once
+// Builds the perception a controller sees from hand-placed agents (brute force, torus) and
+// runs one decision, so controller tests need no engine.
+#include <vector>
+
+#include "controllers/controller.hpp"
+#include "geometry/arena_geometry.hpp"
+
+namespace swarmagg::testing {
+
+struct ControllerFixture {
+  WorldSpec spec;
+  std::vector<Vec2> positions;
+  SwarmState swarm;
+  NeighbourLists neighbours;
+  AggregateTracker aggregates;
+  EventCounts events;
+  std::vector<MotionCommand> commands;
+  std::vector<std::uint8_t> reflections;
+  std::unique_ptr<Controller> controller;
+  std::int64_t step = 0;
+
+  explicit ControllerFixture(WorldSpec world) : spec(std::move(world)) {
+    spec.arena = {100.0, 100.0, Topology::Torus};
+  }
+
+  // Adds an agent at (x, y) in `state`, heading +x; returns its index.
+  std::uint32_t add(double x, double y, AgentState state = AgentState::Go) {
+    positions.push_back({x, y});
+    swarm.state.push_back(state);
+    swarm.heading.push_back({1.0, 0.0});
+    swarm.leave_time_left.push_back(0.0);
+    swarm.partner.push_back(kNoPartner);
+    return static_cast<std::uint32_t>(positions.size() - 1);
+  }
+
+  void perceive() {
+    const ArenaGeometry arena(spec.arena);
+    neighbours.reset(positions.size());
+    for (std::uint32_t i = 0; i < positions.size(); ++i) {
+      for (std::uint32_t j = 0; j < positions.size(); ++j) {
+        const Vec2 d = arena.displacement(positions[i], positions[j]);
+        if (j != i && norm(d) <= spec.sensing_radius()) neighbours.push({j, d, norm(d)});
+      }
+      neighbours.close_agent(i);
+    }
+    const bool partners = !spec.controller.join;
+    aggregates.update(neighbours, swarm, spec.robots.detection_radius,
+                      partners ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
+  }
+
+  void decide() {
+    if (!controller) controller = make_controller(spec);
+    perceive();
+    commands.assign(positions.size(), MotionCommand{});
+    reflections.assign(positions.size(), 0);
+    const ControllerInput input{step++, neighbours, reflections, aggregates};
+    controller->decide(input, swarm, CounterRng(11), commands, events);
+  }
+};
+
+}  // namespace swarmagg::testing

@@ -1,0 +1,148 @@
+#include "engine/kinematic/kinematic_engine.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "geometry/arena_geometry.hpp"
+
+namespace swarmagg {
+namespace {
+
+constexpr Signal kGo = 0;
+constexpr Signal kWait = 1;
+
+WorldSpec arena_world(double width, double height, Topology topology = Topology::Torus) {
+  WorldSpec spec;
+  spec.arena = {width, height, topology};
+  spec.robots.radius = 1.0;
+  spec.robots.detection_radius = 4.0;
+  spec.robots.speed = 1.0;
+  spec.engine.dt = 0.1;
+  return spec;
+}
+
+MotionCommand moving(Vec2 velocity, SignalMask halt_on = 0, SignalMask blocked_by = 0) {
+  return MotionCommand{velocity, halt_on, blocked_by, 0};
+}
+
+TEST(KinematicEngine, NeighbourListsMatchBruteForceAndAreSortedByDistance) {
+  WorldSpec spec = arena_world(60.0, 40.0);
+  std::mt19937_64 gen(3);
+  std::uniform_real_distribution<double> ux(0.0, 60.0), uy(0.0, 40.0);
+  std::vector<Vec2> positions(300);
+  for (Vec2& p : positions) p = {ux(gen), uy(gen)};
+  auto engine = make_kinematic_engine(spec, positions);
+  const ArenaGeometry arena(spec.arena);
+  for (std::uint32_t i = 0; i < positions.size(); ++i) {
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t j = 0; j < positions.size(); ++j) {
+      if (j != i && arena.distance(positions[i], positions[j]) <= 4.0) expected.push_back(j);
+    }
+    std::vector<std::uint32_t> found;
+    double last = 0.0;
+    for (const Neighbour& n : engine->neighbours().of(i)) {
+      found.push_back(n.id);
+      EXPECT_GE(n.distance, last);
+      last = n.distance;
+      EXPECT_NEAR(n.distance, arena.distance(positions[i], positions[n.id]), 1e-12);
+    }
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected) << "agent " << i;
+  }
+}
+
+TEST(KinematicEngine, FastGhostsCrossingInOneStepCountOneEncounter) {
+  WorldSpec spec = arena_world(200.0, 200.0);
+  spec.robots.speed = 150.0;  // 15 u per step, nearly four detection radii
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{90.0, 100.0}, {110.0, 101.0}});
+  const std::vector<MotionCommand> commands{moving({150.0, 0.0}), moving({-150.0, 0.0})};
+  const std::vector<Signal> signals{kGo, kGo};
+  // The gap of 20 closes by 30 in one step: they pass within 1 u of each other mid-step,
+  // then move apart. A check at step ends alone would never see them within s.
+  EXPECT_EQ(engine->step(commands, signals).encounters, 1u);
+  EXPECT_NEAR(engine->positions()[0].x, 105.0, 1e-12);
+  EXPECT_NEAR(engine->positions()[1].x, 95.0, 1e-12);
+  EXPECT_EQ(engine->step(commands, signals).encounters, 0u);
+}
+
+TEST(KinematicEngine, GuardedMoveHaltsAtTheDetectionRadiusEvenWhenFast) {
+  WorldSpec spec = arena_world(200.0, 200.0);
+  spec.robots.speed = 30.0;  // 3 u per step
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{50.0, 50.0}, {61.0, 50.0}});
+  const std::vector<MotionCommand> commands{moving({30.0, 0.0}, mask_of(kWait)), moving({})};
+  const std::vector<Signal> signals{kGo, kWait};
+  EXPECT_EQ(engine->step(commands, signals).encounters, 0u);  // 11 -> 8
+  EXPECT_EQ(engine->step(commands, signals).encounters, 0u);  // 8 -> 5
+  EXPECT_EQ(engine->step(commands, signals).encounters, 1u);  // reaches 4 a third in
+  const double gap = engine->positions()[1].x - engine->positions()[0].x;
+  EXPECT_LE(gap, 4.0);
+  EXPECT_GT(gap, 4.0 - 1e-6);
+  ASSERT_EQ(engine->neighbours().of(0).size(), 1u);
+  EXPECT_EQ(engine->neighbours().of(0)[0].id, 1u);
+}
+
+TEST(KinematicEngine, GuardedMoveHaltsAcrossTheSeam) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{98.0, 1.0}, {3.0, 1.0}});
+  const std::vector<MotionCommand> commands{moving({10.0, 0.0}, mask_of(kGo)),
+                                            moving({-10.0, 0.0}, mask_of(kGo))};
+  const std::vector<Signal> signals{kGo, kGo};
+  EXPECT_EQ(engine->step(commands, signals).encounters, 1u);  // 5 apart, closing 2 per step
+  const ArenaGeometry arena(spec.arena);
+  const double gap = arena.distance(engine->positions()[0], engine->positions()[1]);
+  EXPECT_LE(gap, 4.0);
+  EXPECT_GT(gap, 4.0 - 1e-6);
+  EXPECT_NEAR(engine->positions()[0].x, 98.5, 1e-6);
+  EXPECT_NEAR(engine->positions()[1].x, 2.5, 1e-6);
+}
+
+TEST(KinematicEngine, UnguardedAgentsPassOverEachOther) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{40.0, 50.0}, {50.0, 50.0}});
+  const std::vector<MotionCommand> commands{moving({10.0, 0.0}), moving({})};
+  const std::vector<Signal> signals{kGo, kWait};
+  for (int k = 0; k < 20; ++k) engine->step(commands, signals);
+  EXPECT_NEAR(engine->positions()[0].x, 60.0, 1e-9);
+}
+
+TEST(KinematicEngine, BlockedBodyStopsAtContactAndMayStillMoveAway) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{40.0, 50.0}, {50.0, 50.0}});
+  const std::vector<Signal> signals{kGo, kWait};
+  const std::vector<MotionCommand> towards{moving({10.0, 0.0}, 0, mask_of(kWait)), moving({})};
+  for (int k = 0; k < 20; ++k) engine->step(towards, signals);
+  EXPECT_NEAR(engine->positions()[0].x, 48.0, 1e-9);  // bodies of radius 1 touch at 2
+  const std::vector<MotionCommand> away{moving({-10.0, 0.0}, 0, mask_of(kWait)), moving({})};
+  engine->step(away, signals);
+  EXPECT_NEAR(engine->positions()[0].x, 47.0, 1e-9);
+}
+
+TEST(KinematicEngine, AHaltedAgentDoesNotMeetWhatLayBeyondItsStop) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  spec.robots.speed = 100.0;
+  // Agent 0 heads for 1 (stops 4 short of it); agent 2 waits 3 beyond 1, so 0 never
+  // comes within 4 of it. Without the guard, 0 would pass both.
+  const std::vector<Vec2> start{{40.0, 50.0}, {50.0, 50.0}, {53.0, 50.0}};
+  const std::vector<Signal> signals{kGo, kWait, kWait};
+  auto guarded = make_kinematic_engine(spec, start);
+  const std::vector<MotionCommand> halt{moving({100.0, 0.0}, mask_of(kWait)), moving({}),
+                                        moving({})};
+  EXPECT_EQ(guarded->step(halt, signals).encounters, 1u);
+  EXPECT_NEAR(guarded->positions()[0].x, 46.0, 1e-6);
+  auto ghost = make_kinematic_engine(spec, start);
+  const std::vector<MotionCommand> pass{moving({100.0, 0.0}), moving({}), moving({})};
+  EXPECT_EQ(ghost->step(pass, signals).encounters, 2u);
+}
+
+TEST(KinematicEngine, WallsReflectBodiesAndReportWhichAxis) {
+  WorldSpec spec = arena_world(50.0, 50.0, Topology::Walls);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{48.5, 25.0}});
+  const std::vector<MotionCommand> commands{moving({10.0, 0.0})};
+  engine->step(commands, std::vector<Signal>{kGo});
+  EXPECT_NEAR(engine->positions()[0].x, 48.5, 1e-12);  // 49.5 reflected off 49 (= 50 - r)
+  EXPECT_EQ(engine->reflections()[0], ReflectedX);
+}
+
+}  // namespace
+}  // namespace swarmagg

@@ -1,0 +1,118 @@
+#include "observers/aggregate_tracker.hpp"
+
+#include <gtest/gtest.h>
+
+#include "geometry/arena_geometry.hpp"
+#include "observers/partition_tracker.hpp"
+
+namespace swarmagg {
+namespace {
+
+struct Scene {
+  ArenaGeometry arena{100.0, 100.0, Topology::Torus};
+  std::vector<Vec2> positions;
+  SwarmState swarm;
+  NeighbourLists neighbours;
+  AggregateTracker tracker;
+
+  std::uint32_t add(double x, double y, AgentState state = AgentState::Wait) {
+    positions.push_back({x, y});
+    swarm.state.push_back(state);
+    swarm.heading.push_back({1, 0});
+    swarm.leave_time_left.push_back(0);
+    swarm.partner.push_back(kNoPartner);
+    return static_cast<std::uint32_t>(positions.size() - 1);
+  }
+  void update(AggregateLinks links = AggregateLinks::Proximity) {
+    neighbours.reset(positions.size());
+    for (std::uint32_t i = 0; i < positions.size(); ++i) {
+      for (std::uint32_t j = 0; j < positions.size(); ++j) {
+        const Vec2 d = arena.displacement(positions[i], positions[j]);
+        if (i != j && norm(d) <= 6.0) neighbours.push({j, d, norm(d)});
+      }
+      neighbours.close_agent(i);
+    }
+    tracker.update(neighbours, swarm, 4.0, links);
+  }
+};
+
+TEST(AggregateTracker, JoinsAChainAcrossTheSeamIntoOneAggregate) {
+  Scene s;
+  s.add(98.0, 50.0);
+  s.add(1.5, 50.0);   // 3.5 from the first across the x seam
+  s.add(1.5, 97.0);   // far from everyone: in no aggregate
+  s.add(1.5, 53.5);   // 3.5 above the second
+  s.update();
+  EXPECT_EQ(s.tracker.count(), 1);
+  EXPECT_EQ(s.tracker.largest(), 3);
+  EXPECT_EQ(s.tracker.aggregate_of()[2], -1);  // alone: not an aggregate
+  EXPECT_EQ(s.tracker.size_of_agent()[0], 3);
+}
+
+TEST(AggregateTracker, SplitsWhenTheBridgeLeaves) {
+  Scene s;
+  s.add(10.0, 10.0);
+  s.add(10.0, 13.5);
+  const auto bridge = s.add(10.0, 17.0);
+  s.add(10.0, 20.5);
+  s.add(10.0, 24.0);
+  s.update();
+  EXPECT_EQ(s.tracker.count(), 1);
+  s.swarm.state[bridge] = AgentState::Leave;
+  s.update();
+  EXPECT_EQ(s.tracker.count(), 2);
+  EXPECT_EQ(s.tracker.largest(), 2);
+  EXPECT_NE(s.tracker.aggregate_of()[0], s.tracker.aggregate_of()[4]);
+}
+
+TEST(AggregateTracker, OnlyWaitingAgentsFormAggregates) {
+  Scene s;
+  s.add(10.0, 10.0);
+  s.add(12.0, 10.0, AgentState::Go);
+  s.add(14.0, 10.0, AgentState::Leave);
+  s.update();
+  EXPECT_EQ(s.tracker.count(), 0);
+}
+
+TEST(AggregateTracker, PartnersOnlyKeepsNearbyPairsApart) {
+  Scene s;
+  const auto a = s.add(10.0, 10.0);
+  const auto b = s.add(13.0, 10.0);
+  const auto c = s.add(16.0, 10.0);
+  const auto d = s.add(19.0, 10.0);
+  s.swarm.partner[a] = static_cast<std::int32_t>(b);
+  s.swarm.partner[b] = static_cast<std::int32_t>(a);
+  s.swarm.partner[c] = static_cast<std::int32_t>(d);
+  s.swarm.partner[d] = static_cast<std::int32_t>(c);
+  s.update(AggregateLinks::PartnersOnly);
+  EXPECT_EQ(s.tracker.count(), 2);
+  s.update(AggregateLinks::Proximity);
+  EXPECT_EQ(s.tracker.count(), 1);
+}
+
+TEST(PartitionTracker, KeysListPartsInDecreasingOrderWithFreeAgentsAsOnes) {
+  const std::vector<std::int32_t> sizes{2, 3};
+  EXPECT_EQ(partition_key(sizes, 7), "3+2+1+1");
+  EXPECT_EQ(partition_key({}, 3), "1+1+1");
+}
+
+TEST(PartitionTracker, CountsStepsPerPartition) {
+  Scene s;
+  s.add(10.0, 10.0);
+  s.add(13.0, 10.0);
+  s.add(50.0, 50.0, AgentState::Go);
+  PartitionTracker partitions;
+  s.update();
+  partitions.observe(s.tracker, 3);
+  partitions.observe(s.tracker, 3);
+  s.swarm.state[0] = AgentState::Leave;
+  s.update();
+  partitions.observe(s.tracker, 3);
+  const auto steps = partitions.steps_by_partition();
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps.at("2+1"), 2);
+  EXPECT_EQ(steps.at("1+1+1"), 1);
+}
+
+}  // namespace
+}  // namespace swarmagg

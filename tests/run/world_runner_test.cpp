@@ -1,0 +1,136 @@
+#include "run/world_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/world_loader.hpp"
+#include "geometry/arena_geometry.hpp"
+#include "output/timeseries_csv.hpp"
+#include "run/initial_placement.hpp"
+#include "run/replicate.hpp"
+#include "run/run_folder.hpp"
+
+namespace swarmagg {
+namespace {
+
+WorldSpec full_model_world() {
+  return load_world_text(R"(
+name: determinism
+arena: {width: 80, height: 80}
+robots: {count: 40}
+controller: {type: bayindir, p_leave: 0.005, leave_timeout: 5}
+run: {duration: 150, replicates: 4, seed: 5, record_every: 7}
+)",
+                         "test");
+}
+
+std::string csv_of(const RunResult& result) { return timeseries_csv(all_rows(result)); }
+
+RunResult run_with_threads(const WorldSpec& spec, int threads) {
+  RunOptions options;
+  options.threads = threads;
+  return run_world(spec, options);
+}
+
+TEST(WorldRunner, SameSeedGivesIdenticalOutput) {
+  const WorldSpec spec = full_model_world();
+  EXPECT_EQ(csv_of(run_with_threads(spec, 1)), csv_of(run_with_threads(spec, 1)));
+}
+
+TEST(WorldRunner, ThreadCountDoesNotChangeTheOutput) {
+  const WorldSpec spec = full_model_world();
+  const RunResult one = run_with_threads(spec, 1);
+  const RunResult two = run_with_threads(spec, 2);
+  EXPECT_EQ(two.threads, 2);
+  EXPECT_EQ(csv_of(one), csv_of(two));
+}
+
+TEST(WorldRunner, AnotherSeedGivesAnotherRun) {
+  WorldSpec spec = full_model_world();
+  const std::string first = csv_of(run_with_threads(spec, 2));
+  spec.run.seed = 6;
+  EXPECT_NE(first, csv_of(run_with_threads(spec, 2)));
+}
+
+TEST(WorldRunner, TheFullModelCreatesGrowsDissolvesAndShrinks) {
+  const RunResult result = run_with_threads(full_model_world(), 2);
+  EventCounts total;
+  for (const ReplicateOutcome& r : result.replicates) {
+    const TimeseriesRow& last = r.rows.back();
+    EXPECT_EQ(last.step, 1500);
+    EXPECT_EQ(last.states.searching + last.states.waiting + last.states.leaving, 40);
+    total.creations += last.events.creations;
+    total.growths += last.events.growths;
+    total.dissipations += last.events.dissipations;
+    total.shrinks += last.events.shrinks;
+  }
+  EXPECT_GT(total.creations, 0u);
+  EXPECT_GT(total.growths, 0u);
+  EXPECT_GT(total.dissipations, 0u);
+  EXPECT_GT(total.shrinks, 0u);
+}
+
+TEST(InitialPlacement, RandomBodiesNeverOverlap) {
+  WorldSpec spec = load_world_text("arena: {width: 60, height: 60}\nrobots: {count: 400}\n", "t");
+  const InitialPlacement placed = place_agents(spec, CounterRng::for_replicate(1, 0));
+  const ArenaGeometry arena(spec.arena);
+  ASSERT_EQ(placed.positions.size(), 400u);
+  for (std::size_t i = 0; i < placed.positions.size(); ++i) {
+    EXPECT_GE(placed.positions[i].x, 0.0);
+    EXPECT_LT(placed.positions[i].x, 60.0);
+    for (std::size_t j = i + 1; j < placed.positions.size(); ++j) {
+      ASSERT_GE(arena.distance(placed.positions[i], placed.positions[j]), 2.0);
+    }
+  }
+}
+
+// In ghost mode agents are an ideal 2D gas: each pair meets at rate 2 s <|w|> / A with
+// mean relative speed <|w|> = 4 v / pi, so Z = (4/pi) s v N (N-1) / A per tu. Encounter
+// counts are close to Poisson, so 5 standard errors (sqrt of the count) bound the noise:
+// the test fails by chance less than once in a million runs.
+TEST(WorldRunner, GhostEncounterRateMatchesKineticTheory) {
+  const WorldSpec spec = load_world_text(R"(
+arena: {width: 200, height: 200}
+robots: {count: 100, speed: 1.5}
+controller: {type: collision, collision_mode: ghost, tumble: 0.001}
+run: {duration: 1500, replicates: 6, seed: 3, record_every: 1000}
+)",
+                                         "test");
+  const RunResult result = run_with_threads(spec, 2);
+  double encounters = 0.0;
+  for (const ReplicateOutcome& r : result.replicates) encounters += r.rows.back().events.encounters;
+  const double n = 100.0;
+  const double expected = 4.0 / M_PI * 4.0 * 1.5 * n * (n - 1.0) / (200.0 * 200.0) *
+                          spec.run.duration * spec.run.replicates;
+  EXPECT_NEAR(encounters, expected, 5.0 * std::sqrt(expected))
+      << "measured " << encounters << ", kinetic theory " << expected;
+}
+
+TEST(RunFolder, WritesEveryOutputAndAResolvedWorldThatLoadsBack) {
+  WorldSpec spec = full_model_world();
+  spec.run.replicates = 2;
+  const auto out = std::filesystem::temp_directory_path() / "swarmagg-run-folder-test";
+  std::filesystem::remove_all(out);
+  write_run_folder(spec, run_with_threads(spec, 2), out);
+  for (const char* file : {"timeseries.csv", "summary.json", "world.resolved.yaml"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  }
+  const WorldSpec again = load_world((out / "world.resolved.yaml").string());
+  EXPECT_EQ(again.run.seed, spec.run.seed);
+  EXPECT_EQ(again.robots.count, spec.robots.count);
+  std::ifstream csv(out / "timeseries.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, kTimeseriesHeader);
+  for (const auto& entry : std::filesystem::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().extension(), entry.path().extension() == ".tmp" ? ".none" : entry.path().extension());
+  }
+  std::filesystem::remove_all(out);
+}
+
+}  // namespace
+}  // namespace swarmagg
