@@ -1,7 +1,12 @@
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
+#include "core/errors.hpp"
+#include "render/render_size.hpp"
+#include "render/video.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
 #include "run/world_runner.hpp"
@@ -14,25 +19,59 @@ struct RunCommandOptions {
   std::string out;
   bool quiet = false;
   bool check = false;
+  std::optional<int> render_every;
+  std::optional<std::string> render_size;
+  std::optional<std::string> render_dir;
+  std::optional<int> render_replicate;
+  std::string video;
+  double fps = 25.0;
 };
 
+// The render flags are shortcuts for render.* world keys, so they land in the resolved world.
+void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
+  if (options.render_every) world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
+  if (options.render_size) {
+    const RenderSize size = parse_render_size(*options.render_size);
+    world.overrides.push_back("render.width=" + std::to_string(size.width));
+    world.overrides.push_back("render.height=" + std::to_string(size.height));
+  }
+  if (options.render_dir) world.overrides.push_back("render.dir=\"" + *options.render_dir + "\"");
+  if (options.render_replicate) {
+    world.overrides.push_back("render.replicate=" + std::to_string(*options.render_replicate));
+  }
+}
+
+void print_summary(const WorldSpec& spec, const RunResult& result, const std::filesystem::path& out) {
+  double noa = 0.0;
+  for (const ReplicateOutcome& r : result.replicates) noa += r.rows.back().noa;
+  std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
+            << " steps in " << result.wall_seconds << " s on " << result.threads
+            << " threads; mean final NOA " << noa / spec.run.replicates << "\n"
+            << "outputs in " << out.string() << "/\n";
+}
+
 int run_command(const RunCommandOptions& options) {
-  const WorldSpec spec = options.world.load();
-  const std::filesystem::path out = 
-      options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
+  WorldOptions world = options.world;
+  add_render_overrides(options, world);
+  const WorldSpec spec = world.load();
+  const bool out_given = !options.out.empty();
+  const std::filesystem::path out = out_given ? std::filesystem::path(options.out) : default_run_folder(spec);
+  const std::filesystem::path frames = frames_folder(spec, out, out_given);
+  if (!options.video.empty() && spec.render.every <= 0) {
+    throw InputError("--video needs frames: give --render-every K (or render.every in the world)");
+  }
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = !options.quiet;
   run_options.check = options.check;
+  run_options.observers = frame_observers(spec, frames);
   const RunResult result = run_world(spec, run_options);
   write_run_folder(spec, result, out);
-  if (!options.quiet) {
-    double noa = 0.0;
-    for (const ReplicateOutcome& r : result.replicates) noa += r.rows.back().noa;
-    std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
-              << " steps in " << result.wall_seconds << " s on " << result.threads
-              << " threads; mean final NOA " << noa / spec.run.replicates << "\n"
-              << "outputs in " << out.string() << "/\n";
+  if (!options.quiet) print_summary(spec, result, out);
+  if (spec.render.every > 0 && !options.quiet) std::cout << "frames in " << frames.string() << "/\n";
+  if (!options.video.empty()) {
+    assemble_video(frames, options.video, options.fps);
+    if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;
 }
@@ -44,6 +83,16 @@ void add_run_command(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand("run", "Simulate a world's replicates and write outputs");
   options->world.add_to(*command);
   command->add_option("--out", options->out, "Output folder (default runs/<world name>)");
+  command->add_option("--render-every", options->render_every,
+                      "Render a PNG frame every K steps (render.every)");
+  command->add_option("--render-size", options->render_size, "Frame size WxH, e.g. 800x800");
+  command->add_option("--render-dir", options->render_dir,
+                      "Frame folder (default renders/<world name>, or <out>/frames with --out)");
+  command->add_option("--render-replicate", options->render_replicate,
+                      "Which replicate to render (default 0)");
+  command->add_option("--video", options->video,
+                      "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
+  command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");

@@ -255,8 +255,8 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }));
   keys.push_back(integer_key<int>("model.stochastic_replicates", [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
   keys.push_back(integer_key<int>("render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
-  keys.push_back(integer_key<int>("render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 16, 8192));
-  keys.push_back(integer_key<int>("render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 16, 8192));
+  keys.push_back(integer_key<int>("render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 32, 8192));
+  keys.push_back(integer_key<int>("render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 32, 8192));
   keys.push_back(integer_key<int>("render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000));
   keys.push_back(string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }));
   return keys;

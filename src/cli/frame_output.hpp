@@ -1,0 +1,18 @@
+#pragma once
+// Wires off-screen rendering into a run: which folder frames go to (SPEC 7) and the
+// observer that records every render.every-th step of replicate render.replicate.
+#include <filesystem>
+
+#include "config/world_spec.hpp"
+#include "run/replicate_observer.hpp"
+
+namespace swarmagg::cli {
+
+// render.dir when set; else <out>/frames when --out was given; else renders/<world name>.
+std::filesystem::path frames_folder(const WorldSpec& spec, const std::filesystem::path& out,
+                                    bool out_given);
+
+// Observers recording frames into `folder` (none when render.every is 0).
+ObserverFactory frame_observers(const WorldSpec& spec, const std::filesystem::path& folder);
+
+}  // namespace swarmagg::cli
