@@ -13,7 +13,11 @@ int main(int argc, char** argv) {
   Action action;
   // One line per subcommand (keep this list in the order of `swarmagg --help`).
   add_run_command(app, action);
+  add_model_command(app, action);
+  add_sweep_command(app, action);
+  add_merge_command(app, action);
   add_validate_command(app, action);
+  add_bench_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

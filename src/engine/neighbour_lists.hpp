@@ -18,8 +18,19 @@ struct Neighbour {
   double distance = 0.0;
 };
 
+// Two agents within sensing range of each other: i < j, offset from i to j.
+struct ClosePair {
+  AgentId i = 0;
+  AgentId j = 0;
+  Vec2 offset;
+  double distance = 0.0;
+};
+
 class NeighbourLists {
  public:
+  // Rebuilds every agent's list from the close pairs (each pair lands in both lists).
+  void assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs);
+
   void reset(std::size_t agent_count) {
     begin_.assign(agent_count + 1, 0);
     items_.clear();
@@ -36,6 +47,7 @@ class NeighbourLists {
  private:
   std::vector<std::uint32_t> begin_;
   std::vector<Neighbour> items_;
+  std::vector<std::uint32_t> cursor_;
 };
 
 }  // namespace swarmagg

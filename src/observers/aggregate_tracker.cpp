@@ -7,9 +7,18 @@ namespace swarmagg {
 void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState& swarm,
                               double detection_radius, AggregateLinks links) {
   const std::size_t n = swarm.size();
-  sets_.reset(n);
+  // Only waiting agents can be in aggregates; the union-find touches nothing else.
+  waiting_.clear();
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (swarm.state[i] != AgentState::Wait) continue;
+    if (swarm.state[i] == AgentState::Wait) waiting_.push_back(i);
+  }
+  sets_.reserve_elements(n);
+  index_of_root_.resize(n);
+  for (const std::uint32_t i : waiting_) {
+    sets_.make_set(i);
+    index_of_root_[i] = -1;
+  }
+  for (const std::uint32_t i : waiting_) {
     if (links == AggregateLinks::PartnersOnly) {
       const std::int32_t p = swarm.partner[i];
       if (p != kNoPartner && swarm.state[p] == AgentState::Wait) sets_.unite(i, p);
@@ -20,13 +29,15 @@ void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState
       if (nb.id > i && swarm.state[nb.id] == AgentState::Wait) sets_.unite(i, nb.id);
     }
   }
+  label_components(n);
+}
+
+void AggregateTracker::label_components(std::size_t n) {
   aggregate_of_.assign(n, -1);
   size_of_agent_.assign(n, 0);
-  index_of_root_.assign(n, -1);
   sizes_.clear();
   largest_ = 0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (swarm.state[i] != AgentState::Wait) continue;
+  for (const std::uint32_t i : waiting_) {
     const std::uint32_t root = sets_.find(i);
     const auto size = static_cast<std::int32_t>(sets_.size_of(root));
     if (size < 2) continue;

@@ -31,11 +31,14 @@ class AggregateTracker {
   std::span<const std::int32_t> sizes() const { return sizes_; }
 
  private:
+  void label_components(std::size_t n);
+
   UnionFind sets_;
   std::vector<std::int32_t> aggregate_of_;
   std::vector<std::int32_t> size_of_agent_;
   std::vector<std::int32_t> sizes_;
   std::vector<std::int32_t> index_of_root_;
+  std::vector<std::uint32_t> waiting_;
   int count_ = 0;
   int largest_ = 0;
 };

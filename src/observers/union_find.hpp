@@ -13,6 +13,15 @@ class UnionFind {
     std::iota(parent_.begin(), parent_.end(), 0u);
     size_.assign(n, 1u);
   }
+  // Room for n elements without initialising them: only make_set()'s elements may be used.
+  void reserve_elements(std::size_t n) {
+    parent_.resize(n);
+    size_.resize(n);
+  }
+  void make_set(std::uint32_t a) {
+    parent_[a] = a;
+    size_[a] = 1;
+  }
   std::uint32_t find(std::uint32_t a) {
     while (parent_[a] != a) {
       parent_[a] = parent_[parent_[a]];

@@ -25,7 +25,6 @@ Replicate::Replicate(const WorldSpec& spec, int index)
   swarm_.resize(placement.positions.size());
   swarm_.heading = std::move(placement.headings);
   commands_.resize(swarm_.size());
-  signals_.resize(swarm_.size());
   update_aggregates();
 }
 
@@ -39,8 +38,11 @@ void Replicate::update_aggregates() {
 void Replicate::step() {
   const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_};
   controller_->decide(input, swarm_, rng_, commands_, events_);
-  for (std::size_t i = 0; i < swarm_.size(); ++i) signals_[i] = static_cast<Signal>(swarm_.state[i]);
-  events_.encounters += engine_->step(commands_, signals_).encounters;
+  // An agent displays its state: the state array is the signal array.
+  static_assert(sizeof(AgentState) == sizeof(Signal));
+  const std::span<const Signal> signals(reinterpret_cast<const Signal*>(swarm_.state.data()),
+                                        swarm_.size());
+  events_.encounters += engine_->step(commands_, signals).encounters;
   ++step_;
   update_aggregates();
   if (checking_) check_invariants(*this);

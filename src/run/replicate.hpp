@@ -24,6 +24,8 @@ class Replicate {
   void step();  // advances by one step of dt
   // Checks the invariants (run/invariants.hpp) after every step; on by default in Debug.
   void set_checking(bool on) { checking_ = on; }
+  // Threads one step may use (results do not depend on it).
+  void set_threads(int threads) { engine_->set_threads(threads); }
   std::int64_t steps_done() const { return step_; }
   double time() const { return static_cast<double>(step_) * spec_.engine.dt; }
 
@@ -49,7 +51,6 @@ class Replicate {
   AggregateTracker aggregates_;
   EventCounts events_;
   std::vector<MotionCommand> commands_;
-  std::vector<Signal> signals_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG
   bool checking_ = false;

@@ -27,15 +27,25 @@ using box2d::SensorLink;
 using box2d::SensorLinks;
 using box2d::WallSide;
 
-// Box2D clamps a body's translation to b2_maxTranslation (2 u) per b2World::Step, silently.
-// Every step is cut into enough substeps that no body travels more than half of that in
-// one, which also bounds how far the torus images must reach ahead of a body.
-constexpr double kMaxTravelPerSubstep = 0.5 * b2_maxTranslation;
+// Box2D clamps a body's translation to b2_maxTranslation (2 u) per b2World::Step, silently,
+// and only finds a contact between two moving bodies once they overlap. Every step is cut
+// into enough substeps that no body travels more than half of the cap, nor more than half
+// its radius, in one: never clamped, two bodies overlap by at most r when they first touch
+// and never tunnel through each other; the torus images reach that much ahead of a body.
+constexpr double kMaxSubstepTravelCap = 0.5 * b2_maxTranslation;
 constexpr int kMaxSubsteps = 4096;
+
+double max_travel_per_substep(const WorldSpec& spec) {
+  return std::min(kMaxSubstepTravelCap, 0.5 * spec.robots.radius);
+}
 constexpr double kWallThickness = 10.0;
 
-b2Vec2 to_b2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
-Vec2 from_b2(b2Vec2 v) { return {static_cast<double>(v.x), static_cast<double>(v.y)}; }
+b2Vec2 to_b2(Vec2 v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y)};
+}
+Vec2 from_b2(b2Vec2 v) {
+  return {static_cast<double>(v.x), static_cast<double>(v.y)};
+}
 
 class Box2DEngine final : public Engine {
  public:
@@ -51,9 +61,7 @@ class Box2DEngine final : public Engine {
 
  private:
   std::size_t size() const { return bodies_.size(); }
-  Vec2 body_position(AgentId agent) const {
-    return from_b2(bodies_[agent].body()->GetPosition());
-  }
+  Vec2 body_position(AgentId agent) const { return from_b2(bodies_[agent].body()->GetPosition()); }
   void create_walls();
   void apply_signals(std::span<const MotionCommand> commands, std::span<const Signal> signals);
   void compute_repulsion();
@@ -68,6 +76,7 @@ class Box2DEngine final : public Engine {
   double sensing_radius_;
   double repulsion_gain_;
   int min_substeps_;
+  double max_travel_;  // per body and substep
   int velocity_iterations_;
   int position_iterations_;
   BodyShapes shapes_;
@@ -80,7 +89,9 @@ class Box2DEngine final : public Engine {
   std::unique_ptr<b2World> world_;
   b2Body* walls_ = nullptr;
 
-  std::vector<Vec2> forces_;
+  std::vector<AgentId> repelled_;  // agents whose command has a repelled_by this step
+  std::vector<AgentId> forced_;    // agents with a nonzero force this substep
+  std::vector<Vec2> forces_;       // per agent; zero for every agent not in forced_
   std::vector<Vec2> positions_;
   NeighbourLists neighbours_;
   std::vector<std::uint8_t> reflections_;
@@ -89,24 +100,29 @@ class Box2DEngine final : public Engine {
 void check_spec(const WorldSpec& spec, const BodyShapes& shapes) {
   const Box2DSpec& b = spec.engine.box2d;
   std::ostringstream why;
-  if (!(spec.engine.dt > 0.0)) why << "engine.dt must be > 0";
-  else if (b.substeps < 1) why << "engine.box2d.substeps must be >= 1";
+  if (!(spec.engine.dt > 0.0))
+    why << "engine.dt must be > 0";
+  else if (b.substeps < 1)
+    why << "engine.box2d.substeps must be >= 1";
   else if (b.velocity_iterations < 1 || b.position_iterations < 1)
     why << "engine.box2d.velocity_iterations and position_iterations must be >= 1";
-  else if (!(spec.robots.radius > 0.0)) why << "robots.radius must be > 0";
-  else if (!(spec.robots.detection_radius > 0.0)) why << "robots.detection_radius must be > 0";
+  else if (!(spec.robots.radius > 0.0))
+    why << "robots.radius must be > 0";
+  else if (!(spec.robots.detection_radius > 0.0))
+    why << "robots.detection_radius must be > 0";
   else if (b.repulsion_gain < 0.0 || b.linear_damping < 0.0)
     why << "engine.box2d.repulsion_gain and linear_damping must be >= 0";
-  else if (spec.robots.speed * spec.engine.dt / kMaxTravelPerSubstep > kMaxSubsteps)
+  else if (spec.robots.speed * spec.engine.dt / max_travel_per_substep(spec) > kMaxSubsteps)
     why << "robots.speed * engine.dt = " << spec.robots.speed * spec.engine.dt
         << " u per step would need more than " << kMaxSubsteps
-        << " Box2D substeps (Box2D moves a body at most " << b2_maxTranslation
-        << " u per step)";
+        << " Box2D substeps (the engine moves a body at most min(" << kMaxSubstepTravelCap
+        << ", robots.radius / 2) u per substep; Box2D itself caps it at " << b2_maxTranslation
+        << ")";
   else if (shapes.torus && std::min(spec.arena.width, spec.arena.height) <=
-                               2.0 * static_cast<double>(shapes.keep_margin))
-    why << "a torus arena must be wider and higher than " << 2.0 * shapes.keep_margin
-        << " for the Box2D engine (twice the sensing radius plus " << 2.0 * (shapes.keep_margin -
-                                                                              spec.sensing_radius())
+                               2.0 * static_cast<double>(shapes.sensor_keep_margin))
+    why << "a torus arena must be wider and higher than " << 2.0 * shapes.sensor_keep_margin
+        << " for the Box2D engine (twice the sensing radius plus "
+        << 2.0 * (shapes.sensor_keep_margin - spec.sensing_radius())
         << ": the periodic images of two edges must not meet)";
   if (!why.str().empty()) {
     throw InputError((spec.source.empty() ? spec.name : spec.source) + ": " + why.str());
@@ -123,10 +139,15 @@ BodyShapes shapes_for(const WorldSpec& spec) {
   shapes.width = static_cast<float>(spec.arena.width);
   shapes.height = static_cast<float>(spec.arena.height);
   shapes.torus = spec.arena.topology == Topology::Torus;
-  // A pair interacts across the seam only when both centres are within `sensing` of it; a
-  // body moves at most kMaxTravelPerSubstep between two image updates.
-  shapes.add_margin = static_cast<float>(sensing + kMaxTravelPerSubstep + 0.5);
-  shapes.keep_margin = shapes.add_margin + 1.0f;
+  // A pair senses across the seam only when both centres are within `sensing` of it, and
+  // touches only within 2r; a body moves at most max_travel_per_substep() between two image
+  // updates (0.1 u spare for float rounding; 0.5 u of hysteresis).
+  const double travel = max_travel_per_substep(spec) + 0.1;
+  shapes.sensor_add_margin = static_cast<float>(sensing + travel);
+  shapes.sensor_keep_margin = shapes.sensor_add_margin + 0.5f;
+  shapes.solid_add_margin =
+      std::min(shapes.sensor_add_margin, static_cast<float>(2.0 * spec.robots.radius + travel));
+  shapes.solid_keep_margin = std::min(shapes.sensor_keep_margin, shapes.solid_add_margin + 0.5f);
   shapes.linear_damping = static_cast<float>(spec.engine.box2d.linear_damping);
   return shapes;
 }
@@ -138,6 +159,7 @@ Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_po
       sensing_radius_(std::max(spec.sensing_radius(), spec.robots.detection_radius)),
       repulsion_gain_(spec.engine.box2d.repulsion_gain),
       min_substeps_(spec.engine.box2d.substeps),
+      max_travel_(max_travel_per_substep(spec)),
       velocity_iterations_(spec.engine.box2d.velocity_iterations),
       position_iterations_(spec.engine.box2d.position_iterations),
       shapes_(shapes_for(spec)),
@@ -147,6 +169,8 @@ Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_po
   controls_.resize(n);
   links_.reset(n);
   forces_.assign(n, Vec2{});
+  repelled_.reserve(n);
+  forced_.reserve(n);
   positions_.assign(n, Vec2{});
   reflections_.assign(n, 0);
 
@@ -161,8 +185,8 @@ Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_po
   bodies_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     Vec2 p = geometry_.wrap(initial_positions[i]);
-    if (!shapes_.torus && (p.x < 0.0 || p.x > geometry_.width() || p.y < 0.0 ||
-                           p.y > geometry_.height())) {
+    if (!shapes_.torus &&
+        (p.x < 0.0 || p.x > geometry_.width() || p.y < 0.0 || p.y > geometry_.height())) {
       throw InputError("agent " + std::to_string(i) + " is placed outside the walled arena");
     }
     bodies_[i].create(*world_, static_cast<AgentId>(i), to_b2(p), shapes_);
@@ -210,11 +234,13 @@ void Box2DEngine::create_walls() {
 void Box2DEngine::apply_signals(std::span<const MotionCommand> commands,
                                 std::span<const Signal> signals) {
   bool refiltered = false;
+  repelled_.clear();
   for (std::size_t i = 0; i < size(); ++i) {
     const MotionCommand& c = commands[i];
     controls_.halt_on[i] = c.halt_on;
     controls_.repelled_by[i] = c.repelled_by;
     controls_.halted[i] = 0;
+    if (c.repelled_by != 0) repelled_.push_back(static_cast<AgentId>(i));
     if (signals[i] == controls_.signal[i] && c.blocked_by == controls_.blocked_by[i]) continue;
     controls_.signal[i] = signals[i];
     controls_.blocked_by[i] = c.blocked_by;
@@ -231,31 +257,37 @@ void Box2DEngine::apply_signals(std::span<const MotionCommand> commands,
 }
 
 void Box2DEngine::compute_repulsion() {
+  for (const AgentId i : forced_) forces_[i] = Vec2{};
+  forced_.clear();
+  if (repulsion_gain_ <= 0.0) return;
   const double s = detection_radius_;
-  for (std::size_t i = 0; i < size(); ++i) {
-    Vec2 force;
+  for (const AgentId i : repelled_) {
+    if (controls_.halted[i]) continue;
     const SignalMask repelled_by = controls_.repelled_by[i];
-    if (repelled_by != 0 && repulsion_gain_ > 0.0 && !controls_.halted[i]) {
-      const Vec2 pi = body_position(static_cast<AgentId>(i));
-      for (const SensorLink& link : links_.of(static_cast<AgentId>(i))) {
-        if ((repelled_by & mask_of(controls_.signal[link.other])) == 0) continue;
-        const Vec2 d = geometry_.displacement(pi, body_position(link.other));
-        const double distance = norm(d);
-        if (distance >= s || distance <= 0.0) continue;
-        // Linear in the distance: `gain` (per unit mass) at contact of the centres, 0 at s.
-        force += d * (-repulsion_gain_ * (1.0 - distance / s) / distance);
-      }
+    const Vec2 pi = body_position(i);
+    Vec2 force;
+    for (const SensorLink& link : links_.of(i)) {
+      if ((repelled_by & mask_of(controls_.signal[link.other])) == 0) continue;
+      const Vec2 d = geometry_.displacement(pi, body_position(link.other));
+      const double distance = norm(d);
+      if (distance >= s || distance <= 0.0) continue;
+      // Linear in the distance: `gain` (per unit mass) at contact of the centres, 0 at s.
+      force += d * (-repulsion_gain_ * (1.0 - distance / s) / distance);
     }
+    if (force.x == 0.0 && force.y == 0.0) continue;
     forces_[i] = force;
+    forced_.push_back(i);
   }
 }
 
 int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < size(); ++i) {
-    fastest = std::max(fastest, norm(commands[i].velocity + forces_[i] * dt_));
+  double fastest2 = 0.0;
+  for (const MotionCommand& c : commands) fastest2 = std::max(fastest2, norm2(c.velocity));
+  for (const AgentId i : forced_) {
+    fastest2 = std::max(fastest2, norm2(commands[i].velocity + forces_[i] * dt_));
   }
-  const double needed = std::ceil(fastest * dt_ / kMaxTravelPerSubstep);
+  const double fastest = std::sqrt(fastest2);
+  const double needed = std::ceil(fastest * dt_ / max_travel_);
   if (needed > kMaxSubsteps) {
     throw std::runtime_error("Box2D engine: a commanded speed of " + std::to_string(fastest) +
                              " u/tu needs more than " + std::to_string(kMaxSubsteps) +
@@ -265,15 +297,16 @@ int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
 }
 
 void Box2DEngine::apply_forces(float h) {
+  // Commanded velocities were checked by substeps_for and contacts cannot speed a body up
+  // beyond them; forces can: check what Box2D will integrate before its contact solver.
   constexpr float kCap = 0.999f * b2_maxTranslation;
   const float inv_damping = 1.0f / (1.0f + h * shapes_.linear_damping);
-  for (std::size_t i = 0; i < size(); ++i) {
+  for (const AgentId i : forced_) {
     b2Body* body = bodies_[i].body();
     const b2Vec2 force = to_b2(forces_[i]);
-    if (force.x != 0.0f || force.y != 0.0f) body->ApplyForceToCenter(force, true);
-    // What Box2D will integrate before its contact solver; it would clamp beyond the cap.
+    body->ApplyForceToCenter(force, true);
     const b2Vec2 v = inv_damping * (body->GetLinearVelocity() + h * force);
-    if (h * v.Length() > kCap) {
+    if (h * h * v.LengthSquared() > kCap * kCap) {
       throw std::runtime_error("Box2D engine: agent " + std::to_string(i) + " would move " +
                                std::to_string(h * v.Length()) +
                                " u in one Box2D step; Box2D would clamp it to " +
@@ -284,10 +317,7 @@ void Box2DEngine::apply_forces(float h) {
 
 void Box2DEngine::wrap_bodies() {
   if (!shapes_.torus) return;
-  for (PeriodicBody& body : bodies_) {
-    body.wrap();
-    body.update_images();
-  }
+  for (PeriodicBody& body : bodies_) body.follow_torus();
 }
 
 StepReport Box2DEngine::step(std::span<const MotionCommand> commands,

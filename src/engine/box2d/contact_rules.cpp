@@ -48,4 +48,17 @@ void ContactRules::EndContact(b2Contact* contact) {
   if (ta.role == FixtureRole::Sense) links_.end(ta.agent, tb.agent, SensorKind::Sense);
 }
 
+void ContactRules::PreSolve(b2Contact* contact, const b2Manifold* /*old_manifold*/) {
+  b2Fixture* fa = contact->GetFixtureA();
+  b2Fixture* fb = contact->GetFixtureB();
+  const FixtureTag ta = tag_of(fa);
+  const FixtureTag tb = tag_of(fb);
+  if (ta.role != FixtureRole::Solid || tb.role != FixtureRole::Solid) return;
+  // The representative of a pair is the fixture pair in which the lower-numbered agent
+  // takes part with its own disc (the image at offset zero); there is exactly one.
+  const b2Fixture* lower = ta.agent < tb.agent ? fa : fb;
+  const b2Vec2 offset = static_cast<const b2CircleShape*>(lower->GetShape())->m_p;
+  if (offset.x != 0.0f || offset.y != 0.0f) contact->SetEnabled(false);
+}
+
 }  // namespace swarmagg::box2d

@@ -4,7 +4,10 @@
 // signal; everything else passes through, like the paper's point particles). The listener
 // turns sensor begin/end events into the SensorLinks, counts first contacts within s
 // (encounters) and executes guarded moves: a body whose halt_on holds the signal of an agent
-// that just came within s stops before the next solver pass.
+// that just came within s stops before the next solver pass. Near the torus seam one pair
+// of agents can touch through two solid fixture pairs (the bodies and their images); the
+// pre-solve hook keeps only the one that involves the lower-numbered agent's own disc, so
+// every pair is one constraint, as in mid-arena.
 #include <box2d/box2d.h>
 
 #include <cstdint>
@@ -44,6 +47,7 @@ class ContactRules final : public b2ContactFilter, public b2ContactListener {
   bool ShouldCollide(b2Fixture* a, b2Fixture* b) override;
   void BeginContact(b2Contact* contact) override;
   void EndContact(b2Contact* contact) override;
+  void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
 
   // Encounters and halts are acted on only while a step runs (not for the initial overlaps).
   void start_step() {

@@ -15,6 +15,11 @@ int near_side(float c, float length, float margin) {
   return 0;
 }
 
+// Whether an image at offset (ix, iy) belongs to a body on sides (sx, sy) of the arena.
+bool image_fits(int ix, int iy, int sx, int sy) {
+  return (ix == 0 || ix == sx) && (iy == 0 || iy == sy);
+}
+
 b2Fixture* make_fixture(b2Body* body, AgentId agent, FixtureRole role, float radius,
                         b2Vec2 offset) {
   b2CircleShape circle;
@@ -50,7 +55,7 @@ void PeriodicBody::create(b2World& world, AgentId agent, b2Vec2 position,
   count_ = 0;
   add_image(0, 0);
   fix_mass();
-  update_images();
+  if (shapes.torus) update_images();
 }
 
 void PeriodicBody::fix_mass() {
@@ -85,13 +90,14 @@ void PeriodicBody::add_image(int ix, int iy) {
   image.ix = static_cast<std::int8_t>(ix);
   image.iy = static_cast<std::int8_t>(iy);
   const b2Vec2 offset = offset_of(image);
-  image.solid = make_fixture(body_, agent_, FixtureRole::Solid, shapes_->solid_radius, offset);
-  image.detect =
-      make_fixture(body_, agent_, FixtureRole::Detect, shapes_->detect_radius, offset);
-  image.sense =
-      shapes_->sense_radius > 0.0f
-          ? make_fixture(body_, agent_, FixtureRole::Sense, shapes_->sense_radius, offset)
-          : nullptr;
+  // The solid disc of an image is added by update_images, in its narrower band.
+  image.solid = ix == 0 && iy == 0
+                    ? make_fixture(body_, agent_, FixtureRole::Solid, shapes_->solid_radius, offset)
+                    : nullptr;
+  image.detect = make_fixture(body_, agent_, FixtureRole::Detect, shapes_->detect_radius, offset);
+  image.sense = shapes_->sense_radius > 0.0f
+                    ? make_fixture(body_, agent_, FixtureRole::Sense, shapes_->sense_radius, offset)
+                    : nullptr;
 }
 
 void PeriodicBody::remove_image(int index) {
@@ -102,6 +108,18 @@ void PeriodicBody::remove_image(int index) {
   }
   images_[index] = images_[count_ - 1];
   --count_;
+}
+
+void PeriodicBody::follow_torus() {
+  if (!shapes_->torus) return;
+  const b2Vec2 p = body_->GetPosition();
+  const float m = shapes_->sensor_add_margin;
+  if (count_ == 1 && p.x >= m && p.x <= shapes_->width - m && p.y >= m &&
+      p.y <= shapes_->height - m) {
+    return;  // in the interior with its own fixtures only: the common case
+  }
+  wrap();
+  update_images();
 }
 
 void PeriodicBody::wrap() {
@@ -136,30 +154,53 @@ void PeriodicBody::wrap() {
 }
 
 void PeriodicBody::update_images() {
-  if (!shapes_->torus) return;
   const b2Vec2 p = body_->GetPosition();
-  const int keep_x = near_side(p.x, shapes_->width, shapes_->keep_margin);
-  const int keep_y = near_side(p.y, shapes_->height, shapes_->keep_margin);
-  bool removed = false;
+  const float w = shapes_->width;
+  const float h = shapes_->height;
+  bool destroyed = false;
+  // Images (sensors): drop those beyond the keep margin, add those within the add margin.
+  const int keep_x = near_side(p.x, w, shapes_->sensor_keep_margin);
+  const int keep_y = near_side(p.y, h, shapes_->sensor_keep_margin);
   for (int k = count_ - 1; k >= 0; --k) {
     const Image& image = images_[k];
-    const bool x_ok = image.ix == 0 || image.ix == keep_x;
-    const bool y_ok = image.iy == 0 || image.iy == keep_y;
-    if (x_ok && y_ok) continue;
+    if ((image.ix == 0 && image.iy == 0) || image_fits(image.ix, image.iy, keep_x, keep_y)) {
+      continue;
+    }
     remove_image(k);
-    removed = true;
+    destroyed = true;
   }
-  if (removed) fix_mass();  // DestroyFixture recomputed the mass from the (zero) densities
-  if (!has_image(0, 0)) add_image(0, 0);  // cannot happen after a wrap within the margin
-  const int nx = near_side(p.x, shapes_->width, shapes_->add_margin);
-  const int ny = near_side(p.y, shapes_->height, shapes_->add_margin);
-  if (nx != 0 && !has_image(nx, 0)) add_image(nx, 0);
-  if (ny != 0 && !has_image(0, ny)) add_image(0, ny);
-  if (nx != 0 && ny != 0 && !has_image(nx, ny)) add_image(nx, ny);
+  if (!has_image(0, 0)) add_image(0, 0);  // cannot happen: a wrap stays within the margins
+  const int add_x = near_side(p.x, w, shapes_->sensor_add_margin);
+  const int add_y = near_side(p.y, h, shapes_->sensor_add_margin);
+  if (add_x != 0 && !has_image(add_x, 0)) add_image(add_x, 0);
+  if (add_y != 0 && !has_image(0, add_y)) add_image(0, add_y);
+  if (add_x != 0 && add_y != 0 && !has_image(add_x, add_y)) add_image(add_x, add_y);
+  // Solid discs of the images, in their own narrower band (2r reach instead of R).
+  const int solid_keep_x = near_side(p.x, w, shapes_->solid_keep_margin);
+  const int solid_keep_y = near_side(p.y, h, shapes_->solid_keep_margin);
+  const int solid_add_x = near_side(p.x, w, shapes_->solid_add_margin);
+  const int solid_add_y = near_side(p.y, h, shapes_->solid_add_margin);
+  for (int k = 0; k < count_; ++k) {
+    Image& image = images_[k];
+    const bool own = image.ix == 0 && image.iy == 0;
+    if (image.solid != nullptr && !own &&
+        !image_fits(image.ix, image.iy, solid_keep_x, solid_keep_y)) {
+      body_->DestroyFixture(image.solid);
+      image.solid = nullptr;
+      destroyed = true;
+    } else if (image.solid == nullptr &&
+               (own || image_fits(image.ix, image.iy, solid_add_x, solid_add_y))) {
+      image.solid =
+          make_fixture(body_, agent_, FixtureRole::Solid, shapes_->solid_radius, offset_of(image));
+    }
+  }
+  if (destroyed) fix_mass();  // DestroyFixture recomputed the mass from the (zero) densities
 }
 
 void PeriodicBody::refilter_solids() {
-  for (int k = 0; k < count_; ++k) images_[k].solid->Refilter();
+  for (int k = 0; k < count_; ++k) {
+    if (images_[k].solid != nullptr) images_[k].solid->Refilter();
+  }
 }
 
 }  // namespace swarmagg::box2d

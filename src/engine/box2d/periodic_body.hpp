@@ -1,11 +1,12 @@
 #pragma once
 // One agent's Box2D body and its periodic images on a torus. An image is a second set of
-// fixtures (solid disc and sensors) on the same body, offset by a whole period (+-W, +-H),
-// added while the agent is near an edge. Contacts with an image therefore act on the agent
-// itself within the same solver iteration: across the seam a collision is the same two-body
-// problem as in mid-arena (no ghost body of infinite or duplicated mass). When the centre
-// leaves the arena the body is moved one period back and every image offset is relabelled
-// so that no fixture moves in the world: contacts and sensor overlaps survive the jump.
+// fixtures (sensors, and the solid disc when close enough to matter) on the same body,
+// offset by a whole period (+-W, +-H), kept while the agent is near an edge. Contacts with an
+// image therefore act on the agent itself, within the same solver iteration: across the seam
+// a collision is the same two-body problem as in mid-arena (no ghost body of infinite or
+// doubled mass). When the centre leaves the arena the body is moved one period back and the
+// image offsets are relabelled so that no fixture moves in the world: contacts and sensor
+// overlaps survive the jump.
 #include <box2d/box2d.h>
 
 #include <array>
@@ -23,8 +24,12 @@ struct BodyShapes {
   float width = 180.0f;        // arena period
   float height = 180.0f;
   bool torus = true;
-  float add_margin = 0.0f;   // an image is added when the centre is this close to an edge
-  float keep_margin = 0.0f;  // and removed when it is farther than this
+  // An image's sensors are added when the centre comes this close to an edge and removed
+  // beyond the keep margin; its solid disc likewise, with the (smaller) solid margins.
+  float sensor_add_margin = 0.0f;
+  float sensor_keep_margin = 0.0f;
+  float solid_add_margin = 0.0f;
+  float solid_keep_margin = 0.0f;
   float linear_damping = 0.0f;
 };
 
@@ -34,15 +39,11 @@ class PeriodicBody {
   void create(b2World& world, AgentId agent, b2Vec2 position, const BodyShapes& shapes);
 
   b2Body* body() const { return body_; }
-  int image_count() const { return count_; }  // including the body's own fixtures
-  b2Fixture* solid_fixture(int image) const { return images_[image].solid; }
 
-  // Torus: if the centre has left [0, W) x [0, H), moves the body one period back, keeping
-  // its velocity and the world position of every fixture.
-  void wrap();
-  // Torus: adds the images an agent this close to an edge needs and drops those it no
-  // longer does (with hysteresis, so an agent on a margin does not churn fixtures).
-  void update_images();
+  // Torus: if the centre has left [0, W) x [0, H), moves the body one period back (its
+  // velocity and the world position of every fixture kept), then adds the images an agent
+  // this close to an edge needs and drops those it no longer does (with hysteresis).
+  void follow_torus();
   // The contact filter depends on the agent's signal: re-run it on every solid fixture.
   void refilter_solids();
 
@@ -50,11 +51,13 @@ class PeriodicBody {
   struct Image {
     std::int8_t ix = 0;  // offset in periods: the fixtures sit at (ix W, iy H) from the centre
     std::int8_t iy = 0;
-    b2Fixture* solid = nullptr;
+    b2Fixture* solid = nullptr;  // always present on the image at offset zero
     b2Fixture* detect = nullptr;
     b2Fixture* sense = nullptr;
   };
 
+  void wrap();
+  void update_images();
   void add_image(int ix, int iy);
   void remove_image(int index);
   bool has_image(int ix, int iy) const;

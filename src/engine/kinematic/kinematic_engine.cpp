@@ -38,7 +38,10 @@ class KinematicEngine final : public Engine {
 
   std::span<const Vec2> positions() const override { return positions_; }
   const NeighbourLists& neighbours() const override { return neighbours_; }
-  std::span<const std::uint8_t> reflections() const override { return reflections_; }
+  // A torus reflects nothing; an empty span spares controllers a pass over N zeros.
+  std::span<const std::uint8_t> reflections() const override {
+    return arena_.torus() ? std::span<const std::uint8_t>{} : std::span<const std::uint8_t>(reflections_);
+  }
 
  private:
   static double fastest_speed(std::span<const MotionCommand> commands) {
@@ -50,8 +53,11 @@ class KinematicEngine final : public Engine {
   void move(std::span<const MotionCommand> commands) {
     for (std::size_t i = 0; i < positions_.size(); ++i) {
       positions_[i] += commands[i].velocity * stop_time_[i];
-      reflections_[i] = arena_.torus() ? 0 : reflect_off_walls(positions_[i]);
-      positions_[i] = arena_.wrap(positions_[i]);
+      if (arena_.torus()) {
+        positions_[i] = arena_.wrap(positions_[i]);
+      } else {
+        reflections_[i] = reflect_off_walls(positions_[i]);
+      }
     }
   }
 
@@ -80,27 +86,20 @@ class KinematicEngine final : public Engine {
     const double pair_reach =
         std::max(limits_.detection_radius, limits_.contact_distance) + 2.0 * speed * limits_.dt;
     const double reach = std::max(sensing_radius_, pair_reach);
-    grid_.rebuild(arena_, reach, positions_);
-    neighbours_.reset(positions_.size());
+    // Cells much smaller than the spacing between agents cost more to sweep than the
+    // distance checks they save: about two agents' worth of area per cell.
+    const double spacing = std::sqrt(arena_.width() * arena_.height() /
+                                     std::max<std::size_t>(1, positions_.size()));
+    grid_.rebuild(arena_, std::max(reach, 1.2 * spacing), positions_);
+    close_.clear();
     pairs_.clear();
     const double sense2 = sensing_radius_ * sensing_radius_;
     const double pair2 = pair_reach * pair_reach;
-    auto consider = [&](std::uint32_t i, std::uint32_t j) {
-      if (j == i) return;
-      const Vec2 d = arena_.displacement(positions_[i], positions_[j]);
-      const double d2 = norm2(d);
-      if (d2 <= sense2) neighbours_.push({j, d, std::sqrt(d2)});
-      if (j > i && d2 <= pair2) pairs_.push_back({i, j, d});
-    };
-    const auto n = static_cast<std::uint32_t>(positions_.size());
-    for (std::uint32_t i = 0; i < n; ++i) {
-      if (grid_.degenerate()) {
-        for (std::uint32_t j = 0; j < n; ++j) consider(i, j);
-      } else {
-        grid_.for_each_nearby(i, [&](std::uint32_t j) { consider(i, j); });
-      }
-      neighbours_.close_agent(i);
-    }
+    grid_.for_each_close_pair(reach, [&](std::uint32_t i, std::uint32_t j, Vec2 d, double d2) {
+      if (d2 <= sense2) close_.push_back({i, j, d, std::sqrt(d2)});
+      if (d2 <= pair2) pairs_.push_back({i, j, d});
+    });
+    neighbours_.assign_from_pairs(positions_.size(), close_);
   }
 
   ArenaGeometry arena_;
@@ -115,6 +114,7 @@ class KinematicEngine final : public Engine {
   UniformGrid grid_;
   NeighbourLists neighbours_;
   std::vector<CandidatePair> pairs_;
+  std::vector<ClosePair> close_;
   GuardedMotion motion_;
 };
 

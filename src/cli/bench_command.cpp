@@ -1,0 +1,88 @@
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "bench/kinematic_bench.hpp"
+#include "bench/machine_info.hpp"
+#include "bench/render_timing.hpp"
+#include "cli/commands.hpp"
+#include "engine/box2d/box2d_bench.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct BenchOptions {
+  bool json = false;
+  bool quick = false;
+};
+
+// Steps so each size costs about the same number of agent-steps.
+std::int64_t steps_for(int n, bool quick) {
+  const double budget = quick ? 2e6 : 3e7;
+  return std::max<std::int64_t>(10, static_cast<std::int64_t>(budget / n));
+}
+
+nlohmann::json kinematic_series(BenchScenario scenario, bool quick, bool verbose) {
+  nlohmann::json series = nlohmann::json::array();
+  for (int n : {1000, 10000, 100000, 1000000}) {
+    const auto r = bench_kinematic(n, scenario, steps_for(n, quick), quick ? 1 : 3);
+    series.push_back({{"n", r.n},
+                      {"steps", r.steps},
+                      {"agent_steps_per_s", r.agent_steps_per_s},
+                      {"real_time_factor", r.real_time_factor}});
+    if (verbose) {
+      std::fprintf(stderr, "  n = %7d: %6.2f M agent-steps/s, %8.1f x real time\n", n,
+                   r.agent_steps_per_s / 1e6, r.real_time_factor);
+    }
+  }
+  return series;
+}
+
+nlohmann::json box2d_series(bool quick, bool verbose) {
+  nlohmann::json series = nlohmann::json::array();
+  for (int n : {100, 1000, 10000}) {
+    const auto r = bench_box2d(n, static_cast<int>(steps_for(n, quick) / 10), quick ? 1 : 3);
+    series.push_back({{"n", r.n},
+                      {"body_steps_per_s", r.body_steps_per_s},
+                      {"bare_box2d_body_steps_per_s", r.bare_box2d_body_steps_per_s},
+                      {"real_time_factor", r.body_steps_per_s / n * 0.1}});
+    if (verbose) {
+      std::fprintf(stderr, "  n = %5d: %6.3f M body-steps/s (bare Box2D %6.3f M, ratio %.2f)\n",
+                   n, r.body_steps_per_s / 1e6, r.bare_box2d_body_steps_per_s / 1e6,
+                   r.overhead());
+    }
+  }
+  return series;
+}
+
+int bench_command(const BenchOptions& options) {
+  const bool verbose = !options.json;
+  nlohmann::json report;
+  if (verbose) std::fprintf(stderr, "kinematic, worst case (ghost collisions), one thread:\n");
+  report["kinematic"] = kinematic_series(BenchScenario::GhostWorstCase, options.quick, verbose);
+  if (verbose) std::fprintf(stderr, "kinematic, Bayindir full model p = 0.001, one thread:\n");
+  report["kinematic_bayindir"] = kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
+  if (verbose) std::fprintf(stderr, "box2d engine vs bare Box2D:\n");
+  report["box2d"] = box2d_series(options.quick, verbose);
+  report["render_ms_per_frame"] = render_ms_per_frame(1000, 800, 800, options.quick ? 5 : 30);
+  if (verbose) {
+    std::fprintf(stderr, "render: %.1f ms per 800x800 frame with 1000 agents (drawing only)\n",
+                 report["render_ms_per_frame"].get<double>());
+  }
+  report["machine"] = machine_info();
+  if (options.json) std::cout << report.dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* command = app.add_subcommand(
+      "bench", "Measure throughput: kinematic and Box2D engines, rendering (see README)");
+  command->add_flag("--json", options->json, "Print one JSON object (for scripts)");
+  command->add_flag("--quick", options->quick, "Fewer steps per size (same sizes)");
+  command->callback([options, &action] { action = [options] { return bench_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli
