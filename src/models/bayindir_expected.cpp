@@ -32,14 +32,14 @@ void advance_expected(const BayindirRates& rates, BayindirState& state) {
   state.totals.shrinks += shrinks;
 }
 
-std::vector<TimeseriesRow> bayindir_expected_series(const BayindirRates& rates,
-                                                    const std::vector<std::int64_t>& grid) {
+std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
+                                               const std::vector<std::int64_t>& grid) {
   BayindirState state = BayindirState::all_searching(rates.agents);
-  std::vector<TimeseriesRow> rows;
+  std::vector<ModelRow> rows;
   walk_grid(
       grid, [&](std::int64_t) { advance_expected(rates, state); },
       [&](std::int64_t step) {
-        rows.push_back(to_timeseries_row(state, rates.forms_aggregates, true, 0, step));
+        rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
       });
   return rows;
 }

@@ -16,7 +16,7 @@ namespace swarmagg {
 void advance_expected(const BayindirRates& rates, BayindirState& state);
 
 // The state at each step of `grid` (increasing, from 0), starting from all searching.
-std::vector<TimeseriesRow> bayindir_expected_series(const BayindirRates& rates,
-                                                    const std::vector<std::int64_t>& grid);
+std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
+                                               const std::vector<std::int64_t>& grid);
 
 }  // namespace swarmagg

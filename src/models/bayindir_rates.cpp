@@ -40,7 +40,9 @@ void check_probabilities(const BayindirRates& rates) {
   const int n = rates.agents;
   const double per_searcher_creation = 2.0 * rates.creation.at(n) / std::max(1, n);
   double per_searcher_growth = 0.0;  // sum n_m g_m <= N max_m(g_m / m): g_m / m decreases
-  for (int m = 2; m <= n; ++m) per_searcher_growth = std::max(per_searcher_growth, rates.growth[m] / m * n);
+  for (int m = 2; m <= n; ++m) {
+    per_searcher_growth = std::max(per_searcher_growth, rates.growth[m] / m * n);
+  }
   bool ok = per_searcher_creation + per_searcher_growth <= 1.0;
   for (int m = 2; m <= n; ++m) ok = ok && n * rates.growth[m] + rates.loss[m] <= 1.0;
   if (!ok) {

@@ -37,9 +37,9 @@ double BayindirState::largest_expected() const {
   return 0.0;
 }
 
-TimeseriesRow to_timeseries_row(const BayindirState& state, bool forms_aggregates,
-                                bool expected_counts, int replicate, std::int64_t step) {
-  TimeseriesRow row;
+ModelRow to_model_row(const BayindirState& state, bool forms_aggregates, bool expected_counts,
+                      int replicate, std::int64_t step) {
+  ModelRow row;
   row.replicate = replicate;
   row.step = step;
   if (!forms_aggregates) {

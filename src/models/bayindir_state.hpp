@@ -31,7 +31,7 @@ struct BayindirState {
 
 // A timeseries row of the state. Collision-controller worlds form no aggregates, so only
 // their encounters are a prediction.
-TimeseriesRow to_timeseries_row(const BayindirState& state, bool forms_aggregates,
-                                bool expected_counts, int replicate, std::int64_t step);
+ModelRow to_model_row(const BayindirState& state, bool forms_aggregates, bool expected_counts,
+                      int replicate, std::int64_t step);
 
 }  // namespace swarmagg

@@ -18,13 +18,13 @@ std::int64_t draw_with_mean(std::int64_t trials, double expected, UniformStream&
 void count_encounters(const BayindirRates& rates, BayindirState& state, UniformStream& uniforms) {
   const auto y = static_cast<std::int64_t>(state.searching);
   const std::int64_t pairs = y * (y - 1) / 2;
-  state.totals.encounters += static_cast<double>(draw_with_mean(pairs, rates.creation.at(y), uniforms));
+  state.totals.encounters +=
+      static_cast<double>(draw_with_mean(pairs, rates.creation.at(y), uniforms));
 }
 
 }  // namespace
 
-void advance_stochastic(const BayindirRates& rates, BayindirState& state,
-                        UniformStream& uniforms) {
+void advance_stochastic(const BayindirRates& rates, BayindirState& state, UniformStream& uniforms) {
   if (!rates.forms_aggregates) {
     count_encounters(rates, state, uniforms);
     return;
@@ -59,11 +59,11 @@ void advance_stochastic(const BayindirRates& rates, BayindirState& state,
   state.totals.shrinks += static_cast<double>(shrinks);
 }
 
-std::vector<TimeseriesRow> bayindir_stochastic_series(const BayindirRates& rates,
-                                                      const std::vector<std::int64_t>& grid,
-                                                      std::uint64_t seed, int replicates,
-                                                      std::uint64_t stream) {
-  std::vector<TimeseriesRow> rows;
+std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
+                                                 const std::vector<std::int64_t>& grid,
+                                                 std::uint64_t seed, int replicates,
+                                                 std::uint64_t stream) {
+  std::vector<ModelRow> rows;
   for (int replicate = 0; replicate < replicates; ++replicate) {
     const CounterRng rng = CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
     BayindirState state = BayindirState::all_searching(rates.agents);
@@ -74,8 +74,7 @@ std::vector<TimeseriesRow> bayindir_stochastic_series(const BayindirRates& rates
           advance_stochastic(rates, state, uniforms);
         },
         [&](std::int64_t step) {
-          rows.push_back(
-              to_timeseries_row(state, rates.forms_aggregates, false, replicate, step));
+          rows.push_back(to_model_row(state, rates.forms_aggregates, false, replicate, step));
         });
   }
   return rows;

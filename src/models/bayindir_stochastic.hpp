@@ -18,14 +18,13 @@
 
 namespace swarmagg {
 
-void advance_stochastic(const BayindirRates& rates, BayindirState& state,
-                        UniformStream& uniforms);
+void advance_stochastic(const BayindirRates& rates, BayindirState& state, UniformStream& uniforms);
 
 // `replicates` independent runs from all searching; rows ordered by replicate, then step.
 // `stream` separates the draws of different variants of one world.
-std::vector<TimeseriesRow> bayindir_stochastic_series(const BayindirRates& rates,
-                                                      const std::vector<std::int64_t>& grid,
-                                                      std::uint64_t seed, int replicates,
-                                                      std::uint64_t stream);
+std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
+                                                 const std::vector<std::int64_t>& grid,
+                                                 std::uint64_t seed, int replicates,
+                                                 std::uint64_t stream);
 
 }  // namespace swarmagg

@@ -17,8 +17,8 @@ std::int64_t invert_cdf(std::int64_t trials, double q, double u) {
   double cumulative = probability;
   std::int64_t successes = 0;
   while (u >= cumulative && successes < trials) {
-    probability *= odds * static_cast<double>(trials - successes) /
-                   static_cast<double>(successes + 1);
+    probability *=
+        odds * static_cast<double>(trials - successes) / static_cast<double>(successes + 1);
     ++successes;
     cumulative += probability;
   }

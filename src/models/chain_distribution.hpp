@@ -4,18 +4,19 @@
 // no cancellation, so results stay non-negative and accurate for any number of steps.
 #include <Eigen/Dense>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "models/partition_chain.hpp"
 
 namespace swarmagg {
 
-// expm(Q): the transition matrix of one step.
-Eigen::MatrixXd one_step_transition(const Generator& generator);
-
 // Row j is the distribution after steps[j] steps from state `initial`, e_initial expm(k Q).
+// With the chain's stationary distribution, propagation stops once the distribution is
+// within 1e-13 of it in total variation (every later one is at least as close).
 Eigen::MatrixXd transient_distributions(const Generator& generator, int initial,
-                                        const std::vector<std::int64_t>& steps);
+                                        const std::vector<std::int64_t>& steps,
+                                        const std::optional<Eigen::VectorXd>& stationary = {});
 
 // The stationary distribution (pi Q = 0, sum pi = 1) of an irreducible chain.
 Eigen::VectorXd stationary_distribution(const Generator& generator);

@@ -42,15 +42,29 @@ void append_tidy_row(std::string& out, const VariantPrediction& prediction,
   out += '\n';
 }
 
-bool has_box_plot(std::string_view column) { return column == "noa" || column == "encounters"; }
+// model.csv keeps to what is plotted against simulations, so a 50000-step world stays a
+// few MB; every column of every replicate is in the model timeseries files.
+enum class Statistics { None, MeanSd, BoxPlot };
+
+bool in_expected_rows(std::string_view column) {
+  return column != "waiting";
+}  // N - searching
+
+Statistics stochastic_statistics(std::string_view column) {
+  if (column == "noa" || column == "encounters") return Statistics::BoxPlot;
+  if (column == "searching" || column == "largest") return Statistics::MeanSd;
+  return Statistics::None;
+}
 
 void append_replicate_statistics(std::string& out, const VariantPrediction& prediction,
                                  std::int64_t step, double dt, std::string_view column,
                                  const std::vector<double>& values) {
+  const Statistics statistics = stochastic_statistics(column);
+  if (statistics == Statistics::None) return;
   const std::string name(column);
   append_tidy_row(out, prediction, step, dt, name, sample_mean(values));
   append_tidy_row(out, prediction, step, dt, name + ":sd", sample_sd(values));
-  if (!has_box_plot(column)) return;
+  if (statistics != Statistics::BoxPlot) return;
   constexpr std::pair<const char*, double> kBoxPlot[] = {
       {":min", 0.0}, {":q25", 0.25}, {":median", 0.5}, {":q75", 0.75}, {":max", 1.0}};
   for (const auto& [suffix, q] : kBoxPlot) {
@@ -59,9 +73,10 @@ void append_replicate_statistics(std::string& out, const VariantPrediction& pred
 }
 
 void append_expected_series(std::string& out, const VariantPrediction& prediction, double dt) {
-  for (const TimeseriesRow& row : prediction.series) {
-    for (const TimeseriesColumn& column : kTimeseriesColumns) {
-      if (const auto& value = row.*column.field) {
+  for (const ModelRow& row : prediction.series) {
+    for (const ModelColumn& column : kModelColumns) {
+      const auto& value = row.*column.field;
+      if (value && in_expected_rows(column.name)) {
         append_tidy_row(out, prediction, row.step, dt, column.name, *value);
       }
     }
@@ -69,12 +84,12 @@ void append_expected_series(std::string& out, const VariantPrediction& predictio
 }
 
 void append_stochastic_series(std::string& out, const VariantPrediction& prediction, double dt) {
-  std::map<std::int64_t, std::vector<const TimeseriesRow*>> replicates_at;
-  for (const TimeseriesRow& row : prediction.series) replicates_at[row.step].push_back(&row);
+  std::map<std::int64_t, std::vector<const ModelRow*>> replicates_at;
+  for (const ModelRow& row : prediction.series) replicates_at[row.step].push_back(&row);
   for (const auto& [step, rows] : replicates_at) {
-    for (const TimeseriesColumn& column : kTimeseriesColumns) {
+    for (const ModelColumn& column : kModelColumns) {
       std::vector<double> values;
-      for (const TimeseriesRow* row : rows) {
+      for (const ModelRow* row : rows) {
         if (const auto& value = row->*column.field) values.push_back(*value);
       }
       if (!values.empty()) {
@@ -101,20 +116,20 @@ std::string model_csv(const std::vector<VariantPrediction>& predictions, double 
   return out;
 }
 
-std::string timeseries_csv(const VariantPrediction& prediction, double dt) {
+std::string model_timeseries_csv(const VariantPrediction& prediction, double dt) {
   std::string out = "replicate,step,time";
-  for (const TimeseriesColumn& column : kTimeseriesColumns) {
+  for (const ModelColumn& column : kModelColumns) {
     out += ',';
     out += column.name;
   }
   out += '\n';
-  for (const TimeseriesRow& row : prediction.series) {
+  for (const ModelRow& row : prediction.series) {
     out += std::to_string(row.replicate);
     out += ',';
     out += std::to_string(row.step);
     out += ',';
     append_time(out, row.step, dt);
-    for (const TimeseriesColumn& column : kTimeseriesColumns) {
+    for (const ModelColumn& column : kModelColumns) {
       out += ',';
       if (const auto& value = row.*column.field) append_number(out, *value);
     }

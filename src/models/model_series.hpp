@@ -2,7 +2,9 @@
 // What a model variant predicts, in the shapes the outputs need: rows with the simulation's
 // timeseries.csv columns (so model and simulation plot together) and extra tidy values that
 // have no timeseries column (partition probabilities, stationary values). A column a model
-// does not predict stays empty rather than pretending to be zero.
+// does not predict stays empty rather than pretending to be zero. The models do not tell
+// GO, LEAVE and APPROACH apart: their `searching` is every agent outside an aggregate (the
+// simulation's searching + leaving + approaching) and `waiting` is N minus that.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,7 +12,7 @@
 
 namespace swarmagg {
 
-struct TimeseriesRow {
+struct ModelRow {
   int replicate = 0;
   std::int64_t step = 0;
   std::optional<double> noa, searching, waiting, leaving, approaching, largest;
@@ -18,22 +20,22 @@ struct TimeseriesRow {
 };
 
 // The value columns of timeseries.csv, in its order, with the row field holding each.
-struct TimeseriesColumn {
+struct ModelColumn {
   const char* name;
-  std::optional<double> TimeseriesRow::*field;
+  std::optional<double> ModelRow::*field;
 };
-inline constexpr TimeseriesColumn kTimeseriesColumns[] = {
-    {"noa", &TimeseriesRow::noa},
-    {"searching", &TimeseriesRow::searching},
-    {"waiting", &TimeseriesRow::waiting},
-    {"leaving", &TimeseriesRow::leaving},
-    {"approaching", &TimeseriesRow::approaching},
-    {"largest", &TimeseriesRow::largest},
-    {"creations", &TimeseriesRow::creations},
-    {"growths", &TimeseriesRow::growths},
-    {"dissipations", &TimeseriesRow::dissipations},
-    {"shrinks", &TimeseriesRow::shrinks},
-    {"encounters", &TimeseriesRow::encounters},
+inline constexpr ModelColumn kModelColumns[] = {
+    {"noa", &ModelRow::noa},
+    {"searching", &ModelRow::searching},
+    {"waiting", &ModelRow::waiting},
+    {"leaving", &ModelRow::leaving},
+    {"approaching", &ModelRow::approaching},
+    {"largest", &ModelRow::largest},
+    {"creations", &ModelRow::creations},
+    {"growths", &ModelRow::growths},
+    {"dissipations", &ModelRow::dissipations},
+    {"shrinks", &ModelRow::shrinks},
+    {"encounters", &ModelRow::encounters},
 };
 
 // One tidy value; no step means "stationary" (time-independent).
@@ -44,11 +46,12 @@ struct TidyValue {
 };
 
 struct VariantPrediction {
-  std::string model;    // bayindir | soysal
-  std::string variant;  // original | collision | original-stochastic | peripheral ...
+  std::string model;        // bayindir | soysal
+  std::string variant;      // original | collision | original-stochastic | peripheral ...
   bool stochastic = false;  // series holds replicates; model.csv gets their statistics
-  std::vector<TimeseriesRow> series;
-  std::vector<TidyValue> extra;
+  bool chosen = false;      // the variant the world's model block names (creation / leaving)
+  std::vector<ModelRow> series = {};
+  std::vector<TidyValue> extra = {};
 };
 
 }  // namespace swarmagg

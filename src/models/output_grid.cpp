@@ -9,6 +9,7 @@ std::vector<std::int64_t> record_grid(const WorldSpec& world) {
   const std::int64_t every = std::max(1, world.run.record_every);
   std::vector<std::int64_t> grid;
   for (std::int64_t step = 0; step <= world.steps(); step += every) grid.push_back(step);
+  if (grid.back() != world.steps()) grid.push_back(world.steps());
   return grid;
 }
 

@@ -10,7 +10,7 @@
 
 namespace swarmagg {
 
-// 0, k, 2k, ... up to world.steps(), k = run.record_every.
+// 0, k, 2k, ... and world.steps(), k = run.record_every: the steps a run records.
 std::vector<std::int64_t> record_grid(const WorldSpec& world);
 
 // 0 plus about `points` log-spaced and `points` evenly spaced steps in (0, world.steps()],

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <set>
 
 namespace swarmagg {
 
@@ -48,13 +49,13 @@ std::vector<Move> moves_from(const Partition& partition, const SoysalRates& rate
 }
 
 std::vector<Partition> reachable_states(const SoysalRates& rates, const Partition& start) {
-  std::map<Partition, bool> seen{{start, true}};
+  std::set<Partition> seen{start};
   std::deque<Partition> queue{start};
   while (!queue.empty()) {
     const Partition current = queue.front();
     queue.pop_front();
     for (const Move& move : moves_from(current, rates)) {
-      if (seen.emplace(move.target, true).second) queue.push_back(move.target);
+      if (seen.insert(move.target).second) queue.push_back(move.target);
     }
   }
   std::vector<Partition> states;
@@ -89,7 +90,8 @@ PartitionChain build_partition_chain(const SoysalRates& rates) {
   // Every state is reachable from all free by construction; all free is reachable back
   // (by agents leaving one at a time) when every aggregate size present can lose an agent.
   chain.recurrent = std::all_of(chain.states.begin(), chain.states.end(), [&](const Partition& p) {
-    return std::all_of(p.begin(), p.end(), [&](int part) { return part == 1 || rates.leave[part] > 0.0; });
+    return std::all_of(p.begin(), p.end(),
+                       [&](int part) { return part == 1 || rates.leave[part] > 0.0; });
   });
   return chain;
 }

@@ -17,8 +17,8 @@ using Generator = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 struct PartitionChain {
   std::vector<Partition> states;
-  Generator generator;  // Q: off-diagonal rates, rows summing to 0
-  int all_free = 0;     // index of (1, ..., 1), the initial state
+  Generator generator;     // Q: off-diagonal rates, rows summing to 0
+  int all_free = 0;        // index of (1, ..., 1), the initial state
   bool recurrent = false;  // every state returns to all free: a unique stationary law exists
 };
 

@@ -24,17 +24,22 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
   const std::vector<std::int64_t> grid = record_grid(world);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
-    predictions.push_back({"bayindir", creation_variant_name(variant), false,
-                           bayindir_expected_series(bayindir_rates(world, variant), grid), {}});
+    predictions.push_back(
+        {.model = "bayindir",
+         .variant = creation_variant_name(variant),
+         .chosen = variant == world.model.creation,
+         .series = bayindir_expected_series(bayindir_rates(world, variant), grid)});
   }
   if (world.model.stochastic_replicates <= 0) return predictions;
   for (const CreationVariant variant : kCreationVariants) {
     const auto stream = static_cast<std::uint64_t>(variant);
-    predictions.push_back({"bayindir", creation_variant_name(variant) + "-stochastic", true,
-                           bayindir_stochastic_series(bayindir_rates(world, variant), grid,
-                                                      world.run.seed,
-                                                      world.model.stochastic_replicates, stream),
-                           {}});
+    predictions.push_back(
+        {.model = "bayindir",
+         .variant = creation_variant_name(variant) + "-stochastic",
+         .stochastic = true,
+         .chosen = variant == world.model.creation,
+         .series = bayindir_stochastic_series(bayindir_rates(world, variant), grid, world.run.seed,
+                                              world.model.stochastic_replicates, stream)});
   }
   return predictions;
 }
@@ -46,7 +51,7 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 }
 
 // The quantity a variant is judged by: NOA, or encounters for the collision check.
-std::optional<double> headline(const TimeseriesRow& row) {
+std::optional<double> headline(const ModelRow& row) {
   return row.noa ? row.noa : row.encounters;
 }
 
@@ -54,13 +59,13 @@ std::string final_value_summary(const VariantPrediction& prediction) {
   const std::int64_t last_step = prediction.series.back().step;
   const char* name = prediction.series.back().noa ? "NOA" : "encounters";
   std::vector<double> finals;
-  for (const TimeseriesRow& row : prediction.series) {
+  for (const ModelRow& row : prediction.series) {
     if (row.step == last_step && headline(row)) finals.push_back(*headline(row));
   }
   std::string text = std::string(name) + " at step " + std::to_string(last_step) + ": ";
   if (!prediction.stochastic) return text + format("%.4g", finals.front());
-  return text + format("%.4g +- %.2g", sample_mean(finals), sample_sd(finals)) + " (mean +- sd of " +
-         std::to_string(finals.size()) + " replicates)";
+  return text + format("%.4g +- %.2g", sample_mean(finals), sample_sd(finals)) +
+         " (mean +- sd of " + std::to_string(finals.size()) + " replicates)";
 }
 
 std::string stationary_summary(const VariantPrediction& prediction) {
@@ -83,8 +88,12 @@ std::string stationary_summary(const VariantPrediction& prediction) {
 
 std::vector<VariantPrediction> predict(const WorldSpec& world) {
   if (world.controller.type != ControllerType::Soysal) return bayindir_predictions(world);
-  return {soysal_prediction(world, LeavingVariant::Original),
-          soysal_prediction(world, LeavingVariant::Peripheral)};
+  std::vector<VariantPrediction> predictions;
+  for (const LeavingVariant variant : {LeavingVariant::Original, LeavingVariant::Peripheral}) {
+    predictions.push_back(soysal_prediction(world, variant));
+    predictions.back().chosen = variant == world.model.leaving;
+  }
+  return predictions;
 }
 
 std::vector<std::string> model_caveats(const WorldSpec& world) {
@@ -121,7 +130,8 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
 std::string prediction_summary(const VariantPrediction& prediction) {
   std::string text = prediction.model + " " + prediction.variant + ": ";
   if (prediction.series.empty()) return text + "no prediction";
-  return text + final_value_summary(prediction) + stationary_summary(prediction);
+  return text + final_value_summary(prediction) + stationary_summary(prediction) +
+         (prediction.chosen ? " [the world's model variant]" : "");
 }
 
 }  // namespace swarmagg

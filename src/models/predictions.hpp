@@ -3,7 +3,8 @@
 // controllers get the Bayindir model, variants `original` and `collision` (expected values)
 // and `original-stochastic`, `collision-stochastic` (model.stochastic_replicates seeded
 // replicates); soysal controllers get the partition model, variants `original` and
-// `peripheral`. Each variant reads the same WorldSpec the simulator runs.
+// `peripheral`. Each variant reads the same WorldSpec the simulator runs; the ones the
+// world's model block names (model.creation, model.leaving) are marked `chosen`.
 #include <string>
 #include <vector>
 

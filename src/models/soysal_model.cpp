@@ -28,9 +28,9 @@ StateObservables observables_of(const std::vector<Partition>& states) {
   return values;
 }
 
-TimeseriesRow expected_row(const Eigen::RowVectorXd& distribution,
-                           const StateObservables& values, int agents, std::int64_t step) {
-  TimeseriesRow row;
+ModelRow expected_row(const Eigen::RowVectorXd& distribution, const StateObservables& values,
+                      int agents, std::int64_t step) {
+  ModelRow row;
   row.step = step;
   row.noa = distribution.dot(values.noa);
   row.searching = distribution.dot(values.free);
@@ -40,11 +40,10 @@ TimeseriesRow expected_row(const Eigen::RowVectorXd& distribution,
 }
 
 void add_stationary(const PartitionChain& chain, const StateObservables& values,
-                    VariantPrediction& prediction) {
-  const Eigen::VectorXd stationary = stationary_distribution(chain.generator);
+                    const Eigen::VectorXd& stationary, VariantPrediction& prediction) {
   for (std::size_t i = 0; i < chain.states.size(); ++i) {
-    prediction.extra.push_back(
-        {"stationary:" + partition_label(chain.states[i]), std::nullopt, stationary(static_cast<Eigen::Index>(i))});
+    prediction.extra.push_back({"stationary:" + partition_label(chain.states[i]), std::nullopt,
+                                stationary(static_cast<Eigen::Index>(i))});
   }
   prediction.extra.push_back({"stationary_noa", std::nullopt, stationary.dot(values.noa)});
   prediction.extra.push_back({"stationary_searching", std::nullopt, stationary.dot(values.free)});
@@ -62,13 +61,16 @@ VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant varia
   if (partition_count(agents) > kLargestPartitionChain) {
     throw InputError("model: the partition model of " + std::to_string(agents) + " agents has " +
                      std::to_string(partition_count(agents)) + " states; at most " +
-                     std::to_string(kLargestPartitionChain) + " (N <= 25) are supported");
+                     std::to_string(kLargestPartitionChain) + " (N <= 30) are supported");
   }
   const PartitionChain chain = build_partition_chain(soysal_rates(world, variant));
-  VariantPrediction prediction{"soysal", leaving_variant_name(variant), false, {}, {}};
+  VariantPrediction prediction{.model = "soysal", .variant = leaving_variant_name(variant)};
   const StateObservables values = observables_of(chain.states);
   const std::vector<std::int64_t> grid = sparse_grid(world, kPartitionReportPoints);
-  const Eigen::MatrixXd distributions = transient_distributions(chain.generator, chain.all_free, grid);
+  std::optional<Eigen::VectorXd> stationary;
+  if (chain.recurrent) stationary = stationary_distribution(chain.generator);
+  const Eigen::MatrixXd distributions =
+      transient_distributions(chain.generator, chain.all_free, grid, stationary);
   for (std::size_t j = 0; j < grid.size(); ++j) {
     const Eigen::RowVectorXd distribution = distributions.row(static_cast<Eigen::Index>(j));
     prediction.series.push_back(expected_row(distribution, values, agents, grid[j]));
@@ -77,7 +79,7 @@ VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant varia
                                   distribution(static_cast<Eigen::Index>(i))});
     }
   }
-  if (chain.recurrent) add_stationary(chain, values, prediction);
+  if (stationary) add_stationary(chain, values, *stationary, prediction);
   return prediction;
 }
 

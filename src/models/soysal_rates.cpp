@@ -7,7 +7,7 @@
 
 namespace swarmagg {
 
-double leave_probability(LeaveLaw law, double p0, int size) {
+double soysal_leave_probability(LeaveLaw law, double p0, int size) {
   switch (law) {
     case LeaveLaw::Constant:
       return p0;
@@ -46,7 +46,7 @@ SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant) {
     }
     if (world.controller.leave) {
       rates.leave[i] = agents_able_to_leave(world, variant, i) *
-                       leave_probability(world.controller.leave_law, world.controller.p0, i);
+                       soysal_leave_probability(world.controller.leave_law, world.controller.p0, i);
     }
   }
   return rates;

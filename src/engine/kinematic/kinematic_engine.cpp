@@ -87,7 +87,7 @@ class KinematicEngine final : public Engine {
         std::max(limits_.detection_radius, limits_.contact_distance) + 2.0 * speed * limits_.dt;
     const double reach = std::max(sensing_radius_, pair_reach);
     // Cells much smaller than the spacing between agents cost more to sweep than the
-    // distance checks they save: about two agents' worth of area per cell.
+    // distance checks they save; about 1.4 agents per cell measured best (callgrind).
     const double spacing = std::sqrt(arena_.width() * arena_.height() /
                                      std::max<std::size_t>(1, positions_.size()));
     grid_.rebuild(arena_, std::max(reach, 1.2 * spacing), positions_);

@@ -1,0 +1,67 @@
+// `swarmagg model WORLD.yaml [--out DIR]`: the world's macroscopic predictions (SPEC 5),
+// written beside a run of the same world so that the two plot together.
+#include <chrono>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/world_options.hpp"
+#include "models/model_csv.hpp"
+#include "models/predictions.hpp"
+#include "output/atomic_file.hpp"
+#include "run/run_folder.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct ModelCommandOptions {
+  WorldOptions world;
+  std::string out;
+  bool quiet = false;
+};
+
+// model.csv (tidy, every variant) and model-timeseries/<model>-<variant>.csv (the
+// simulation's timeseries.csv columns).
+void write_model_outputs(const WorldSpec& spec, const std::vector<VariantPrediction>& predictions,
+                         const std::filesystem::path& out) {
+  std::filesystem::create_directories(out / "model-timeseries");
+  write_file_atomic(out / "model.csv", model_csv(predictions, spec.engine.dt));
+  for (const VariantPrediction& prediction : predictions) {
+    write_file_atomic(
+        out / "model-timeseries" / (prediction.model + "-" + prediction.variant + ".csv"),
+        model_timeseries_csv(prediction, spec.engine.dt));
+  }
+}
+
+int model_command(const ModelCommandOptions& options) {
+  const WorldSpec spec = options.world.load();
+  const std::filesystem::path out =
+      options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<VariantPrediction> predictions = predict(spec);
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  write_model_outputs(spec, predictions, out);
+  if (options.quiet) return 0;
+  for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
+  for (const VariantPrediction& prediction : predictions) {
+    std::cout << prediction_summary(prediction) << "\n";
+  }
+  std::cout << spec.name << ": " << predictions.size() << " model variants in " << elapsed.count()
+            << " s; outputs in " << out.string() << "/\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_model_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<ModelCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "model", "Compute the world's macroscopic predictions (Bayindir or Soysal model)");
+  options->world.add_to(*command, false);
+  command->add_option(
+      "--out", options->out,
+      "Output folder for model.csv and model-timeseries/ (default runs/<world name>)");
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback([options, &action] { action = [options] { return model_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

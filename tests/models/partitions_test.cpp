@@ -1,0 +1,46 @@
+#include "models/partitions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <set>
+
+namespace swarmagg {
+namespace {
+
+TEST(Partitions, CountsMatchThePartitionNumbers) {
+  const std::pair<int, std::size_t> known[] = {{1, 1},   {2, 2},    {3, 3},    {5, 7},
+                                               {10, 42}, {20, 627}, {30, 5604}};
+  for (const auto& [n, count] : known) {
+    EXPECT_EQ(integer_partitions(n).size(), count) << "N = " << n;
+    EXPECT_EQ(partition_count(n), static_cast<long long>(count)) << "N = " << n;
+  }
+}
+
+TEST(Partitions, EachIsADistinctDecreasingPartitionOfN) {
+  const auto partitions = integer_partitions(12);
+  std::set<Partition> distinct(partitions.begin(), partitions.end());
+  EXPECT_EQ(distinct.size(), partitions.size());
+  for (const Partition& p : partitions) {
+    EXPECT_EQ(std::accumulate(p.begin(), p.end(), 0), 12);
+    EXPECT_TRUE(std::is_sorted(p.begin(), p.end(), std::greater<>()));
+  }
+  EXPECT_EQ(partitions.front(), Partition{12});
+  EXPECT_EQ(partitions.back(), Partition(12, 1));
+}
+
+TEST(Partitions, LabelsAndDerivedQuantities) {
+  const Partition p{3, 1, 1};
+  EXPECT_EQ(partition_label(p), "3+1+1");
+  EXPECT_EQ(free_agents(p), 2);
+  EXPECT_EQ(aggregate_count(p), 1);
+  EXPECT_EQ(largest_aggregate(p), 3);
+  const Partition free{1, 1};
+  EXPECT_EQ(aggregate_count(free), 0);
+  EXPECT_EQ(largest_aggregate(free), 0);  // a single agent is not an aggregate
+  EXPECT_EQ(partition_label(Partition{10, 10}), "10+10");
+}
+
+}  // namespace
+}  // namespace swarmagg

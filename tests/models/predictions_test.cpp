@@ -1,0 +1,69 @@
+#include "models/predictions.hpp"
+
+#include <gtest/gtest.h>
+
+#include "model_test_worlds.hpp"
+
+namespace swarmagg {
+namespace {
+
+std::vector<std::string> variants_of(const std::vector<VariantPrediction>& predictions) {
+  std::vector<std::string> names;
+  for (const auto& p : predictions) names.push_back(p.model + "/" + p.variant);
+  return names;
+}
+
+TEST(Predictions, BayindirWorldsGetBothCreationVariantsExpectedAndStochastic) {
+  WorldSpec world = testing::bayindir_world(120, 5e-4, true, true);
+  world.run.duration = 100.0;
+  world.model.stochastic_replicates = 3;
+  const auto predictions = predict(world);
+  const std::vector<std::string> expected{"bayindir/original", "bayindir/collision",
+                                          "bayindir/original-stochastic",
+                                          "bayindir/collision-stochastic"};
+  EXPECT_EQ(variants_of(predictions), expected);
+  EXPECT_EQ(predictions[0].series.size(), 101u);  // steps 0, 10, ..., 1000
+  EXPECT_EQ(predictions[3].series.size(), 3 * 101u);
+  EXPECT_TRUE(predictions[3].stochastic);
+  // model.creation defaults to collision: that expected and stochastic variant are chosen.
+  EXPECT_FALSE(predictions[0].chosen);
+  EXPECT_TRUE(predictions[1].chosen);
+  EXPECT_TRUE(predictions[3].chosen);
+  world.model.stochastic_replicates = 0;
+  EXPECT_EQ(predict(world).size(), 2u);
+}
+
+TEST(Predictions, SoysalWorldsGetBothLeavingVariants) {
+  WorldSpec world = testing::soysal_world(5, 150.0);
+  world.run.duration = 1e5;
+  const auto predictions = predict(world);
+  const std::vector<std::string> expected{"soysal/original", "soysal/peripheral"};
+  EXPECT_EQ(variants_of(predictions), expected);
+  EXPECT_TRUE(predictions[1].chosen);  // model.leaving defaults to peripheral
+  const std::string summary = prediction_summary(predictions[1]);
+  EXPECT_NE(summary.find("most likely partition"), std::string::npos) << summary;
+}
+
+TEST(Predictions, CollisionWorldsPredictEncounters) {
+  WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
+  world.controller.type = ControllerType::Collision;
+  world.run.duration = 100.0;
+  world.model.stochastic_replicates = 2;
+  const auto predictions = predict(world);
+  ASSERT_EQ(predictions.size(), 4u);
+  EXPECT_FALSE(predictions[1].series.back().noa.has_value());
+  EXPECT_NEAR(*predictions[1].series.back().encounters, 17.290907397638014, 1e-9);
+  EXPECT_NE(prediction_summary(predictions[1]).find("encounters"), std::string::npos);
+  EXPECT_FALSE(model_caveats(world).empty());
+}
+
+TEST(Predictions, CaveatsNameDeparturesFromTheModelAssumptions) {
+  WorldSpec world = testing::bayindir_world(120, 5e-4, true, false);
+  EXPECT_TRUE(model_caveats(world).empty());
+  world.controller.isolated_wait = IsolatedWait::Stay;
+  world.arena.topology = Topology::Walls;
+  EXPECT_EQ(model_caveats(world).size(), 2u);
+}
+
+}  // namespace
+}  // namespace swarmagg

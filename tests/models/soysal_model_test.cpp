@@ -1,0 +1,75 @@
+#include "models/soysal_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "core/errors.hpp"
+#include "model_test_worlds.hpp"
+
+namespace swarmagg {
+namespace {
+
+// Sum of the `prefix` probabilities at each step (no step: stationary, key -1).
+std::map<std::int64_t, double> probability_mass(const VariantPrediction& prediction,
+                                                const std::string& prefix) {
+  std::map<std::int64_t, double> mass;
+  for (const TidyValue& value : prediction.extra) {
+    if (value.quantity.starts_with(prefix)) mass[value.step.value_or(-1)] += value.value;
+  }
+  return mass;
+}
+
+TEST(SoysalModel, StartsFreeAndReportsNormalisedDistributions) {
+  WorldSpec world = testing::soysal_world(10, 212.0);
+  world.run.duration = 500000.0;  // 5e6 steps
+  const VariantPrediction prediction = soysal_prediction(world, LeavingVariant::Peripheral);
+  EXPECT_EQ(prediction.model, "soysal");
+  EXPECT_EQ(prediction.variant, "peripheral");
+  ASSERT_GT(prediction.series.size(), 50u);
+  EXPECT_EQ(prediction.series.front().step, 0);
+  EXPECT_EQ(*prediction.series.front().noa, 0.0);
+  EXPECT_EQ(*prediction.series.front().searching, 10.0);
+  EXPECT_EQ(*prediction.series.front().largest, 0.0);
+  EXPECT_EQ(prediction.series.back().step, 5000000);
+  EXPECT_GT(*prediction.series.back().noa, 0.5);
+  const auto partitions = probability_mass(prediction, "partition:");
+  EXPECT_EQ(partitions.size(), prediction.series.size());
+  for (const auto& [step, mass] : partitions) EXPECT_NEAR(mass, 1.0, 1e-12) << step;
+  const auto stationary = probability_mass(prediction, "stationary:");
+  ASSERT_EQ(stationary.size(), 1u);
+  EXPECT_NEAR(stationary.at(-1), 1.0, 1e-12);
+}
+
+TEST(SoysalModel, CappedPeripheralEqualsOriginalUpToFiveAgents) {
+  // SPEC 5.3: with the cap, periph(i) = i for i <= 5, so the variants coincide.
+  WorldSpec world = testing::soysal_world(5, 150.0);
+  world.run.duration = 1e5;
+  world.model.periphery_cap = true;
+  const auto original = soysal_prediction(world, LeavingVariant::Original);
+  const auto capped = soysal_prediction(world, LeavingVariant::Peripheral);
+  ASSERT_EQ(original.extra.size(), capped.extra.size());
+  for (std::size_t i = 0; i < original.extra.size(); ++i) {
+    EXPECT_NEAR(original.extra[i].value, capped.extra[i].value, 1e-14);
+  }
+  world.model.periphery_cap = false;  // the paper's form: leaving is faster, fewer aggregates
+  const auto uncapped = soysal_prediction(world, LeavingVariant::Peripheral);
+  EXPECT_LT(*uncapped.series.back().largest, *original.series.back().largest);
+}
+
+TEST(SoysalModel, NoStationaryDistributionWhenNobodyLeaves) {
+  WorldSpec world = testing::soysal_world(5, 150.0);
+  world.controller.leave = false;
+  world.run.duration = 1e4;
+  const auto prediction = soysal_prediction(world, LeavingVariant::Original);
+  EXPECT_TRUE(probability_mass(prediction, "stationary:").empty());
+  EXPECT_FALSE(prediction.series.empty());
+}
+
+TEST(SoysalModel, RefusesStateSpacesTooLargeForTheDenseStationarySolve) {
+  EXPECT_THROW(soysal_prediction(testing::soysal_world(31, 300.0), LeavingVariant::Original),
+               InputError);
+}
+
+}  // namespace
+}  // namespace swarmagg
