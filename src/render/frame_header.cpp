@@ -20,13 +20,13 @@ bool draw_frame_header(std::span<std::uint8_t> rgba, const FrameLayout& layout,
   const int k = layout.text_scale;
   const int y = kTextPadding * k;
   const int left = kTextPadding * k;
-  const int caption_end = draw_text(rgba, layout.width, layout.height, left, y, k,
-                                    palette::kText, frame_caption(snapshot));
+  const int caption_end = draw_text(rgba, layout.width, layout.height, left, y, k, palette::kText,
+                                    frame_caption(snapshot));
 
   std::array<AgentState, kAgentStateCount> states{AgentState::Go, AgentState::Approach,
                                                   AgentState::Wait, AgentState::Leave};
-  const bool approach = snapshot.spec != nullptr &&
-                        snapshot.spec->controller.type == ControllerType::Soysal;
+  const bool approach =
+      snapshot.spec != nullptr && snapshot.spec->controller.type == ControllerType::Soysal;
   const int swatch = kGlyphHeight * k;
   const int gap = 2 * k;
   const int spacing = 8 * k;

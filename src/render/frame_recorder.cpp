@@ -46,8 +46,18 @@ FrameRecorder::FrameRecorder(const WorldSpec& spec, std::filesystem::path dir,
   }
   std::filesystem::create_directories(dir_);
   remove_old_frames(dir_);
-  for (int t = 0; t < options_.encoder_threads; ++t) {
-    encoders_.emplace_back([this] { encode_loop(); });
+  try {
+    for (int t = 0; t < options_.encoder_threads; ++t) {
+      encoders_.emplace_back([this] { encode_loop(); });
+    }
+  } catch (...) {  // could not start a thread: stop the ones that did start
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    work_ready_.notify_all();
+    for (auto& encoder : encoders_) encoder.join();
+    throw;
   }
 }
 
@@ -73,9 +83,8 @@ void FrameRecorder::record(const SwarmSnapshot& snapshot) {
     if (finished_) throw std::logic_error("FrameRecorder::record after finish");
     rethrow_error_locked();
     const int max_buffers = options_.queue_capacity + options_.encoder_threads;
-    space_free_.wait(lock, [&] {
-      return !free_buffers_.empty() || buffers_allocated_ < max_buffers || error_;
-    });
+    space_free_.wait(
+        lock, [&] { return !free_buffers_.empty() || buffers_allocated_ < max_buffers || error_; });
     rethrow_error_locked();
     if (!free_buffers_.empty()) {
       pixels = std::move(free_buffers_.back());
@@ -116,8 +125,8 @@ void FrameRecorder::encode_loop() {
         failed = static_cast<bool>(error_);
       }
       if (!failed) {
-        write_png(dir_ / frame_name(job.index), width_, height_,
-                  job.pixels, options_.compression_level);
+        write_png(dir_ / frame_name(job.index), width_, height_, job.pixels,
+                  options_.compression_level);
       }
     } catch (const std::exception& e) {
       std::lock_guard lock(mutex_);

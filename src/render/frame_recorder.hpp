@@ -7,8 +7,9 @@
 // ((queue_capacity + encoder_threads) frame buffers of width * height * 4 bytes).
 //
 // On construction the directory is created and frame_NNNNNN.png files left there by an
-// earlier run are removed, so a later video never mixes two runs. Errors on an encoder
-// thread (disk full, ...) are rethrown by the next record() or by finish().
+// earlier run are removed, so a later video never mixes two runs. The first error on an
+// encoder thread (disk full, ...) is rethrown once, by the next record() or by finish();
+// frames recorded after it are not written.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "render/frame_header.hpp"
 #include "render/frame_scene.hpp"
@@ -25,7 +26,9 @@ void clear(Rgba8 c) {
 // Binds a context for the scope of a frame and releases it at the end, even on error.
 class Binding {
  public:
-  explicit Binding(OsMesaContext& context) : context_(context) { context_.bind(); }
+  Binding(OsMesaContext& context, std::span<std::uint8_t> target) : context_(context) {
+    context_.bind(target);
+  }
   ~Binding() { context_.release(); }
   Binding(const Binding&) = delete;
   Binding& operator=(const Binding&) = delete;
@@ -37,23 +40,25 @@ class Binding {
 }  // namespace
 
 struct FrameRenderer::Impl {
-  Impl(int width, int height) : context(width, height) {
-    Binding binding(context);
+  Impl(int width, int height)
+      : context(width, height), pixels(static_cast<std::size_t>(width) * height * 4) {
+    Binding binding(context, pixels);
     shapes = std::make_unique<InstancedShapes>();
     shapes->set_viewport(width, height);
   }
   ~Impl() {
-    Binding binding(context);
+    Binding binding(context, pixels);
     shapes.reset();
   }
 
-  std::span<std::uint8_t> render(const SwarmSnapshot& snapshot) {
+  // Draws straight into `target` (width * height * 4 bytes): no copy.
+  void render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> target) {
     if (snapshot.spec == nullptr) throw std::invalid_argument("render: snapshot without a spec");
-    const FrameLayout layout = make_frame_layout(context.width(), context.height(),
-                                                 snapshot.spec->arena);
+    const FrameLayout layout =
+        make_frame_layout(context.width(), context.height(), snapshot.spec->arena);
     const FrameScene& scene = builder.build(snapshot, layout);
     {
-      Binding binding(context);
+      Binding binding(context, target);
       using Layer = InstancedShapes::Layer;
       glDisable(GL_SCISSOR_TEST);
       clear(palette::kMargin);
@@ -72,11 +77,11 @@ struct FrameRenderer::Impl {
         throw std::runtime_error("render: OpenGL error " + std::to_string(error));
       }
     }
-    draw_frame_header(context.pixels(), layout, snapshot);
-    return context.pixels();
+    draw_frame_header(target, layout, snapshot);
   }
 
   OsMesaContext context;
+  std::vector<std::uint8_t> pixels;  // the frame render(snapshot) returns
   std::unique_ptr<InstancedShapes> shapes;
   FrameSceneBuilder builder;
 };
@@ -90,15 +95,20 @@ FrameRenderer::~FrameRenderer() = default;
 FrameRenderer::FrameRenderer(FrameRenderer&&) noexcept = default;
 FrameRenderer& FrameRenderer::operator=(FrameRenderer&&) noexcept = default;
 
-int FrameRenderer::width() const { return impl_->context.width(); }
-int FrameRenderer::height() const { return impl_->context.height(); }
+int FrameRenderer::width() const {
+  return impl_->context.width();
+}
+int FrameRenderer::height() const {
+  return impl_->context.height();
+}
 
 FrameLayout FrameRenderer::layout(const ArenaSpec& arena) const {
   return make_frame_layout(width(), height(), arena);
 }
 
 std::span<const std::uint8_t> FrameRenderer::render(const SwarmSnapshot& snapshot) {
-  return impl_->render(snapshot);
+  impl_->render(snapshot, impl_->pixels);
+  return impl_->pixels;
 }
 
 void FrameRenderer::render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> rgba) {
@@ -107,8 +117,7 @@ void FrameRenderer::render(const SwarmSnapshot& snapshot, std::span<std::uint8_t
                                 " bytes for a " + std::to_string(width()) + "x" +
                                 std::to_string(height()) + " frame");
   }
-  const auto pixels = impl_->render(snapshot);
-  std::copy(pixels.begin(), pixels.end(), rgba.begin());
+  impl_->render(snapshot, rgba);
 }
 
 }  // namespace swarmagg

@@ -112,11 +112,10 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot,
         const Rgba8 tint = palette::aggregate_tint(lowest_member_[a]);
         scene_.tints.push_back({x, y, tint_radius, 0.0f, tint, tint});
       }
-      scene_.rings.push_back({x, y, ring_radius, ring_line, Rgba8{0, 0, 0, 0},
-                              palette::kDetection});
+      scene_.rings.push_back(
+          {x, y, ring_radius, ring_line, Rgba8{0, 0, 0, 0}, palette::kDetection});
       scene_.bodies.push_back({x, y, body_radius, body_line,
-                               palette::state_colour(snapshot.states[i]),
-                               palette::kBodyOutline});
+                               palette::state_colour(snapshot.states[i]), palette::kBodyOutline});
     }
   }
 

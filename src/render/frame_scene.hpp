@@ -2,8 +2,9 @@
 // What a frame draws, in pixels, before any GL: the geometry pass of the renderer, kept
 // apart so it can be tested without a context. Layers are drawn in this order:
 //   tints   - a disc of radius s/2 under every aggregated agent, in its aggregate's tint;
-//             discs of one aggregate merge into one patch, discs of two aggregates never
-//             overlap (their members are more than s apart);
+//             discs of one aggregate merge into one patch, discs of two aggregates do not
+//             overlap (their members are more than s apart; not so under join: false,
+//             where the links tell the pairs apart);
 //   rings   - the detection circle (radius s) of every agent, thin;
 //   links   - a line between every two members of one aggregate within s of each other;
 //   bodies  - the agent's disc (radius r, at least kMinBodyPixels), filled by state;
@@ -62,8 +63,8 @@ class FrameSceneBuilder {
   FrameScene scene_;
   std::vector<Vec2> wrapped_;                // positions wrapped into the arena (torus)
   std::vector<std::int32_t> lowest_member_;  // per aggregate
-  std::vector<std::int32_t> members_;  // aggregated agents
-  std::vector<std::int32_t> cell_of_;  // grid cell of each member
+  std::vector<std::int32_t> members_;        // aggregated agents
+  std::vector<std::int32_t> cell_of_;        // grid cell of each member
   std::vector<std::int32_t> cell_start_;
   std::vector<std::int32_t> cell_fill_;
   std::vector<std::int32_t> bucketed_;  // members sorted by cell

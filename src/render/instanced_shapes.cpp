@@ -29,7 +29,7 @@ flat out vec2 shape;
 flat out vec4 fill_colour;
 flat out vec4 stroke_colour;
 void main() {
-  float reach = geometry.z + 1.0;
+  float reach = geometry.z + 0.5;  // coverage is zero from R + 0.5 on
   local = corner * reach;
   shape = geometry.zw;
   fill_colour = vec4(fill.rgb * fill.a, fill.a);
@@ -48,9 +48,9 @@ void main() {
   float d = length(local);
   float cover = clamp(shape.x - d + 0.5, 0.0, 1.0);
   float inside = clamp(shape.x - shape.y - d + 0.5, 0.0, 1.0);
-  vec4 c = mix(stroke_colour, fill_colour, inside) * cover;
-  if (c.a <= 0.0) discard;
-  colour = c;
+  // Nothing outside the shape, nothing inside a ring (fill alpha 0).
+  if (cover <= 0.0 || (inside >= 1.0 && fill_colour.a <= 0.0)) discard;
+  colour = mix(stroke_colour, fill_colour, inside) * cover;
 }
 )";
 
@@ -68,7 +68,7 @@ void main() {
   float len = length(axis);
   vec2 dir = len > 0.0 ? axis / len : vec2(1.0, 0.0);
   vec2 normal = vec2(-dir.y, dir.x);
-  float reach = half_width + 1.0;
+  float reach = half_width + 0.5;
   shape = vec2(0.5 * len, half_width);
   local = vec2(corner.x * (shape.x + reach), corner.y * reach);
   vec2 p = 0.5 * (ends.xy + ends.zw) + dir * local.x + normal * local.y;
@@ -125,7 +125,9 @@ GLuint link(const char* vertex, const char* fragment) {
   return program;
 }
 
-const void* byte_offset(std::size_t offset) { return reinterpret_cast<const void*>(offset); }
+const void* byte_offset(std::size_t offset) {
+  return reinterpret_cast<const void*>(offset);
+}
 
 bool is_circle_layer(InstancedShapes::Layer layer) {
   return layer == InstancedShapes::Layer::Tints || layer == InstancedShapes::Layer::Rings ||

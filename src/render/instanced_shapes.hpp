@@ -6,6 +6,7 @@
 // premultiplied alpha; the viewport is the frame's top-down pixel space.
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "render/frame_scene.hpp"
 

@@ -7,8 +7,7 @@
 
 namespace swarmagg {
 
-OsMesaContext::OsMesaContext(int width, int height)
-    : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height * 4) {
+OsMesaContext::OsMesaContext(int width, int height) : width_(width), height_(height) {
   // No depth, stencil or accumulation buffers: frames are layered back to front.
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
@@ -37,14 +36,21 @@ OsMesaContext::~OsMesaContext() {
   OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
 }
 
-void OsMesaContext::bind() {
-  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), pixels_.data(), GL_UNSIGNED_BYTE,
+void OsMesaContext::bind(std::span<std::uint8_t> target) {
+  if (target.size() != static_cast<std::size_t>(width_) * height_ * 4) {
+    throw std::invalid_argument("OSMesa target buffer of " + std::to_string(target.size()) +
+                                " bytes for " + std::to_string(width_) + "x" +
+                                std::to_string(height_));
+  }
+  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), target.data(), GL_UNSIGNED_BYTE,
                          width_, height_)) {
-    throw std::runtime_error("cannot bind the OSMesa context to a " + std::to_string(width_) +
-                             "x" + std::to_string(height_) + " buffer");
+    throw std::runtime_error("cannot bind the OSMesa context to a " + std::to_string(width_) + "x" +
+                             std::to_string(height_) + " buffer");
   }
 }
 
-void OsMesaContext::release() { OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0); }
+void OsMesaContext::release() {
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+}
 
 }  // namespace swarmagg

@@ -1,12 +1,11 @@
 #pragma once
-// An off-screen OpenGL 3.3 core context (OSMesa, llvmpipe) that renders into a pixel buffer
-// it owns: no display, no window system, DISPLAY may be unset. One thread at a time may use
-// it: bind() before GL calls, release() after, so a context can move between threads.
-// OSMesa writes rows bottom-up (GL window row 0 first); FrameRenderer draws upside down so
-// the buffer reads top-down.
+// An off-screen OpenGL 3.3 core context (OSMesa, llvmpipe) that renders into a caller's
+// pixel buffer: no display, no window system, DISPLAY may be unset. One thread at a time may
+// use it: bind() before GL calls, release() after, so a context can move between threads.
+// The buffer receives the frame at glFinish(), GL window row 0 first (OSMesa's "y up"); the
+// renderer maps its top-down pixel rows onto window rows one to one, so it reads top-down.
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace swarmagg {
 
@@ -17,18 +16,16 @@ class OsMesaContext {
   OsMesaContext(const OsMesaContext&) = delete;
   OsMesaContext& operator=(const OsMesaContext&) = delete;
 
-  void bind();
+  // `target` must hold width * height * 4 bytes (RGBA8) and outlive the binding.
+  void bind(std::span<std::uint8_t> target);
   void release();
   int width() const { return width_; }
   int height() const { return height_; }
-  // RGBA8 rows, GL window row 0 first; complete after glFinish().
-  std::span<std::uint8_t> pixels() { return pixels_; }
 
  private:
   void* context_ = nullptr;  // OSMesaContext
   int width_;
   int height_;
-  std::vector<std::uint8_t> pixels_;
 };
 
 }  // namespace swarmagg

@@ -20,9 +20,9 @@ struct Rgba8 {
 
 namespace palette {
 
-inline constexpr Rgba8 kGo{0, 114, 178, 255};         // blue #0072B2
-inline constexpr Rgba8 kWait{213, 94, 0, 255};        // vermillion #D55E00
-inline constexpr Rgba8 kLeave{0, 158, 115, 255};      // bluish green #009E73
+inline constexpr Rgba8 kGo{0, 114, 178, 255};          // blue #0072B2
+inline constexpr Rgba8 kWait{213, 94, 0, 255};         // vermillion #D55E00
+inline constexpr Rgba8 kLeave{0, 158, 115, 255};       // bluish green #009E73
 inline constexpr Rgba8 kApproach{204, 121, 167, 255};  // reddish purple #CC79A7
 
 inline constexpr Rgba8 kArena{255, 255, 255, 255};   // arena floor
@@ -39,17 +39,21 @@ inline constexpr std::array<Rgba8, 8> kAggregateTints{{
     {200, 236, 212, 255},  // light green
     {228, 212, 240, 255},  // light lilac
     {196, 238, 238, 255},  // light cyan
-    {246, 214, 196, 255},  // light peach
+    {236, 228, 210, 255},  // light sand
     {216, 222, 232, 255},  // light slate
     {228, 236, 190, 255},  // light olive
 }};
 
 constexpr Rgba8 state_colour(AgentState s) {
   switch (s) {
-    case AgentState::Go: return kGo;
-    case AgentState::Wait: return kWait;
-    case AgentState::Leave: return kLeave;
-    case AgentState::Approach: return kApproach;
+    case AgentState::Go:
+      return kGo;
+    case AgentState::Wait:
+      return kWait;
+    case AgentState::Leave:
+      return kLeave;
+    case AgentState::Approach:
+      return kApproach;
   }
   return kText;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // PNG encoding (libpng) of top-down RGBA8 pixels, written atomically: into a temporary file
-// beside the target, flushed, then renamed over it, so a reader never sees half a frame.
-// Fully opaque images are stored as RGB (a quarter less to compress).
+// beside the target, then renamed over it, so a reader never sees half a frame (not fsync'ed:
+// frames are cheap to redo, a sync per frame is not). Fully opaque images are stored as RGB.
 #include <cstdint>
 #include <filesystem>
 #include <span>

@@ -114,7 +114,8 @@ std::filesystem::path find_program(std::string_view name) {
   std::size_t start = 0;
   for (;;) {
     const std::size_t end = dirs.find(':', start);
-    std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    std::string dir =
+        dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
     if (dir.empty()) dir = ".";
     const auto candidate = std::filesystem::path(dir) / name;
     if (executable(candidate)) return candidate;
@@ -154,19 +155,28 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
     throw std::runtime_error(
         "cannot assemble a video: '" + options.ffmpeg +
         "' is not installed (or not on PATH). Install it with `sudo apt-get install ffmpeg` "
-        "(Debian/Ubuntu); the PNG frames are kept in " + frames_dir.string());
+        "(Debian/Ubuntu); the PNG frames are kept in " +
+        frames_dir.string());
   }
 
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
-  const auto temporary = output.parent_path() / ("." + output.stem().string() + "." +
-                                                 std::to_string(::getpid()) + ".tmp" +
-                                                 output.extension().string());
-  std::vector<std::string> args{options.ffmpeg, "-nostdin", "-hide_banner", "-loglevel",
-                                "error",        "-y",       "-framerate",   format_number(options.fps),
-                                "-start_number", "0",        "-i",
-                                escape_percent((frames_dir / "frame_%06d.png").string())};
-  const bool h264 = extension == ".mp4" || extension == ".mkv" || extension == ".mov" ||
-                    extension == ".m4v";
+  const auto temporary =
+      output.parent_path() / ("." + output.stem().string() + "." + std::to_string(::getpid()) +
+                              ".tmp" + output.extension().string());
+  std::vector<std::string> args{options.ffmpeg,
+                                "-nostdin",
+                                "-hide_banner",
+                                "-loglevel",
+                                "error",
+                                "-y",
+                                "-framerate",
+                                format_number(options.fps),
+                                "-start_number",
+                                "0",
+                                "-i",
+                                escape_percent(frames_dir.string()) + "/frame_%06d.png"};
+  const bool h264 =
+      extension == ".mp4" || extension == ".mkv" || extension == ".mov" || extension == ".m4v";
   if (h264) {
     // yuv420p (what players expect) needs even sides: pad odd frames by one pixel.
     for (const char* a : {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt",

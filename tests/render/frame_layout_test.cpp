@@ -37,7 +37,7 @@ TEST(FrameLayout, KeepsTheAspectRatioOfAWideArena) {
   EXPECT_DOUBLE_EQ(l.scale, 800.0 / 540.0);
   EXPECT_EQ(l.arena.left, 0);
   EXPECT_EQ(l.arena.width, 800);
-  EXPECT_EQ(l.arena.height, 267);  // 180 * 800 / 540 = 266.7, rounded outwards
+  EXPECT_EQ(l.arena.height, 267);           // 180 * 800 / 540 = 266.7, rounded outwards
   EXPECT_GT(l.arena.top, l.header_height);  // centred in the space below the header
   const double ratio = (l.to_pixel({540, 0}).x - l.to_pixel({0, 0}).x) /
                        (l.to_pixel({0, 0}).y - l.to_pixel({0, 180}).y);

@@ -90,7 +90,8 @@ TEST(FrameRenderer, PaintsFloorMarginAndHeader) {
   // The caption is written in the header band.
   int text_pixels = 0;
   for (int row = 0; row < layout.header_height; ++row) {
-    for (int col = 0; col < 200; ++col) text_pixels += pixel(frame, 200, col, row) == palette::kText;
+    for (int col = 0; col < 200; ++col)
+      text_pixels += pixel(frame, 200, col, row) == palette::kText;
   }
   EXPECT_GT(text_pixels, 20);
 }
@@ -157,9 +158,9 @@ TEST(FrameRenderer, DrawsAgentsStraddlingTheTorusSeamOnBothSides) {
   WorldSpec spec = testing::tiny_world();
   Swarm swarm;
   swarm.spec = &spec;
-  swarm.add(0.3, 20, AgentState::Go);       // across the left/right seam
-  swarm.add(20, 39.7, AgentState::Leave);   // across the top/bottom seam
-  swarm.add(39.8, 0.2, AgentState::Wait);   // across the corner
+  swarm.add(0.3, 20, AgentState::Go);      // across the left/right seam
+  swarm.add(20, 39.7, AgentState::Leave);  // across the top/bottom seam
+  swarm.add(39.8, 0.2, AgentState::Wait);  // across the corner
   FrameRenderer renderer(200, 200);
   const auto frame = renderer.render(swarm.snapshot());
   const FrameLayout layout = renderer.layout(spec.arena);
@@ -237,6 +238,27 @@ TEST(FrameRenderer, RendersFromAnotherThread) {
   EXPECT_EQ(pixel_at(renderer.render(world.swarm.snapshot()), renderer.layout(world.spec.arena),
                      {30, 30}),
             palette::kApproach);
+}
+
+TEST(FrameRenderer, RenderersOnSeveralThreadsAtOnceAgree) {
+  const WorldSpec spec = testing::tiny_world(120, 120);
+  const Swarm swarm = testing::random_swarm(spec, 200, 0.3);
+  FrameRenderer reference(160, 160);
+  const auto expected = reference.render(swarm.snapshot());
+  const std::vector<std::uint8_t> want(expected.begin(), expected.end());
+  std::vector<int> mismatches(3, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 3; ++t) {
+    threads.emplace_back([&, t] {
+      FrameRenderer renderer(160, 160);
+      for (int f = 0; f < 20; ++f) {
+        const auto frame = renderer.render(swarm.snapshot());
+        mismatches[t] += !std::equal(frame.begin(), frame.end(), want.begin(), want.end());
+      }
+    });
+  }
+  for (auto& thread : threads) thread.join();
+  EXPECT_EQ(mismatches, (std::vector<int>{0, 0, 0}));
 }
 
 TEST(FrameRenderer, CopiesIntoACallerBufferOfTheRightSize) {

@@ -112,8 +112,8 @@ inline Rgba8 over(Rgba8 top, Rgba8 bottom) {
 }
 
 inline std::string describe(Rgba8 c) {
-  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) +
-         "," + std::to_string(c.a) + ")";
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," +
+         std::to_string(c.a) + ")";
 }
 
 struct Image {
