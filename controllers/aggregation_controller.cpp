@@ -59,7 +59,7 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
   const LeaveRule& rule = rules_.leave_rule;
   const int size = input.aggregates.size_of_agent()[agent];
-  const bool counts_neighbours = rule.size_exponent != 0 && rule.size_source == LeaveSize::Neighbours;
+  const bool counts_neighbours = rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
   const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
   if (u >= leave_probability(rule, size, perceived)) return;
   swarm.state[agent] = AgentState::Leave;

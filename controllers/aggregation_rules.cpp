@@ -1,7 +1,6 @@
 #include "controllers/aggregation_rules.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "config/leave_law.hpp"
 
 namespace swarmagg {
 namespace {
@@ -18,33 +17,22 @@ AggregationRules common_rules(const WorldSpec& spec) {
   return rules;
 }
 
-int exponent_of(LeaveLaw law) {
-  switch (law) {
-    case LeaveLaw::Constant: return 0;
-    case LeaveLaw::Inverse: return 1;
-    case LeaveLaw::InverseSquare: return 2;
-  }
-  return 0;
-}
-
 }  // namespace
 
 double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived) {
-  if (rule.size_exponent == 0) return rule.base;
   const int size = rule.size_source == LeaveSize::Neighbours ? perceived + 1 : aggregate_size;
-  return rule.base / std::pow(static_cast<double>(std::max(size, 1)), rule.size_exponent);
+  return leave_probability(rule.law, rule.base, size);
 }
 
 AggregationRules bayindir_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);
-  rules.leave_rule = {spec.controller.p_leave, 0, LeaveSize::Aggregate};
+  rules.leave_rule = {LeaveLaw::Constant, spec.controller.p_leave, LeaveSize::Aggregate};
   return rules;
 }
 
 AggregationRules soysal_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);
-  rules.leave_rule = {spec.controller.p0, exponent_of(spec.controller.leave_law),
-                      spec.controller.leave_size};
+  rules.leave_rule = {spec.controller.leave_law, spec.controller.p0, spec.controller.leave_size};
   rules.approach_radius = spec.controller.approach_radius;
   return rules;
 }
@@ -53,7 +41,7 @@ AggregationRules collision_paper_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);
   rules.join = false;
   rules.leave = true;
-  rules.leave_rule = {1.0, 0, LeaveSize::Aggregate};
+  rules.leave_rule = {LeaveLaw::Constant, 1.0, LeaveSize::Aggregate};
   rules.tumble = spec.controller.tumble;
   return rules;
 }

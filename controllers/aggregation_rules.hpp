@@ -8,8 +8,8 @@
 namespace swarmagg {
 
 struct LeaveRule {
-  double base = 0.0;     // probability per step for an agent of an aggregate of size 1
-  int size_exponent = 0;  // P_l(i) = base / i^size_exponent
+  LeaveLaw law = LeaveLaw::Constant;
+  double base = 0.0;  // p (Bayindir) or p0 (Soysal): probability per step at size 1
   LeaveSize size_source = LeaveSize::Aggregate;
 };
 

@@ -5,9 +5,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
-#include "models/model_csv.hpp"
 #include "models/predictions.hpp"
-#include "output/atomic_file.hpp"
+#include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg::cli {
@@ -18,19 +17,6 @@ struct ModelCommandOptions {
   std::string out;
   bool quiet = false;
 };
-
-// model.csv (tidy, every variant) and model-timeseries/<model>-<variant>.csv (the
-// simulation's timeseries.csv columns).
-void write_model_outputs(const WorldSpec& spec, const std::vector<VariantPrediction>& predictions,
-                         const std::filesystem::path& out) {
-  std::filesystem::create_directories(out / "model-timeseries");
-  write_file_atomic(out / "model.csv", model_csv(predictions, spec.engine.dt));
-  for (const VariantPrediction& prediction : predictions) {
-    write_file_atomic(
-        out / "model-timeseries" / (prediction.model + "-" + prediction.variant + ".csv"),
-        model_timeseries_csv(prediction, spec.engine.dt));
-  }
-}
 
 int model_command(const ModelCommandOptions& options) {
   const WorldSpec spec = options.world.load();

@@ -7,7 +7,9 @@
 #include "core/errors.hpp"
 #include "render/render_size.hpp"
 #include "render/video.hpp"
+#include "models/predictions.hpp"
 #include "run/interrupt.hpp"
+#include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
 #include "run/world_runner.hpp"
 
@@ -19,6 +21,7 @@ struct RunCommandOptions {
   std::string out;
   bool quiet = false;
   bool check = false;
+  bool no_model = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
@@ -50,6 +53,16 @@ void print_summary(const WorldSpec& spec, const RunResult& result, const std::fi
             << "outputs in " << out.string() << "/\n";
 }
 
+// A world the models cannot describe (say, a partition model of too many agents) still
+// keeps its simulation outputs: the run only notes why model.csv is missing.
+void write_predictions(const WorldSpec& spec, const std::filesystem::path& out) {
+  try {
+    write_model_outputs(spec, predict(spec), out);
+  } catch (const InputError& e) {
+    std::cerr << "note: no model.csv: " << e.what() << "\n";
+  }
+}
+
 int run_command(const RunCommandOptions& options) {
   WorldOptions world = options.world;
   add_render_overrides(options, world);
@@ -67,6 +80,7 @@ int run_command(const RunCommandOptions& options) {
   run_options.observers = frame_observers(spec, frames);
   const RunResult result = run_world(spec, run_options);
   write_run_folder(spec, result, out);
+  if (!options.no_model) write_predictions(spec, out);
   if (!options.quiet) print_summary(spec, result, out);
   if (spec.render.every > 0 && !options.quiet) std::cout << "frames in " << frames.string() << "/\n";
   if (!options.video.empty()) {
@@ -94,6 +108,8 @@ void add_run_command(CLI::App& app, Action& action) {
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--no-model", options->no_model,
+                    "Skip the macroscopic predictions (model.csv) beside the run");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });

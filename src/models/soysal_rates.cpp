@@ -3,21 +3,10 @@
 #include <algorithm>
 #include <numbers>
 
+#include "config/leave_law.hpp"
 #include "models/aggregate_shape.hpp"
 
 namespace swarmagg {
-
-double soysal_leave_probability(LeaveLaw law, double p0, int size) {
-  switch (law) {
-    case LeaveLaw::Constant:
-      return p0;
-    case LeaveLaw::Inverse:
-      return p0 / size;
-    case LeaveLaw::InverseSquare:
-      return p0 / (static_cast<double>(size) * size);
-  }
-  return p0;
-}
 
 namespace {
 
@@ -46,7 +35,7 @@ SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant) {
     }
     if (world.controller.leave) {
       rates.leave[i] = agents_able_to_leave(world, variant, i) *
-                       soysal_leave_probability(world.controller.leave_law, world.controller.p0, i);
+                       leave_probability(world.controller.leave_law, world.controller.p0, i);
     }
   }
   return rates;

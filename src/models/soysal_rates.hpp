@@ -19,7 +19,6 @@ struct SoysalRates {
   std::vector<double> leave;  // [i] L(i), per aggregate of size i >= 2
 };
 
-double soysal_leave_probability(LeaveLaw law, double p0, int size);  // P_l(i)
 SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant);
 
 }  // namespace swarmagg

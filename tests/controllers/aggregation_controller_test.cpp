@@ -216,13 +216,13 @@ TEST(SoysalController, AnApproacherReachingSWaits) {
 }
 
 TEST(LeaveProbability, FollowsTheLeaveLawAndSizeSource) {
-  const LeaveRule constant{0.02, 0, LeaveSize::Aggregate};
+  const LeaveRule constant{LeaveLaw::Constant, 0.02, LeaveSize::Aggregate};
   EXPECT_DOUBLE_EQ(leave_probability(constant, 5, 2), 0.02);
-  const LeaveRule inverse{0.02, 1, LeaveSize::Aggregate};
+  const LeaveRule inverse{LeaveLaw::Inverse, 0.02, LeaveSize::Aggregate};
   EXPECT_DOUBLE_EQ(leave_probability(inverse, 4, 1), 0.005);
-  const LeaveRule square{0.02, 2, LeaveSize::Aggregate};
+  const LeaveRule square{LeaveLaw::InverseSquare, 0.02, LeaveSize::Aggregate};
   EXPECT_DOUBLE_EQ(leave_probability(square, 2, 1), 0.005);
-  const LeaveRule by_neighbours{0.02, 1, LeaveSize::Neighbours};
+  const LeaveRule by_neighbours{LeaveLaw::Inverse, 0.02, LeaveSize::Neighbours};
   EXPECT_DOUBLE_EQ(leave_probability(by_neighbours, 10, 3), 0.005);  // 3 perceived + itself
 }
 

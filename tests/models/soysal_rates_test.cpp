@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "config/leave_law.hpp"
 #include "model_test_worlds.hpp"
 
 namespace swarmagg {
@@ -15,9 +16,9 @@ TEST(SoysalRates, EncounterProbabilitiesAreSweptAreas) {
 }
 
 TEST(SoysalRates, LeaveLaws) {
-  EXPECT_DOUBLE_EQ(soysal_leave_probability(LeaveLaw::Constant, 2e-5, 4), 2e-5);
-  EXPECT_DOUBLE_EQ(soysal_leave_probability(LeaveLaw::Inverse, 2e-5, 4), 5e-6);
-  EXPECT_DOUBLE_EQ(soysal_leave_probability(LeaveLaw::InverseSquare, 2e-5, 4), 1.25e-6);
+  EXPECT_DOUBLE_EQ(leave_probability(LeaveLaw::Constant, 2e-5, 4), 2e-5);
+  EXPECT_DOUBLE_EQ(leave_probability(LeaveLaw::Inverse, 2e-5, 4), 5e-6);
+  EXPECT_DOUBLE_EQ(leave_probability(LeaveLaw::InverseSquare, 2e-5, 4), 1.25e-6);
 }
 
 TEST(SoysalRates, OriginalLeavingCountsEveryMember) {
