@@ -1,0 +1,41 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "sweep/sweep_merge.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct MergeCommandOptions {
+  std::vector<std::string> folders;
+  std::string out;
+  bool quiet = false;
+};
+
+int merge_command(const MergeCommandOptions& command) {
+  const std::vector<std::filesystem::path> folders(command.folders.begin(), command.folders.end());
+  const MergeReport report = merge_sweep(folders, command.out);
+  if (!command.quiet) {
+    std::cout << "merged " << report.runs << " runs (" << report.points
+              << " parameter points) into " << command.out << "/:";
+    for (const std::filesystem::path& file : report.files)
+      std::cout << " " << file.filename().string();
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_merge_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<MergeCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "merge", "Combine the output folders of a sweep's shards into tidy CSVs and summaries");
+  command->add_option("folders", options->folders, "Sweep output folders (the shards' --out)")
+      ->required();
+  command->add_option("--out", options->out, "Folder for the merged outputs")->required();
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback([options, &action] { action = [options] { return merge_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,79 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "run/interrupt.hpp"
+#include "sweep/shard.hpp"
+#include "sweep/sweep_listing.hpp"
+#include "sweep/sweep_loader.hpp"
+#include "sweep/sweep_merge.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct SweepCommandOptions {
+  std::string sweep;
+  std::string out;
+  int threads = 0;
+  std::string shard;
+  bool list = false;
+  bool quiet = false;
+};
+
+void print_report(const SweepPlan& plan, const SweepOptions& options, const SweepReport& report) {
+  std::cout << "sweep " << plan.name;
+  if (!options.shard.whole()) std::cout << " (shard " << options.shard.text() << ")";
+  std::cout << ": " << report.selected << " runs, " << report.already_complete
+            << " already complete, ran " << report.ran << " in " << report.wall_seconds << " s on "
+            << report.threads << " threads\noutputs in " << options.out.string() << "/\n";
+}
+
+int sweep_command(const SweepCommandOptions& command) {
+  const SweepPlan plan = load_sweep(command.sweep);
+  SweepOptions options;
+  options.out = command.out.empty() ? std::filesystem::path("runs") / plan.name
+                                    : std::filesystem::path(command.out);
+  options.threads = command.threads;
+  options.shard = command.shard.empty() ? Shard{} : parse_shard(command.shard);
+  options.progress = !command.quiet;
+  if (command.list) {
+    std::cout << sweep_listing(shard_runs(expand_sweep(plan), options.shard), options.out);
+    return 0;
+  }
+  install_interrupt_handlers();
+  const SweepReport report = run_sweep(plan, options);
+  if (!command.quiet) print_report(plan, options, report);
+  if (!options.shard.whole()) {
+    if (!command.quiet) {
+      std::cout
+          << "when every shard is done: swarmagg merge <the shards' --out folders> --out DIR\n";
+    }
+    return 0;
+  }
+  // An unsharded sweep holds every run, so it merges itself.
+  const MergeReport merged = merge_sweep({options.out}, options.out);
+  if (!command.quiet)
+    std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<SweepCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "sweep", "Run a parameter sweep (grid x replicates); resumable, shardable for job arrays");
+  command
+      ->add_option("sweep", options->sweep, "Sweep file (YAML: base, parameters, replicates, seed)")
+      ->required();
+  command->add_option("--out", options->out, "Output folder (default runs/<sweep name>)");
+  command->add_option("--threads", options->threads, "Runs in parallel (0 = all cores)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--shard", options->shard,
+                      "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
+  command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback([options, &action] { action = [options] { return sweep_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,120 @@
+#include "sweep/sweep_merge.hpp"
+
+#include <gmock/gmock.h>
+
+#include "core/errors.hpp"
+#include "sweep/sweep_loader.hpp"
+#include "sweep/sweep_runner.hpp"
+#include "sweep/sweep_summary.hpp"
+#include "sweep_testing.hpp"
+
+namespace swarmagg {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::read_file_text;
+using ::testing::StartsWith;
+
+const std::vector<std::string> kMergedFiles = {"sweep_timeseries.csv", "sweep_summary.csv",
+                                               "sweep.json"};
+
+class SweepMergeTest : public testing::SweepTest {
+ protected:
+  void run(const std::string& sweep, const std::string& out, Shard shard = {}, int threads = 2) {
+    SweepOptions options;
+    options.out = dir_ / out;
+    options.shard = shard;
+    options.threads = threads;
+    run_sweep(load_sweep(sweep_file(sweep)), options);
+  }
+
+  void expect_same_files(const std::string& a, const std::string& b,
+                         const std::vector<std::string>& files = kMergedFiles) {
+    for (const std::string& file : files) {
+      const std::string expected = read_file_text(dir_ / a / file);
+      EXPECT_FALSE(expected.empty()) << file;
+      EXPECT_TRUE(read_file_text(dir_ / b / file) == expected) << file << " differs";
+    }
+  }
+};
+
+TEST_F(SweepMergeTest, ShardsMergeToTheUnshardedSweepByteForByte) {
+  run(testing::kGridSweep, "full");
+  merge_sweep({dir_ / "full"}, dir_ / "full-merged");
+  for (int i = 1; i <= 3; ++i)
+    run(testing::kGridSweep, "shard-" + std::to_string(i), Shard{i, 3}, i);
+  const MergeReport report =
+      merge_sweep({dir_ / "shard-1", dir_ / "shard-2", dir_ / "shard-3"}, dir_ / "shards-merged");
+  EXPECT_EQ(report.runs, 12);
+  EXPECT_EQ(report.points, 6);
+  expect_same_files("full-merged", "shards-merged");
+  // The order of the folders does not matter either.
+  merge_sweep({dir_ / "shard-3", dir_ / "shard-1", dir_ / "shard-2"}, dir_ / "reordered");
+  expect_same_files("full-merged", "reordered");
+}
+
+TEST_F(SweepMergeTest, TheTimeseriesIsTidyWithParametersFirst) {
+  run(testing::kGridSweep, "full");
+  merge_sweep({dir_ / "full"}, dir_ / "merged");
+  const std::string text = read_file_text(dir_ / "merged" / "sweep_timeseries.csv");
+  EXPECT_THAT(text, StartsWith("robots.count,controller.p_leave,replicate,step,time,noa,"));
+  // Each run records steps 0, 50, ..., 1000: 21 rows; 12 runs.
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 12 * 21);
+  // Run 3 is point (10, 0.001), replicate 1: its rows are its own timeseries.csv rows with
+  // the parameters prepended and the sweep's replicate index in place of 0.
+  std::istringstream own(read_file_text(
+      dir_ / "full/runs/robots.count=10,controller.p_leave=0.001/rep-1/timeseries.csv"));
+  std::string line;
+  std::getline(own, line);  // header
+  while (std::getline(own, line)) {
+    ASSERT_THAT(line, StartsWith("0,"));
+    EXPECT_THAT(text, HasSubstr("\n10,0.001,1," + line.substr(2) + "\n"));
+  }
+}
+
+TEST_F(SweepMergeTest, RefusesMissingRunsAndForeignSweeps) {
+  run(testing::kGridSweep, "shard-1", Shard{1, 3});
+  run(testing::kGridSweep, "shard-2", Shard{2, 3});
+  EXPECT_THAT(
+      [&] {
+        merge_sweep({dir_ / "shard-1", dir_ / "shard-2"}, dir_ / "m");
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("4 of 12 runs are not complete")));
+  std::string other = testing::kGridSweep;
+  other.replace(other.find("seed: 7"), 7, "seed: 8");
+  run(other, "other", Shard{3, 3});
+  EXPECT_THAT(
+      [&] {
+        merge_sweep({dir_ / "shard-1", dir_ / "shard-2", dir_ / "other"}, dir_ / "m");
+      },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("holds a different sweep")));
+  EXPECT_THAT([&] { merge_sweep({dir_ / "nowhere"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("not a sweep output folder")));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
+}
+
+TEST_F(SweepMergeTest, SoysalPartitionsAreMergedToo) {
+  run("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n  robots.count: [5, 8]\n"
+      "replicates: 2\n",
+      "soysal");
+  merge_sweep({dir_ / "soysal"}, dir_ / "merged");
+  const std::string text = read_file_text(dir_ / "merged" / "sweep_partitions.csv");
+  EXPECT_THAT(text, StartsWith("controller.type,robots.count,replicate,partition,time_fraction\n"
+                               "soysal,5,0,"));
+  EXPECT_THAT(text, HasSubstr("\nsoysal,8,1,"));
+}
+
+TEST(SweepSummary, GivesMeanSdAndQuantilesPerPointAndObservable) {
+  const std::string text =
+      sweep_summary_csv({"robots.count"}, {"noa", "largest"},
+                        {{{"10"}, {{1, 5}, {2, 5}, {3, 5}, {4, 5}}}, {{"20"}, {{7, 1}}}});
+  EXPECT_EQ(text,
+            "robots.count,observable,replicates,mean,sd,min,q25,median,q75,max\n"
+            "10,noa,4,2.5,1.2909944487358056,1,1.75,2.5,3.25,4\n"
+            "10,largest,4,5,0,5,5,5,5,5\n"
+            "20,noa,1,7,0,7,7,7,7,7\n"
+            "20,largest,1,1,0,1,1,1,1,1\n");
+}
+
+}  // namespace
+}  // namespace swarmagg

@@ -1,0 +1,69 @@
+#include "sweep/sweep_runs.hpp"
+
+#include <gmock/gmock.h>
+
+#include "core/errors.hpp"
+#include "sweep/sweep_loader.hpp"
+#include "sweep_testing.hpp"
+
+namespace swarmagg {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::SweepTest;
+
+TEST(SweepPoints, AreTheGridWithTheFirstParameterSlowest) {
+  const auto points =
+      sweep_points({{"robots.count", {"10", "20"}}, {"robots.speed", {"1", "2", "3"}}});
+  ASSERT_EQ(points.size(), 6u);
+  EXPECT_EQ(points[0].id, "robots.count=10,robots.speed=1");
+  EXPECT_EQ(points[2].id, "robots.count=10,robots.speed=3");
+  EXPECT_EQ(points[3].id, "robots.count=20,robots.speed=1");
+  EXPECT_EQ(points[5].index, 5);
+  EXPECT_EQ(describe_point(points[4]), "robots.count=20 robots.speed=2");
+}
+
+TEST(SweepPoints, LongIdsStayShortAndUnique) {
+  std::vector<SweepParameter> parameters;
+  for (const char* key : {"controller.leave_timeout", "controller.approach_radius", "controller.p0",
+                          "controller.p_leave", "controller.tumble", "robots.detection_radius",
+                          "robots.radius", "robots.speed", "arena.width", "arena.height"}) {
+    parameters.push_back({key, {"0.000123456789"}});
+  }
+  parameters.back().values.push_back("0.000123456788");
+  const auto points = sweep_points(parameters);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_LE(points[0].id.size(), 200u);
+  EXPECT_NE(points[0].id, points[1].id);
+}
+
+TEST_F(SweepTest, EachRunIsOneReplicateWithItsOwnSeed) {
+  const std::vector<SweepRun> runs = expand_sweep(load_sweep(sweep_file(testing::kGridSweep)));
+  ASSERT_EQ(runs.size(), 12u);
+  const SweepRun& run = runs[5];  // point 2 (count 10, p 0.005), replicate 1
+  EXPECT_EQ(run.index, 5);
+  EXPECT_EQ(run.replicate, 1);
+  EXPECT_EQ(run.point.id, "robots.count=10,controller.p_leave=0.005");
+  EXPECT_EQ(run.world.robots.count, 10);
+  EXPECT_DOUBLE_EQ(run.world.controller.p_leave, 0.005);
+  EXPECT_EQ(run.world.run.replicates, 1);
+  EXPECT_EQ(run.world.run.seed, run.seed);
+  EXPECT_EQ(run.world.arena.width, 60.0);  // from the base world
+  EXPECT_EQ(sweep_run_folder("out", run),
+            std::filesystem::path("out/runs/robots.count=10,controller.p_leave=0.005/rep-1"));
+}
+
+TEST_F(SweepTest, APointTheWorldRejectsIsNamed) {
+  const SweepPlan plan = load_sweep(sweep_file(
+      "base: worlds/tiny.yaml\nparameters: {robots.count: [10, 1200]}\nreplicates: 1\n"));
+  try {
+    expand_sweep(plan);
+    FAIL() << "1200 agents fit in a 60 x 60 arena";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("grid.yaml (point robots.count=1200)"));
+    EXPECT_THAT(e.what(), HasSubstr("robots.count"));
+  }
+}
+
+}  // namespace
+}  // namespace swarmagg
