@@ -47,6 +47,26 @@ Vec2 from_b2(b2Vec2 v) {
   return {static_cast<double>(v.x), static_cast<double>(v.y)};
 }
 
+// Box2D 2.4 fills its table of contact constructors lazily, on the first contact any world
+// creates, without a lock: replicates starting in parallel threads would race on it. Run one
+// contact once, under the thread-safe initialisation of a function-local static.
+void initialise_box2d_once() {
+  static const bool done = [] {
+    b2World world(b2Vec2(0.0f, 0.0f));
+    b2CircleShape circle;
+    circle.m_radius = 1.0f;
+    for (int i = 0; i < 2; ++i) {
+      b2BodyDef def;
+      def.type = b2_dynamicBody;
+      def.position.Set(0.5f * static_cast<float>(i), 0.0f);
+      world.CreateBody(&def)->CreateFixture(&circle, 1.0f);
+    }
+    world.Step(0.0f, 1, 1);
+    return true;
+  }();
+  (void)done;
+}
+
 class Box2DEngine final : public Engine {
  public:
   Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions);
@@ -165,6 +185,7 @@ Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_po
       shapes_(shapes_for(spec)),
       rules_(controls_, links_, bodies_) {
   check_spec(spec, shapes_);
+  initialise_box2d_once();
   const std::size_t n = initial_positions.size();
   controls_.resize(n);
   links_.reset(n);

@@ -1,7 +1,11 @@
 #pragma once
-// The Box2D 2.4 engine (SPEC section 2): every agent is a dynamic disc body of radius r with
-// a sensor fixture for detection; contacts are real, WAIT-like signals repel others, and the
-// torus seam is handled by periodic ghost bodies whose impulses flow back to their owners.
+// The Box2D 2.4 engine (SPEC section 2). Every agent is a dynamic disc body of radius r with
+// sensor discs whose begin/end events give its perceived agents and first contacts; contacts
+// between bodies are real where MotionCommand::blocked_by says so, guarded moves stop a body
+// in the (sub)step its sensor fired, and repelled_by signals push a body away within s. On a
+// torus an agent near an edge carries periodic images of its fixtures on its own body, so
+// sensing and collisions across the seam are exactly those of mid-arena (periodic_body.hpp).
+// Steps are cut into substeps so Box2D never clamps a body's speed.
 #include <memory>
 #include <span>
 
@@ -11,8 +15,8 @@
 
 namespace swarmagg {
 
-// Throws InputError when the world cannot be run faithfully by Box2D (for example a speed
-// above the per-step translation cap that substepping cannot bring under it).
+// Throws InputError when the world cannot be run faithfully by Box2D (a torus too small for
+// the periodic images, a speed needing thousands of substeps per step, ...).
 std::unique_ptr<Engine> make_box2d_engine(const WorldSpec& spec,
                                           std::span<const Vec2> initial_positions);
 
