@@ -38,7 +38,9 @@ std::string read_text(const std::filesystem::path& file) {
 
 }  // namespace
 
-bool gnuplot_available() { return !find_on_path("gnuplot").empty(); }
+bool gnuplot_available() {
+  return !find_on_path("gnuplot").empty();
+}
 
 std::string gnuplot_quote(const std::string& text) {
   std::string quoted = "\"";
@@ -58,15 +60,18 @@ void run_gnuplot(const std::filesystem::path& script_path, const std::string& sc
                              "'sudo apt-get install gnuplot-nox' and run 'gnuplot " +
                              script_path.filename().string() + "' in its folder");
   }
-  const auto folder = script_path.has_parent_path() ? script_path.parent_path() : ".";
+  // Absolute, because the child changes into the folder before it opens the log file.
+  const auto folder = std::filesystem::absolute(script_path).parent_path();
   const auto log = folder / ("." + script_path.filename().string() + ".log");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   const std::string name = script_path.filename().string();
-  std::vector<char*> argv{const_cast<char*>(gnuplot.c_str()), const_cast<char*>(name.c_str()), nullptr};
+  std::vector<char*> argv{const_cast<char*>(gnuplot.c_str()), const_cast<char*>(name.c_str()),
+                          nullptr};
   pid_t child = 0;
   const int spawned = posix_spawn(&child, gnuplot.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);

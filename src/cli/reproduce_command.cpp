@@ -1,0 +1,65 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "core/errors.hpp"
+#include "reproduce/reproduce.hpp"
+#include "run/interrupt.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct ReproduceCommandOptions {
+  ReproduceOptions reproduce;
+  std::string out = "reproduce";
+  std::string worlds = "worlds/paper";
+  bool quiet = false;
+};
+
+int reproduce_command(ReproduceCommandOptions options) {
+  options.reproduce.out = options.out;
+  options.reproduce.worlds = options.worlds;
+  options.reproduce.progress = !options.quiet;
+  if (!std::filesystem::is_directory(options.reproduce.worlds)) {
+    throw InputError("no paper worlds in " + options.worlds +
+                     " (run from the repository root or give --worlds)");
+  }
+  install_interrupt_handlers();
+  std::ostream null_stream(nullptr);
+  const ReproduceOutcome outcome =
+      reproduce(options.reproduce, options.quiet ? null_stream : std::cout);
+  if (!options.quiet) {
+    std::cout << "report " << outcome.report.string() << ", plots in "
+              << (options.reproduce.out / "plots").string() << "/ (" << outcome.wall_seconds
+              << " s)\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<ReproduceCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "reproduce",
+      "Run every experiment of the paper, plot each figure with the models and check its claims");
+  ReproduceOptions& r = options->reproduce;
+  command->add_flag("--quick", r.quick, "Fewer replicates and shorter runs (same code path)");
+  command->add_option("--out", options->out, "Output folder (default reproduce)");
+  command
+      ->add_option("--engine", r.engine, "Engine for every world: kinematic or box2d (engine.type)")
+      ->check(CLI::IsMember({"kinematic", "box2d"}));
+  command->add_option("--threads", r.threads, "Threads per world (0 = all cores)");
+  command->add_option("--only", r.only,
+                      "Only the worlds whose name contains this text (repeatable)");
+  command->add_option("--set", r.overrides,
+                      "Override a key of every world, e.g. --set run.replicates=4");
+  command->add_option("--worlds", options->worlds,
+                      "Folder of the paper worlds (default worlds/paper)");
+  command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)");
+  command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)");
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback(
+      [options, &action] { action = [options] { return reproduce_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

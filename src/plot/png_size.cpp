@@ -1,0 +1,32 @@
+#include "plot/png_size.hpp"
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+namespace swarmagg {
+namespace {
+
+constexpr std::array<unsigned char, 8> kSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+int big_endian(const unsigned char* bytes) {
+  return static_cast<int>((std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
+                          (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]});
+}
+
+}  // namespace
+
+std::optional<PngSize> png_size(const std::filesystem::path& file) {
+  // Signature (8), IHDR length (4), "IHDR" (4), width (4), height (4).
+  std::array<unsigned char, 24> header{};
+  std::ifstream in(file, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(header.data()), header.size())) return std::nullopt;
+  if (!std::equal(kSignature.begin(), kSignature.end(), header.begin()) ||
+      std::memcmp(header.data() + 12, "IHDR", 4) != 0) {
+    return std::nullopt;
+  }
+  return PngSize{big_endian(header.data() + 16), big_endian(header.data() + 20)};
+}
+
+}  // namespace swarmagg

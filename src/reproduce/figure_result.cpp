@@ -1,0 +1,14 @@
+#include "reproduce/figure_result.hpp"
+
+#include <stdexcept>
+
+namespace swarmagg {
+
+double variant_error(const std::vector<VariantError>& errors, const std::string& variant) {
+  for (const VariantError& e : errors) {
+    if (e.variant == variant) return e.error;
+  }
+  throw std::runtime_error("no error computed for model variant " + variant);
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,28 @@
+#pragma once
+// What reproduce measured for one paper figure: the worlds it ran (or reused) and the
+// comparison of their outputs with the models, filled according to the figure's kind.
+#include <optional>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "reproduce/encounter_comparison.hpp"
+#include "reproduce/noa_comparison.hpp"
+#include "reproduce/paper_figures.hpp"
+#include "reproduce/partition_comparison.hpp"
+
+namespace swarmagg {
+
+struct FigureResult {
+  PaperFigure figure;
+  std::vector<WorldSpec> worlds;                  // as run, in figure.worlds order
+  std::vector<EncounterPoint> encounters;         // EncountersVsCount / EncountersVsSpeed
+  std::optional<NoaComparison> noa;               // Noa
+  std::optional<PartitionComparison> partitions;  // Partition
+  int reused = 0;                                 // worlds whose run folder was reused
+  double wall_seconds = 0.0;
+};
+
+// The error of `variant` in a NOA or partition comparison (throws when absent).
+double variant_error(const std::vector<VariantError>& errors, const std::string& variant);
+
+}  // namespace swarmagg

@@ -1,0 +1,25 @@
+#include "reproduce/paper_predictions.hpp"
+
+#include "models/predictions.hpp"
+
+namespace swarmagg {
+
+std::vector<VariantPrediction> paper_predictions(const WorldSpec& world) {
+  std::vector<VariantPrediction> predictions = predict(world);
+  if (world.controller.type == ControllerType::Soysal || world.model.kappa == Kappa::Paper) {
+    return predictions;
+  }
+  WorldSpec fitted = world;
+  fitted.model.kappa = Kappa::Paper;
+  fitted.model.stochastic_replicates = 0;  // only its expected collision variant is kept
+  for (VariantPrediction& prediction : predict(fitted)) {
+    if (prediction.model == "bayindir" && prediction.variant == "collision") {
+      prediction.variant = kPaperFitVariant;
+      prediction.chosen = false;
+      predictions.push_back(std::move(prediction));
+    }
+  }
+  return predictions;
+}
+
+}  // namespace swarmagg

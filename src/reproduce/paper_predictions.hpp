@@ -1,0 +1,17 @@
+#pragma once
+// The predictions reproduce writes beside each run: every variant predict(world) gives and,
+// for the Bayindir model, the collision variant under the paper's fitted constant
+// (model.kappa: paper, Z = C s v N^2) as variant `collision-paper`, so the plots and the
+// report can show the paper's own improved model next to our kinetic one.
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "models/model_series.hpp"
+
+namespace swarmagg {
+
+inline constexpr const char* kPaperFitVariant = "collision-paper";
+
+std::vector<VariantPrediction> paper_predictions(const WorldSpec& world);
+
+}  // namespace swarmagg

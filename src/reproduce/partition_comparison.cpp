@@ -1,0 +1,95 @@
+#include "reproduce/partition_comparison.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "reproduce/csv_table.hpp"
+
+namespace swarmagg {
+namespace {
+
+constexpr const char* kTransient = "partition:";
+constexpr const char* kStationary = "stationary:";
+
+// partition -> (time, probability) points of one variant, in file order (increasing time).
+using Trajectories = std::map<std::string, std::vector<std::pair<double, double>>>;
+
+Distribution run_average(const Trajectories& trajectories) {
+  Distribution average;
+  for (const auto& [partition, points] : trajectories) {
+    double area = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      area +=
+          0.5 * (points[i].second + points[i - 1].second) * (points[i].first - points[i - 1].first);
+    }
+    const double span = points.back().first - points.front().first;
+    average[partition] = span > 0.0 ? area / span : points.back().second;
+  }
+  return average;
+}
+
+}  // namespace
+
+const std::vector<std::string>& partition_variants() {
+  static const std::vector<std::string> variants{"original", "peripheral"};
+  return variants;
+}
+
+double total_variation(const Distribution& a, const Distribution& b) {
+  std::set<std::string> keys;
+  for (const auto& [k, v] : a) keys.insert(k);
+  for (const auto& [k, v] : b) keys.insert(k);
+  double sum = 0.0;
+  for (const std::string& key : keys) {
+    const auto in_a = a.find(key), in_b = b.find(key);
+    sum +=
+        std::abs((in_a == a.end() ? 0.0 : in_a->second) - (in_b == b.end() ? 0.0 : in_b->second));
+  }
+  return 0.5 * sum;
+}
+
+Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
+  const CsvTable table = read_csv(partitions_csv);
+  const std::size_t replicate = table.column("replicate"), partition = table.column("partition"),
+                    fraction = table.column("time_fraction");
+  Distribution sums;
+  std::set<std::string> replicates;
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    replicates.insert(table.rows[row][replicate]);
+    sums[table.rows[row][partition]] += table.number(row, fraction);
+  }
+  for (auto& [key, value] : sums) value /= static_cast<double>(replicates.size());
+  return sums;
+}
+
+PartitionComparison compare_partitions(const std::filesystem::path& run_folder) {
+  const CsvTable model = read_csv(run_folder / "model.csv");
+  const std::size_t name = model.column("model"), variant = model.column("variant"),
+                    time = model.column("time"), quantity = model.column("quantity"),
+                    value = model.column("value");
+  std::map<std::string, Trajectories> transient;
+  std::map<std::string, Distribution> stationary;
+  for (std::size_t row = 0; row < model.rows.size(); ++row) {
+    const auto& cells = model.rows[row];
+    if (cells[name] != "soysal") continue;
+    const std::string& q = cells[quantity];
+    if (q.starts_with(kTransient)) {
+      transient[cells[variant]][q.substr(std::string(kTransient).size())].emplace_back(
+          model.number(row, time), model.number(row, value));
+    } else if (q.starts_with(kStationary)) {
+      stationary[cells[variant]][q.substr(std::string(kStationary).size())] =
+          model.number(row, value);
+    }
+  }
+  PartitionComparison comparison;
+  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
+  for (const std::string& v : partition_variants()) {
+    comparison.models.push_back(run_average(transient.at(v)));
+    comparison.stationary.push_back(stationary[v]);
+    comparison.errors.push_back(
+        {v, total_variation(comparison.simulation, comparison.models.back())});
+  }
+  return comparison;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,35 @@
+#pragma once
+// Simulated partition time fractions against the Soysal model variants (Figs 20-29), read
+// from a run folder: partitions.csv (time fraction per replicate) and model.csv. The
+// simulation measures the fraction of the run spent in each partition, transient included,
+// so the model is compared through the same quantity: its partition probabilities averaged
+// over the run (trapezoid rule on the model's report steps). The error is the
+// total-variation distance, half the sum of absolute differences.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "reproduce/noa_comparison.hpp"
+
+namespace swarmagg {
+
+using Distribution = std::map<std::string, double>;  // partition ("3+1+1") -> probability
+
+const std::vector<std::string>& partition_variants();  // original, peripheral
+
+struct PartitionComparison {
+  Distribution simulation;           // mean time fraction across replicates
+  std::vector<Distribution> models;  // run-averaged, in partition_variants() order
+  std::vector<Distribution> stationary;
+  std::vector<VariantError> errors;  // total-variation distance per variant
+};
+
+double total_variation(const Distribution& a, const Distribution& b);
+
+// Mean over replicates of partitions.csv's time fractions.
+Distribution simulated_partitions(const std::filesystem::path& partitions_csv);
+
+PartitionComparison compare_partitions(const std::filesystem::path& run_folder);
+
+}  // namespace swarmagg

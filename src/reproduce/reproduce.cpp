@@ -1,0 +1,127 @@
+#include "reproduce/reproduce.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "config/world_loader.hpp"
+#include "output/atomic_file.hpp"
+#include "reproduce/claims.hpp"
+#include "reproduce/csv_text.hpp"
+#include "reproduce/encounter_plot.hpp"
+#include "reproduce/noa_plot.hpp"
+#include "reproduce/partition_plot.hpp"
+#include "reproduce/report.hpp"
+#include "reproduce/run_cache.hpp"
+
+namespace swarmagg {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
+                      const FigureFiles& files) {
+  const PaperFigure& figure = result.figure;
+  switch (figure.kind) {
+    case FigureKind::EncountersVsCount:
+    case FigureKind::EncountersVsSpeed:
+      for (std::size_t i = 0; i < result.worlds.size(); ++i) {
+        result.encounters.push_back(measure_encounters(result.worlds[i], runs / figure.worlds[i]));
+      }
+      plot_encounters(files, figure.title,
+                      figure.kind == FigureKind::EncountersVsCount ? EncounterAxis::Agents
+                                                                   : EncounterAxis::Speed,
+                      result.encounters);
+      break;
+    case FigureKind::Noa:
+      result.noa = compare_noa(runs / figure.worlds.front());
+      plot_noa(files, figure.title, *result.noa);
+      break;
+    case FigureKind::Partition:
+      result.partitions = compare_partitions(runs / figure.worlds.front());
+      plot_partitions(files, figure.title, *result.partitions);
+      break;
+  }
+}
+
+std::string errors_text(const std::vector<VariantError>& errors, const char* measure) {
+  std::string text = std::string(measure);
+  for (const VariantError& e : errors) text += " " + e.variant + " " + report_number(e.error);
+  return text;
+}
+
+std::string summary_line(const FigureResult& r) {
+  std::string line = "Fig " + r.figure.figures + " (" + r.figure.id +
+                     "): " + std::to_string(r.worlds.size()) + " world(s), " +
+                     std::to_string(r.reused) + " reused, " + report_number(r.wall_seconds) +
+                     " s; ";
+  if (r.noa) line += errors_text(r.noa->errors, "NOA RMSE");
+  if (r.partitions) line += errors_text(r.partitions->errors, "TV distance");
+  if (!r.encounters.empty()) {
+    double deviation = 0.0;
+    for (const EncounterPoint& p : r.encounters)
+      deviation += std::abs(p.simulated - p.kinetic) / p.kinetic;
+    line += "mean |deviation| from kinetic theory " +
+            report_number(100 * deviation / r.encounters.size()) + " %";
+  }
+  return line;
+}
+
+FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure& figure) {
+  const auto start = Clock::now();
+  FigureResult result;
+  result.figure = figure;
+  const std::filesystem::path runs = options.out / "runs";
+  RunOptions run_options;
+  run_options.threads = options.threads;
+  run_options.progress = options.progress;
+  for (const std::string& name : figure.worlds) {
+    const std::string path = (options.worlds / (name + ".yaml")).string();
+    WorldSpec world = load_world(path);
+    for (const std::string& o : reproduce_overrides(options, world)) apply_override(world, o);
+    result.reused += ensure_run(world, runs / name, run_options) ? 1 : 0;
+    result.worlds.push_back(std::move(world));
+  }
+  std::filesystem::create_directories(options.out / "plots");
+  compare_and_plot(result, runs, FigureFiles{options.out / "plots", figure.id, options.plot_size});
+  result.wall_seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace
+
+std::vector<std::string> reproduce_overrides(const ReproduceOptions& options,
+                                             const WorldSpec& world) {
+  std::vector<std::string> overrides;
+  if (options.quick) {
+    overrides.push_back("run.replicates=" + std::to_string(kQuickReplicates));
+    overrides.push_back("run.duration=" + csv_number(world.run.duration / kQuickDurationDivisor));
+  }
+  if (!options.engine.empty()) overrides.push_back("engine.type=" + options.engine);
+  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  return overrides;
+}
+
+ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summary) {
+  const auto start = Clock::now();
+  ReproduceOutcome outcome;
+  for (const PaperFigure& figure : select_worlds(paper_figures(), options.only)) {
+    outcome.figures.push_back(reproduce_figure(options, figure));
+    summary << summary_line(outcome.figures.back()) << std::endl;
+  }
+  outcome.wall_seconds = seconds_since(start);
+  std::string mode = options.quick ? "quick" : "full";
+  for (const std::string& o : options.overrides) mode += ", --set " + o;
+  for (const std::string& o : options.only) mode += ", --only " + o;
+  const ReportContext context{mode, options.engine.empty() ? "as in each world" : options.engine,
+                              outcome.wall_seconds};
+  outcome.report = options.out / "REPORT.md";
+  write_file_atomic(outcome.report,
+                    report_markdown(context, outcome.figures, check_claims(outcome.figures)));
+  return outcome;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,46 @@
+#pragma once
+// `swarmagg reproduce`: runs every world of worlds/paper/ (or reuses its complete run) into
+// <out>/runs/<world>/ with the model outputs beside it, compares each experiment with the
+// models, draws one PNG per paper figure into <out>/plots/ and writes <out>/REPORT.md.
+// --quick is the same path with fewer replicates and shorter runs, applied as overrides.
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "plot/png_terminal.hpp"
+#include "reproduce/figure_result.hpp"
+
+namespace swarmagg {
+
+struct ReproduceOptions {
+  std::filesystem::path out = "reproduce";
+  std::filesystem::path worlds = "worlds/paper";
+  bool quick = false;
+  std::string engine;                  // empty: the worlds' own engine
+  int threads = 0;                     // 0: the machine's cores
+  std::vector<std::string> only;       // keep worlds whose name contains one of these
+  std::vector<std::string> overrides;  // key.path=value, after the quick ones
+  bool progress = false;               // run progress on stderr (only shown on a terminal)
+  PlotSize plot_size;
+};
+
+// Quick mode: replicates and run length divided so that every world together runs in
+// well under a minute, still long enough to show each curve's shape.
+inline constexpr int kQuickReplicates = 3;
+inline constexpr double kQuickDurationDivisor = 25.0;
+
+// The overrides reproduce applies to a world: quick ones, then the engine, then `overrides`.
+std::vector<std::string> reproduce_overrides(const ReproduceOptions& options,
+                                             const WorldSpec& world);
+
+struct ReproduceOutcome {
+  std::vector<FigureResult> figures;
+  std::filesystem::path report;
+  double wall_seconds = 0.0;
+};
+
+// Writes one summary line per figure to `summary` as it completes.
+ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summary);
+
+}  // namespace swarmagg

@@ -1,0 +1,21 @@
+#pragma once
+// Runs a world into its folder unless the folder already holds a complete run of the same
+// resolved world, so re-plotting and re-reporting are instant. world.resolved.yaml is
+// written last by write_run_folder, so its presence marks a complete run; its comment
+// lines (version, git hash, seeds) are ignored, as the world body decides what was run.
+#include <filesystem>
+
+#include "config/world_spec.hpp"
+#include "run/world_runner.hpp"
+
+namespace swarmagg {
+
+// True when `folder` holds a complete run of exactly `spec`, with its model outputs.
+bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder);
+
+// Runs the world and writes the run folder and its model outputs (model.csv,
+// model-timeseries/) unless run_is_reusable. Returns true when the run was reused.
+bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
+                const RunOptions& options);
+
+}  // namespace swarmagg

@@ -1,0 +1,171 @@
+#include "reproduce/reproduce.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "plot/gnuplot.hpp"
+#include "plot/png_size.hpp"
+
+namespace swarmagg {
+namespace {
+
+// One world of every figure kind, quick and with two replicates: a few seconds in all.
+ReproduceOptions reduced_options(const std::filesystem::path& out) {
+  ReproduceOptions options;
+  options.out = out;
+  options.worlds = std::filesystem::path(SWARMAGG_SOURCE_DIR) / "worlds" / "paper";
+  options.quick = true;
+  options.only = {"collision-count-100", "collision-speed-2", "creation-50", "soysal-5-constant"};
+  options.overrides = {"run.replicates=2"};
+  options.plot_size = {640, 480};
+  return options;
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream stream(line);
+  std::string cell;
+  while (std::getline(stream, cell, '|')) cells.push_back(cell);
+  return cells;
+}
+
+// The report table row of `world` (its cells between '|', trimmed of spaces).
+std::vector<std::string> report_row(const std::string& report, const std::string& world) {
+  std::stringstream lines(report);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.find("| " + world + " |") == std::string::npos) continue;
+    std::vector<std::string> cells;
+    for (std::string cell : cells_of(line)) {
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      cells.push_back(cell);
+    }
+    return cells;
+  }
+  return {};
+}
+
+// NOA by step of a timeseries-shaped CSV, read independently of the code under test.
+std::map<long, std::vector<double>> noa_by_step(const std::filesystem::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // replicate,step,time,noa,...
+  std::map<long, std::vector<double>> noa;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string replicate, step, time, value;
+    std::getline(cells, replicate, ',');
+    std::getline(cells, step, ',');
+    std::getline(cells, time, ',');
+    std::getline(cells, value, ',');
+    noa[std::stol(step)].push_back(std::stod(value));
+  }
+  return noa;
+}
+
+double mean(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  return sum / v.size();
+}
+
+class ReproduceTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!gnuplot_available()) return;
+    out_ = std::filesystem::temp_directory_path() / "swarmagg_reproduce_test";
+    std::filesystem::remove_all(out_);
+    std::ostringstream summary;
+    first_ = new ReproduceOutcome(reproduce(reduced_options(out_), summary));
+    summary_ = summary.str();
+  }
+  static void TearDownTestSuite() { delete first_; }
+  void SetUp() override {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  }
+  static inline std::filesystem::path out_;
+  static inline ReproduceOutcome* first_ = nullptr;
+  static inline std::string summary_;
+};
+
+TEST_F(ReproduceTest, EveryFigureIsAPngOfTheRequestedSizeWithItsScriptBesideItsCsv) {
+  ASSERT_EQ(first_->figures.size(), 4u);
+  for (const FigureResult& r : first_->figures) {
+    const auto plots = out_ / "plots";
+    const auto size = png_size(plots / (r.figure.id + ".png"));
+    ASSERT_TRUE(size.has_value()) << r.figure.id;
+    EXPECT_EQ(size->width, 640);
+    EXPECT_EQ(size->height, 480);
+    const std::string script = read_text(plots / (r.figure.id + ".gp"));
+    const auto csv = script.find(r.figure.id + "-");
+    ASSERT_NE(csv, std::string::npos) << script;
+    const std::string csv_name = script.substr(csv, script.find('"', csv) - csv);
+    EXPECT_TRUE(std::filesystem::exists(plots / csv_name)) << csv_name;
+  }
+}
+
+TEST_F(ReproduceTest, ReportHasARowPerExperimentAndALinePerClaim) {
+  const std::string report = read_text(first_->report);
+  for (const char* world :
+       {"collision-count-100", "collision-speed-2", "creation-50", "soysal-5-constant"}) {
+    EXPECT_FALSE(report_row(report, world).empty()) << world;
+  }
+  EXPECT_NE(report.find("**Fig 7** encounter frequency vs N overlaps collision theory: **"),
+            std::string::npos);
+  EXPECT_NE(report.find("**Figs 26-29**"), std::string::npos);
+  EXPECT_NE(report.find("not checked"), std::string::npos);  // claims on worlds not run
+  EXPECT_EQ(std::count(summary_.begin(), summary_.end(), '\n'), 4);
+}
+
+TEST_F(ReproduceTest, ReportedRmseMatchesTheCsvsItWasComputedFrom) {
+  const auto run = out_ / "runs" / "creation-50";
+  const auto simulation = noa_by_step(run / "timeseries.csv");
+  const auto model = noa_by_step(run / "model-timeseries" / "bayindir-original.csv");
+  double squares = 0.0;
+  int count = 0;
+  for (const auto& [step, values] : simulation) {
+    if (!model.count(step)) continue;
+    squares += std::pow(mean(values) - model.at(step).front(), 2);
+    ++count;
+  }
+  ASSERT_GT(count, 10);
+  const double rmse = std::sqrt(squares / count);
+  const auto row = report_row(read_text(first_->report), "creation-50");
+  ASSERT_GE(row.size(), 7u);
+  // | Fig | world | N | p | final mean NOA | RMSE original | ...: cells[0] is the empty lead.
+  EXPECT_NEAR(std::stod(row[6]), rmse, 1e-3 * rmse + 1e-9);
+  EXPECT_EQ(row[3], "50");
+}
+
+TEST_F(ReproduceTest, ASecondRunReusesEveryRunFolder) {
+  std::ostringstream summary;
+  const ReproduceOutcome second = reproduce(reduced_options(out_), summary);
+  for (const FigureResult& r : second.figures)
+    EXPECT_EQ(r.reused, static_cast<int>(r.worlds.size())) << r.figure.id;
+}
+
+TEST_F(ReproduceTest, AChangedWorldIsRunAgain) {
+  ReproduceOptions options = reduced_options(out_ / "changed");
+  options.only = {"creation-50"};
+  std::ostringstream summary;
+  EXPECT_EQ(reproduce(options, summary).figures.front().reused, 0);
+  options.overrides.push_back("run.seed=99");
+  EXPECT_EQ(reproduce(options, summary).figures.front().reused, 0);
+  EXPECT_EQ(reproduce(options, summary).figures.front().reused, 1);
+}
+
+}  // namespace
+}  // namespace swarmagg
