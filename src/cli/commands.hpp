@@ -15,6 +15,8 @@ void add_validate_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);
 void add_merge_command(CLI::App& app, Action& action);
+void add_reproduce_command(CLI::App& app, Action& action);
+void add_compare_command(CLI::App& app, Action& action);
 
 int main(int argc, char** argv);
 

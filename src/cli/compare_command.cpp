@@ -1,0 +1,56 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/world_options.hpp"
+#include "compare/compare_summary.hpp"
+#include "compare/engine_comparison.hpp"
+#include "core/errors.hpp"
+#include "run/interrupt.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct CompareCommandOptions {
+  WorldOptions world;
+  std::string out;
+  int rim_below = kDefaultRimBelow;
+  bool quiet = false;
+};
+
+int compare_command(const CompareCommandOptions& options) {
+  const WorldSpec spec = options.world.load();
+  // Welch's interval needs a spread on both sides.
+  if (spec.run.replicates < 2)
+    throw InputError("compare needs at least 2 replicates (--replicates)");
+  if (options.rim_below < 1) throw InputError("--rim-below must be at least 1");
+  const std::filesystem::path out =
+      options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
+  install_interrupt_handlers();
+  const EngineComparison result = compare_engines(spec, options.rim_below, !options.quiet);
+  write_compare_folder(result.kinematic, result.box2d, result.stats, out);
+  if (!options.quiet) {
+    std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<CompareCommandOptions>();
+  CLI::App* command =
+      app.add_subcommand("compare", "Run a world on the kinematic and Box2D engines and compare");
+  options->world.add_to(*command, false);  // no --engine: compare runs both
+  command->add_option("--replicates", options->world.replicates,
+                      "Replicates per engine (run.replicates)");
+  command->add_option("--seed", options->world.seed, "World seed (run.seed)");
+  command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
+  command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
+  command->add_option("--rim-below", options->rim_below,
+                      "Rim: fewer than K aggregate members within s (default 5)");
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback(
+      [options, &action] { action = [options] { return compare_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,48 @@
+#pragma once
+// The statistics of a comparison of two arms (compare/engine_arm.hpp): the difference in
+// mean final NOA with its Welch interval, KS tests on the final NOA and on the pooled final
+// aggregate sizes, the encounter rates, and the LEAVE attempts split by rim and inside.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compare/engine_arm.hpp"
+#include "compare/ks_test.hpp"
+#include "compare/welch_interval.hpp"
+
+namespace swarmagg {
+
+constexpr double kSignificance = 0.05;  // two-sided, per test; 95% intervals
+
+struct LeaveSplit {
+  std::int64_t rim_attempts = 0;
+  std::int64_t rim_out = 0;
+  std::int64_t inside_attempts = 0;
+  std::int64_t inside_out = 0;
+};
+
+struct ArmSummary {
+  std::string label;
+  std::vector<double> final_noa;        // per replicate
+  std::vector<double> final_sizes;      // every final aggregate of every replicate
+  std::vector<double> encounter_rates;  // per replicate, encounters per tu
+  MeanInterval noa;
+  MeanInterval encounter_rate;
+  LeaveSplit leave;
+};
+
+struct Comparison {
+  ArmSummary a;
+  ArmSummary b;
+  WelchResult noa_difference;  // b - a
+  KsResult ks_noa;
+  KsResult ks_sizes;
+  int rim_below = kDefaultRimBelow;
+  bool has_leaving = false;
+  bool differs() const;  // any of the three tests significant at kSignificance
+};
+
+ArmSummary summarize_arm(const ArmResult& arm);
+Comparison compare_arms(const ArmResult& a, const ArmResult& b, int rim_below);
+
+}  // namespace swarmagg

@@ -1,0 +1,104 @@
+#include "compare/compare_plots.hpp"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "output/atomic_file.hpp"
+#include "plot/gnuplot.hpp"
+
+namespace swarmagg {
+namespace {
+
+MeanInterval noa_at(const ArmResult& arm, std::size_t row) {
+  std::vector<double> values;
+  for (const ReplicateOutcome& r : arm.run.replicates) values.push_back(r.rows[row].noa);
+  return mean_interval(values);
+}
+
+std::size_t common_rows(const ArmResult& a, const ArmResult& b) {
+  std::size_t rows = SIZE_MAX;
+  for (const ArmResult* arm : {&a, &b}) {
+    for (const ReplicateOutcome& r : arm->run.replicates) rows = std::min(rows, r.rows.size());
+  }
+  return rows == SIZE_MAX ? 0 : rows;
+}
+
+std::string noa_script(const std::string& world_name, const ArmResult& a, const ArmResult& b) {
+  std::ostringstream gp;
+  gp << "# NOA over time of both arms: mean over replicates and its 95% confidence band.\n"
+     << "set datafile separator ','\nset terminal pngcairo size 1000,650\nset output 'noa.png'\n"
+     << "set title " << gnuplot_quote(world_name + ": NOA, mean and 95% CI of the mean") << "\n"
+     << "set xlabel 'time (tu)'\nset ylabel 'number of aggregates'\nset key top left\n"
+     << "set style fill transparent solid 0.25 noborder\n"
+     << "plot 'noa.csv' skip 1 using 1:3:4 with filledcurves lc rgb '#1f77b4' notitle, \\\n"
+     << "     '' skip 1 using 1:2 with lines lw 2 lc rgb '#1f77b4' title " << gnuplot_quote(a.label)
+     << ", \\\n"
+     << "     '' skip 1 using 1:6:7 with filledcurves lc rgb '#d62728' notitle, \\\n"
+     << "     '' skip 1 using 1:5 with lines lw 2 lc rgb '#d62728' title " << gnuplot_quote(b.label)
+     << "\n";
+  return gp.str();
+}
+
+std::string final_script(const std::string& world_name, const Comparison& c) {
+  std::ostringstream gp;
+  gp << "# Final-state distributions of both arms side by side: final NOA of the replicates\n"
+     << "# (left) and the sizes of every final aggregate, pooled over replicates (right).\n"
+     << "set datafile separator ','\nset terminal pngcairo size 1300,550\nset output 'final.png'\n"
+     << "set multiplot layout 1,2 title " << gnuplot_quote(world_name + ": final state") << "\n"
+     << "set style fill solid 0.6 border -1\nset boxwidth 0.4\nset key top right\n"
+     << "set ylabel 'replicates'\nset xlabel 'final NOA'\n"
+     << "plot 'final_noa.csv' skip 1 using ($1-0.2):2 with boxes lc rgb '#1f77b4' title "
+     << gnuplot_quote(c.a.label) << ", \\\n"
+     << "     '' skip 1 using ($1+0.2):3 with boxes lc rgb '#d62728' title "
+     << gnuplot_quote(c.b.label) << "\n"
+     << "set ylabel 'aggregates'\nset xlabel 'final aggregate size'\n"
+     << "plot 'sizes.csv' skip 1 using ($1-0.2):2 with boxes lc rgb '#1f77b4' title "
+     << gnuplot_quote(c.a.label) << ", \\\n"
+     << "     '' skip 1 using ($1+0.2):3 with boxes lc rgb '#d62728' title "
+     << gnuplot_quote(c.b.label) << "\nunset multiplot\n";
+  return gp.str();
+}
+
+}  // namespace
+
+std::string noa_band_csv(const ArmResult& a, const ArmResult& b) {
+  std::ostringstream csv;
+  csv << "time," << a.label << "_mean," << a.label << "_low," << a.label << "_high," << b.label
+      << "_mean," << b.label << "_low," << b.label << "_high\n";
+  const std::size_t rows = common_rows(a, b);
+  for (std::size_t row = 0; row < rows; ++row) {
+    csv << a.run.replicates.front().rows[row].time;
+    for (const ArmResult* arm : {&a, &b}) {
+      const MeanInterval m = noa_at(*arm, row);
+      csv << ',' << m.mean << ',' << m.mean - m.half_width << ',' << m.mean + m.half_width;
+    }
+    csv << '\n';
+  }
+  return csv.str();
+}
+
+std::string histogram_csv(const std::string& value_name, const std::string& label_a,
+                          const std::vector<double>& values_a, const std::string& label_b,
+                          const std::vector<double>& values_b) {
+  std::map<double, std::pair<int, int>> counts;
+  for (double v : values_a) ++counts[v].first;
+  for (double v : values_b) ++counts[v].second;
+  std::ostringstream csv;
+  csv << value_name << ',' << label_a << ',' << label_b << '\n';
+  for (const auto& [value, n] : counts) csv << value << ',' << n.first << ',' << n.second << '\n';
+  return csv.str();
+}
+
+void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
+                            const Comparison& c, const std::filesystem::path& out) {
+  write_file_atomic(out / "noa.csv", noa_band_csv(a, b));
+  write_file_atomic(out / "final_noa.csv",
+                    histogram_csv("final_noa", c.a.label, c.a.final_noa, c.b.label, c.b.final_noa));
+  write_file_atomic(out / "sizes.csv",
+                    histogram_csv("size", c.a.label, c.a.final_sizes, c.b.label, c.b.final_sizes));
+  run_gnuplot(out / "noa.gp", noa_script(world_name, a, b));
+  run_gnuplot(out / "final.gp", final_script(world_name, c));
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,25 @@
+#pragma once
+// The comparison's data tables and plots, each PNG made by a gnuplot script (.gp) beside
+// the CSV it reads:
+//   noa.csv + noa.gp -> noa.png          NOA over time, mean and 95% CI band of each arm
+//   final_noa.csv, sizes.csv + final.gp -> final.png
+//                                        final NOA and final aggregate sizes, side by side
+#include <filesystem>
+#include <string>
+
+#include "compare/arm_comparison.hpp"
+#include "compare/engine_arm.hpp"
+
+namespace swarmagg {
+
+// noa.csv: time, then mean/low/high of each arm over its replicates at each recorded row.
+std::string noa_band_csv(const ArmResult& a, const ArmResult& b);
+// value,<a>,<b>: how many samples of each arm take each value (a histogram table).
+std::string histogram_csv(const std::string& value_name, const std::string& label_a,
+                          const std::vector<double>& values_a, const std::string& label_b,
+                          const std::vector<double>& values_b);
+
+void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
+                            const Comparison& c, const std::filesystem::path& out);
+
+}  // namespace swarmagg

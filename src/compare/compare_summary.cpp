@@ -1,0 +1,115 @@
+#include "compare/compare_summary.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace swarmagg {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[128];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+double fraction(std::int64_t part, std::int64_t whole) {
+  return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+
+const char* verdict(double p) {
+  return p < kSignificance ? "different" : "no significant difference";
+}
+
+void leave_line(std::ostringstream& out, const ArmSummary& arm) {
+  const LeaveSplit& l = arm.leave;
+  out << "  " << arm.label << ": rim " << l.rim_out << "/" << l.rim_attempts << " got out ("
+      << format("%.3f", fraction(l.rim_out, l.rim_attempts)) << "), inside " << l.inside_out << "/"
+      << l.inside_attempts << " (" << format("%.3f", fraction(l.inside_out, l.inside_attempts))
+      << ")\n";
+}
+
+nlohmann::json leave_json(const LeaveSplit& l) {
+  return {{"rim_attempts", l.rim_attempts},
+          {"rim_got_out", l.rim_out},
+          {"rim_fraction_out", fraction(l.rim_out, l.rim_attempts)},
+          {"inside_attempts", l.inside_attempts},
+          {"inside_got_out", l.inside_out},
+          {"inside_fraction_out", fraction(l.inside_out, l.inside_attempts)}};
+}
+
+nlohmann::json arm_json(const ArmSummary& arm) {
+  return {{"label", arm.label},
+          {"final_noa", arm.final_noa},
+          {"mean_final_noa", arm.noa.mean},
+          {"mean_final_noa_ci95_half_width", arm.noa.half_width},
+          {"final_aggregates", arm.final_sizes.size()},
+          {"encounter_rates_per_tu", arm.encounter_rates},
+          {"mean_encounter_rate_per_tu", arm.encounter_rate.mean},
+          {"encounter_rate_ci95_half_width", arm.encounter_rate.half_width},
+          {"leave_attempts", leave_json(arm.leave)}};
+}
+
+nlohmann::json ks_json(const KsResult& ks) {
+  return {{"statistic", ks.statistic}, {"p_value", ks.p_value}, {"n_a", ks.n_a}, {"n_b", ks.n_b}};
+}
+
+}  // namespace
+
+std::string comparison_text(const std::string& world_name, const Comparison& c) {
+  std::ostringstream out;
+  const WelchResult& w = c.noa_difference;
+  out << world_name << ": " << c.a.label << " vs " << c.b.label << ", " << c.a.final_noa.size()
+      << " replicates each, same seeds\n";
+  out << "mean final NOA: " << c.a.label
+      << format(" %.2f +- %.2f", c.a.noa.mean, c.a.noa.half_width) << ", " << c.b.label
+      << format(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
+  out << "difference (" << c.b.label << " - " << c.a.label << ")"
+      << format(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
+      << format(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value) << "\n";
+  out << "KS final NOA:" << format(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
+      << verdict(c.ks_noa.p_value) << "\n";
+  out << "KS final aggregate sizes (" << c.ks_sizes.n_a << " vs " << c.ks_sizes.n_b
+      << " aggregates):"
+      << format(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
+      << verdict(c.ks_sizes.p_value) << "\n";
+  out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
+         "with ties)\n";
+  out << "encounters per tu: " << c.a.label
+      << format(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
+      << c.b.label
+      << format(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
+  if (c.has_leaving) {
+    out << "LEAVE attempts that got out (rim = fewer than " << c.rim_below
+        << " aggregate members within s; k from hexagonal packing: edge 4, corner 3, interior "
+           "5-6):\n";
+    leave_line(out, c.a);
+    leave_line(out, c.b);
+  }
+  out << "verdict: " << (c.differs() ? "the two differ" : "no significant difference") << " at the "
+      << format("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
+  return out.str();
+}
+
+nlohmann::json comparison_json(const std::string& world_name, const Comparison& c) {
+  const WelchResult& w = c.noa_difference;
+  return {{"world", world_name},
+          {"a", arm_json(c.a)},
+          {"b", arm_json(c.b)},
+          {"final_noa_difference",
+           {{"b_minus_a", w.difference},
+            {"ci95", {w.low, w.high}},
+            {"welch_dof", w.dof},
+            {"p_value", w.p_value}}},
+          {"ks_final_noa", ks_json(c.ks_noa)},
+          {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
+          {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
+          {"rim_below", c.rim_below},
+          {"rim_rule",
+           "rim: fewer than rim_below members of its own aggregate within s just before leaving; "
+           "got out: perceives no still-waiting former member when the LEAVE timeout ends"},
+          {"has_leaving", c.has_leaving},
+          {"significance", kSignificance},
+          {"differs", c.differs()}};
+}
+
+}  // namespace swarmagg

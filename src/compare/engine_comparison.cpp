@@ -1,0 +1,46 @@
+#include "compare/engine_comparison.hpp"
+
+#include "compare/compare_plots.hpp"
+#include "compare/compare_summary.hpp"
+#include "config/world_loader.hpp"
+#include "output/atomic_file.hpp"
+#include "run/run_folder.hpp"
+
+namespace swarmagg {
+namespace {
+
+// Through the override path, so the engine switch is checked like `--set engine.type=...`.
+WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
+  WorldSpec copy = spec;
+  apply_override(copy, "engine.type=" + engine);
+  return copy;
+}
+
+}  // namespace
+
+EngineComparison compare_engines(const WorldSpec& spec, int rim_below, bool progress) {
+  EngineComparison result;
+  result.kinematic = run_arm("kinematic", on_engine(spec, "kinematic"), rim_below, progress);
+  result.box2d = run_arm("box2d", on_engine(spec, "box2d"), rim_below, progress);
+  result.stats = compare_arms(result.kinematic, result.box2d, rim_below);
+  return result;
+}
+
+void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
+                          const std::filesystem::path& out) {
+  const std::string& world = a.spec.name;
+  std::filesystem::create_directories(out);
+  write_run_folder(a.spec, a.run, out / a.label);
+  write_run_folder(b.spec, b.run, out / b.label);
+  write_file_atomic(out / "compare.json", comparison_json(world, c).dump(2) + "\n");
+  write_file_atomic(out / "summary.txt", comparison_text(world, c));
+  // Absolute: run_gnuplot fails to start gnuplot for a relative script path (seen with
+  // --out runs/x; reported to the plot owner).
+  write_comparison_plots(world, a, b, c, std::filesystem::absolute(out));
+}
+
+std::filesystem::path default_compare_folder(const WorldSpec& spec) {
+  return std::filesystem::path("runs") / (spec.name + "-compare");
+}
+
+}  // namespace swarmagg

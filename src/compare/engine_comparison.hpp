@@ -1,0 +1,29 @@
+#pragma once
+// `swarmagg compare`: one world run on the kinematic and on the Box2D engine with the same
+// replicates and seeds (replicate k draws from the generator keyed by (run.seed, k) on
+// either engine), compared, and written to one folder:
+//   summary.txt, compare.json, noa.{csv,gp,png}, final_noa.csv, sizes.csv, final.{gp,png},
+//   and each engine's ordinary run folder in kinematic/ and box2d/.
+#include <filesystem>
+
+#include "compare/arm_comparison.hpp"
+#include "compare/engine_arm.hpp"
+
+namespace swarmagg {
+
+struct EngineComparison {
+  ArmResult kinematic;
+  ArmResult box2d;
+  Comparison stats;  // a = kinematic, b = box2d
+};
+
+EngineComparison compare_engines(const WorldSpec& spec, int rim_below = kDefaultRimBelow,
+                                 bool progress = false);
+
+void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
+                          const std::filesystem::path& out);
+
+// runs/<world name>-compare unless --out says otherwise.
+std::filesystem::path default_compare_folder(const WorldSpec& spec);
+
+}  // namespace swarmagg
