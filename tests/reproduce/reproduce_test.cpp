@@ -1,6 +1,7 @@
 #include "reproduce/reproduce.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -86,13 +87,18 @@ class ReproduceTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     if (!gnuplot_available()) return;
-    out_ = std::filesystem::temp_directory_path() / "swarmagg_reproduce_test";
+    // CTest runs each test in its own process, several at once: one folder per process.
+    out_ = std::filesystem::temp_directory_path() /
+           ("swarmagg_reproduce_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(out_);
     std::ostringstream summary;
     first_ = new ReproduceOutcome(reproduce(reduced_options(out_), summary));
     summary_ = summary.str();
   }
-  static void TearDownTestSuite() { delete first_; }
+  static void TearDownTestSuite() {
+    delete first_;
+    std::filesystem::remove_all(out_);
+  }
   void SetUp() override {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
   }
