@@ -184,7 +184,11 @@ MotionCommand AggregationController::command_for(std::uint32_t agent,
       c.halt_on = kSearching | (rules_.join ? kWaiting : 0);
       c.blocked_by = rules_.join ? kWaiting : 0;
       break;
-    case AgentState::Wait: break;
+    case AgentState::Wait:
+      // Waiting bodies are solid to each other, so a body engine cannot shove one through
+      // another and loosen the aggregate (kinematic waiting agents never move anyway).
+      c.blocked_by = kWaiting;
+      break;
     case AgentState::Leave:
       c.velocity = swarm.heading[agent] * rules_.speed;
       c.blocked_by = kWaiting;

@@ -1,5 +1,6 @@
 #include "config/world_keys.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -136,9 +137,15 @@ WorldKey enum_key(std::string path, Access<Enum> access,
 }
 
 WorldKey string_key(std::string path, Access<std::string> access) {
-  const std::string expected = "a text";
+  const std::string expected = "a text without control characters";
   auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
-    access(w) = scalar_text(node, expected);
+    std::string text = scalar_text(node, expected);
+    // A "\0" (possible in a quoted YAML string) would cut a path short where the C library
+    // reads it: render.dir "a\0b" wrote frames into "a".
+    const bool control = std::any_of(text.begin(), text.end(),
+                                     [](char c) { return static_cast<unsigned char>(c) < 0x20; });
+    if (control) throw KeyValueError{expected};
+    access(w) = std::move(text);
   };
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)));

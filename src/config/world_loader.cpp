@@ -1,10 +1,17 @@
 #include "config/world_loader.hpp"
 
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "config/did_you_mean.hpp"
 #include "config/world_keys.hpp"
@@ -14,14 +21,23 @@ namespace swarmagg {
 namespace {
 
 // Where a value came from, for messages: "file:line:column" or "--set".
-std::string where(const std::string& source, const YAML::Node& node) {
-  const YAML::Mark mark = node.Mark();
+std::string where_mark(const std::string& source, const YAML::Mark& mark) {
   if (mark.is_null()) return source;
   return source + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
 }
+std::string where(const std::string& source, const YAML::Node& node) {
+  return where_mark(source, node.Mark());
+}
+
+// Text quoted back from the input is cut short: a message stays readable however long the
+// offending key or value is.
+std::string shortened(const std::string& text) {
+  constexpr std::size_t kShown = 80;
+  return text.size() <= kShown ? text : text.substr(0, kShown) + "...";
+}
 
 std::string shown_value(const YAML::Node& node) {
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsScalar()) return "'" + shortened(node.Scalar()) + "'";
   if (node.IsSequence()) return "a list";
   if (node.IsMap()) return "a mapping";
   return "nothing";
@@ -35,7 +51,11 @@ bool is_block(const std::string& path) {
 }
 
 [[noreturn]] void unknown_key(const std::string& at, const std::string& path) {
-  std::string message = at + ": unknown key '" + path + "'";
+  std::string message = at + ": unknown key '" + shortened(path) + "'";
+  // Edit distance costs time proportional to the name's length; a name far longer than any
+  // key path is no typo of one (a 2 MB key took 13 s here).
+  constexpr std::size_t kLongestTypo = 64;
+  if (path.size() > kLongestTypo) throw InputError(message);
   if (auto suggestion = closest_name(path, world_key_paths())) {
     message += " (did you mean '" + *suggestion + "'?)";
   }
@@ -92,12 +112,82 @@ class DocumentReader {
   std::set<std::string> seen_;
 };
 
+std::string syntax_error(const std::string& source, const YAML::Mark& mark,
+                         const std::string& what) {
+  return where_mark(source, mark) + ": YAML syntax error: " + what;
+}
+
+// Where each document of a YAML text starts and whether it holds anything but null.
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  struct Document {
+    YAML::Mark start;
+    bool empty = true;
+  };
+
+  const std::vector<Document>& documents() const { return documents_; }
+  // yaml-cpp 0.7 does not consume a ',' that starts a document: it reports an empty document
+  // at the same place again and again (YAML::LoadAll never returns).
+  bool stuck() const {
+    const auto n = documents_.size();
+    return n >= 2 && documents_[n - 1].start.pos == documents_[n - 2].start.pos;
+  }
+
+  void OnDocumentStart(const YAML::Mark& mark) override { documents_.push_back({mark, true}); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override { content(); }
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    content();
+  }
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    content();
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    content();
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void content() { documents_.back().empty = false; }
+
+  std::vector<Document> documents_;
+};
+
+// A world file is one document: YAML::Load would silently drop everything after a second
+// '---'. Empty documents (a stray '---' at the end) lose nothing and are let through.
+void check_one_document(const std::string& text, const std::string& source) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentStarts starts;
+  while (parser.HandleNextDocument(starts)) {
+    const auto& last = starts.documents().back();
+    if (starts.stuck()) {
+      const auto at = static_cast<std::size_t>(last.start.pos);
+      const std::string what = at < text.size() ? std::string(1, text[at]) : "end of file";
+      throw InputError(syntax_error(source, last.start, "unexpected '" + what + "'"));
+    }
+    if (starts.documents().size() > 1 && !last.empty) {
+      throw InputError(where_mark(source, last.start) +
+                       ": a second YAML document starts here; a world file is one YAML document");
+    }
+  }
+}
+
 YAML::Node parse_yaml(const std::string& text, const std::string& source) {
   try {
+    check_one_document(text, source);
     return YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own message for this is "bad file".
+    throw InputError(syntax_error(
+        source, e.mark, "nested more than " + std::to_string(e.depth() - 1) + " levels deep"));
   } catch (const YAML::ParserException& e) {
-    throw InputError(source + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+    throw InputError(syntax_error(source, e.mark, e.msg));
   }
 }
 
@@ -108,6 +198,64 @@ std::string read_file(const std::string& path) {
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the world file");
   return text.str();
+}
+
+// The minimum-image distance between two placed agents (both inside the arena).
+double placed_distance(const WorldSpec& spec, const PlacedAgent& a, const PlacedAgent& b) {
+  double dx = std::fabs(a.x - b.x);
+  double dy = std::fabs(a.y - b.y);
+  if (spec.arena.topology == Topology::Torus) {
+    dx = std::min(dx, spec.arena.width - dx);
+    dy = std::min(dy, spec.arena.height - dy);
+  }
+  return std::hypot(dx, dy);
+}
+
+// Bodies must not overlap at the start (SPEC 1), as random placement guarantees. Agents are
+// bucketed into cells at least 2r wide, so each is compared only with its 3x3 block of cells.
+void check_no_overlap(const WorldSpec& spec) {
+  const auto& placed = spec.robots.placement;
+  const double contact = 2.0 * spec.robots.radius;
+  const bool torus = spec.arena.topology == Topology::Torus;
+  // Capped: cells wider than 2r cost comparisons, never a missed pair.
+  const auto cells_along = [contact](double length) {
+    return static_cast<std::int64_t>(std::clamp(std::floor(length / contact), 1.0, 1048576.0));
+  };
+  const std::int64_t nx = cells_along(spec.arena.width);
+  const std::int64_t ny = cells_along(spec.arena.height);
+  const auto cell = [&](double v, double length, std::int64_t n) {
+    return std::min(n - 1, static_cast<std::int64_t>(v / length * static_cast<double>(n)));
+  };
+  std::vector<std::pair<std::int64_t, std::size_t>> keyed;  // (cell, agent), sorted by cell
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    keyed.push_back(
+        {cell(placed[i].y, spec.arena.height, ny) * nx + cell(placed[i].x, spec.arena.width, nx),
+         i});
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (const auto& [key, i] : keyed) {
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        std::int64_t cx = key % nx + dx;
+        std::int64_t cy = key / nx + dy;
+        if (!torus && (cx < 0 || cx >= nx || cy < 0 || cy >= ny)) continue;
+        cx = (cx + nx) % nx;
+        cy = (cy + ny) % ny;
+        const auto first = std::lower_bound(keyed.begin(), keyed.end(),
+                                            std::pair<std::int64_t, std::size_t>{cy * nx + cx, 0});
+        for (auto it = first; it != keyed.end() && it->first == cy * nx + cx; ++it) {
+          const std::size_t j = it->second;
+          if (j <= i) continue;  // each pair once
+          const double d = placed_distance(spec, placed[i], placed[j]);
+          if (d >= contact) continue;
+          throw InputError(spec.source + ": robots.placement: agents " + std::to_string(i) +
+                           " and " + std::to_string(j) + " overlap: their centres are " +
+                           format_number(d) +
+                           " apart, bodies need 2 robots.radius = " + format_number(contact));
+        }
+      }
+    }
+  }
 }
 
 void check_placement(const WorldSpec& spec, bool count_given) {
@@ -130,6 +278,7 @@ void check_placement(const WorldSpec& spec, bool count_given) {
                        format_number(spec.arena.height) + " arena");
     }
   }
+  check_no_overlap(spec);
 }
 
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
@@ -192,6 +341,15 @@ void check_world(const WorldSpec& spec) {
                "must be at least twice robots.radius (s = " + format_number(s) +
                    " < 2r = " + format_number(2.0 * robots.radius) + ")");
   }
+  // Positions (double here, float in Box2D) lose the resolution contacts at 2r need when the
+  // arena is this much larger than a body; grids sized by the arena would overflow too.
+  const double longest = std::max(spec.arena.width, spec.arena.height);
+  if (longest > 1e6 * robots.radius) {
+    impossible(spec, spec.arena.width >= spec.arena.height ? "arena.width" : "arena.height",
+               "the arena (" + format_number(spec.arena.width) + " x " +
+                   format_number(spec.arena.height) + ") spans more than 10^6 body radii (" +
+                   "robots.radius = " + format_number(robots.radius) + ")");
+  }
   const double min_side = std::min(spec.arena.width, spec.arena.height);
   if (min_side < 2.0 * spec.sensing_radius() + 2.0 * robots.radius) {
     impossible(spec, "arena.width",
@@ -213,11 +371,12 @@ void check_world(const WorldSpec& spec) {
     impossible(spec, "controller.approach_radius",
                "must exceed robots.detection_radius (" + format_number(s) + ")");
   }
+  // Compared before rounding: steps() cannot represent a count beyond 2^63.
+  if (spec.run.duration / spec.engine.dt > 1e12) {
+    impossible(spec, "run.duration", "needs more than 10^12 steps of engine.dt");
+  }
   if (spec.steps() < 1) {
     impossible(spec, "run.duration", "is shorter than one step of engine.dt");
-  }
-  if (spec.steps() > 1'000'000'000'000LL) {
-    impossible(spec, "run.duration", "needs more than 10^12 steps of engine.dt");
   }
   if (robots.speed * spec.engine.dt > 0.25 * min_side) {
     impossible(spec, "robots.speed", "moves an agent more than a quarter of the arena per step");

@@ -25,23 +25,30 @@ void NeighbourLists::close_agent(AgentId agent) {
   begin_[agent + 1] = static_cast<std::uint32_t>(items_.size());
 }
 
+// Counting sort of the pair ends by agent. Each agent's count goes to begin_[agent]; the
+// inclusive prefix sum turns it into the agent's end, and placing items by decrementing it
+// leaves its start. Only agents with two or more neighbours need sorting; the sorted lists
+// do not depend on the order the pairs came in (distance, then id, orders them totally).
 void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs) {
   begin_.assign(agent_count + 1, 0);
+  crowded_.clear();
   for (const ClosePair& p : pairs) {
-    ++begin_[p.i + 1];
-    ++begin_[p.j + 1];
+    if (++begin_[p.i] == 2) crowded_.push_back(p.i);
+    if (++begin_[p.j] == 2) crowded_.push_back(p.j);
   }
-  for (std::size_t a = 1; a <= agent_count; ++a) begin_[a] += begin_[a - 1];
-  items_.resize(begin_[agent_count]);
-  cursor_.assign(begin_.begin(), begin_.end() - 1);
-  for (const ClosePair& p : pairs) {
-    items_[cursor_[p.i]++] = {p.j, p.offset, p.distance};
-    items_[cursor_[p.j]++] = {p.i, -p.offset, p.distance};
-  }
+  std::uint32_t total = 0;
   for (std::size_t a = 0; a < agent_count; ++a) {
-    if (begin_[a + 1] - begin_[a] > 1) {
-      sort_by_distance(items_.data() + begin_[a], items_.data() + begin_[a + 1]);
-    }
+    total += begin_[a];
+    begin_[a] = total;
+  }
+  begin_[agent_count] = total;
+  items_.resize(total);
+  for (const ClosePair& p : pairs) {
+    items_[--begin_[p.i]] = {p.j, p.offset, p.distance};
+    items_[--begin_[p.j]] = {p.i, -p.offset, p.distance};
+  }
+  for (const AgentId a : crowded_) {
+    sort_by_distance(items_.data() + begin_[a], items_.data() + begin_[a + 1]);
   }
 }
 

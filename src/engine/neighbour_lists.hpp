@@ -47,7 +47,7 @@ class NeighbourLists {
  private:
   std::vector<std::uint32_t> begin_;
   std::vector<Neighbour> items_;
-  std::vector<std::uint32_t> cursor_;
+  std::vector<AgentId> crowded_;  // agents with two or more neighbours (to sort)
 };
 
 }  // namespace swarmagg

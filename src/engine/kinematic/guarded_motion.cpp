@@ -1,24 +1,31 @@
 #include "engine/kinematic/guarded_motion.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "geometry/swept_contact.hpp"
 
 namespace swarmagg {
 namespace {
 
-// Earliest event first; ties broken by pair and kind so the order never depends on how
-// the heap happens to be arranged.
-struct Later {
-  template <typename E>
-  bool operator()(const E& a, const E& b) const {
-    if (a.time != b.time) return a.time > b.time;
-    if (a.pair != b.pair) return a.pair > b.pair;
-    return a.kind > b.kind;
-  }
-};
+constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
 
 }  // namespace
+
+// Earliest event first; simultaneous events in the reference scan order of their pairs,
+// then by kind, so the order never depends on how the heap or the pair list is arranged.
+bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
+  if (a.time != b.time) return a.time > b.time;
+  if (a.pair != b.pair) {
+    const CandidatePair& p = pairs[a.pair];
+    const CandidatePair& q = pairs[b.pair];
+    if (p.rank != q.rank) return p.rank > q.rank;
+    const std::uint32_t pa = p.a_is_j ? p.j : p.i, qa = q.a_is_j ? q.j : q.i;
+    if (pa != qa) return pa > qa;
+    return (p.a_is_j ? p.i : p.j) > (q.a_is_j ? q.i : q.j);
+  }
+  return a.kind > b.kind;
+}
 
 bool GuardedMotion::blocks(std::uint32_t mover, std::uint32_t other) const {
   return (commands_[mover].blocked_by & mask_of(signals_[other])) != 0;
@@ -29,11 +36,11 @@ bool GuardedMotion::halts_for(std::uint32_t mover, std::uint32_t other) const {
 }
 
 Vec2 GuardedMotion::displacement_travelled(std::uint32_t agent, double time) const {
-  return commands_[agent].velocity * std::min(time, (*stop_time_)[agent]);
+  return commands_[agent].velocity * std::min(time, stop_time_[agent]);
 }
 
 Vec2 GuardedMotion::velocity_after(std::uint32_t agent, double time) const {
-  return (*stop_time_)[agent] > time ? commands_[agent].velocity : Vec2{};
+  return stop_time_[agent] > time ? commands_[agent].velocity : Vec2{};
 }
 
 void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
@@ -43,7 +50,7 @@ void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
   const Vec2 relative = velocity_after(pair.j, from_time) - velocity_after(pair.i, from_time);
   auto push = [&](double time, Kind kind) {
     heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
-    std::push_heap(heap_.begin(), heap_.end(), Later{});
+    std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
   };
   if (auto t = first_contact_time(offset, relative, limits_.detection_radius, from_time,
                                   limits_.dt)) {
@@ -59,51 +66,68 @@ void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
   }
 }
 
+// Each pair is linked into the lists of both its agents. The lists come out in reverse
+// pair order, which is harmless: the heap order is total, whatever the push order.
 void GuardedMotion::build_incidence() {
-  const std::size_t n = version_.size();
-  incidence_start_.assign(n + 1, 0);
-  for (const CandidatePair& p : pairs_) {
-    ++incidence_start_[p.i + 1];
-    ++incidence_start_[p.j + 1];
-  }
-  for (std::size_t a = 1; a <= n; ++a) incidence_start_[a] += incidence_start_[a - 1];
-  incidence_.resize(incidence_start_[n]);
-  incidence_cursor_.assign(incidence_start_.begin(), incidence_start_.end() - 1);
-  for (std::uint32_t k = 0; k < pairs_.size(); ++k) {
-    incidence_[incidence_cursor_[pairs_[k].i]++] = k;
-    incidence_[incidence_cursor_[pairs_[k].j]++] = k;
+  const auto ends = static_cast<std::uint32_t>(2 * pairs_.size());
+  next_end_.resize(ends);
+  ++stamp_;
+  for (std::uint32_t end = 0; end < ends; ++end) {
+    const CandidatePair& p = pairs_[end >> 1];
+    const std::uint32_t agent = (end & 1) ? p.j : p.i;
+    next_end_[end] = head_stamp_[agent] == stamp_ ? head_[agent] : kNoEnd;
+    head_[agent] = end;
+    head_stamp_[agent] = stamp_;
   }
   incidence_built_ = true;
 }
 
 void GuardedMotion::halt(std::uint32_t agent, double time) {
-  if ((*stop_time_)[agent] <= time) return;
+  if (stop_time_[agent] <= time) return;
   if (!incidence_built_) build_incidence();
-  (*stop_time_)[agent] = time;
+  if (stop_time_[agent] == limits_.dt) halted_.push_back(agent);
+  stop_time_[agent] = time;
   ++version_[agent];
-  for (std::uint32_t k = incidence_start_[agent]; k < incidence_start_[agent + 1]; ++k) {
-    schedule_pair(incidence_[k], time);
+  if (head_stamp_[agent] != stamp_) return;
+  for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
+    schedule_pair(end >> 1, time);
   }
+}
+
+// Stop times are dt except where the last step halted someone: only those are reset.
+void GuardedMotion::reset(std::size_t agents, double dt) {
+  if (stop_time_.size() != agents || limits_.dt != dt) {
+    stop_time_.assign(agents, dt);
+    version_.assign(agents, 0u);
+    head_.assign(agents, 0u);
+    head_stamp_.assign(agents, 0u);
+    stamp_ = 0;
+  } else {
+    for (const std::uint32_t agent : halted_) stop_time_[agent] = dt;
+  }
+  halted_.clear();
 }
 
 std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
                                      std::span<const MotionCommand> commands,
-                                     std::span<const Signal> signals, const MotionLimits& limits,
-                                     std::vector<double>& stop_time) {
+                                     std::span<const Signal> signals, const MotionLimits& limits) {
+  reset(commands.size(), limits.dt);
   pairs_ = pairs;
   commands_ = commands;
   signals_ = signals;
   limits_ = limits;
-  stop_time_ = &stop_time;
-  stop_time.assign(commands.size(), limits.dt);
-  version_.assign(commands.size(), 0u);
   incidence_built_ = false;
+  if (stamp_ == std::numeric_limits<std::uint32_t>::max()) {
+    std::fill(head_stamp_.begin(), head_stamp_.end(), 0u);
+    stamp_ = 0;
+  }
   heap_.clear();
   for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
 
   std::uint64_t encounters = 0;
+  const Later later{pairs_.data()};
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    std::pop_heap(heap_.begin(), heap_.end(), later);
     const Event event = heap_.back();
     heap_.pop_back();
     const CandidatePair& pair = pairs_[event.pair];
@@ -119,6 +143,19 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       const bool halt_j = blocks(pair.j, pair.i);
       if (halt_i) halt(pair.i, event.time);
       if (halt_j) halt(pair.j, event.time);
+    }
+  }
+  return encounters;
+}
+
+std::uint64_t GuardedMotion::count_encounters(std::span<const CandidatePair> pairs,
+                                              std::span<const MotionCommand> commands,
+                                              const MotionLimits& limits) {
+  std::uint64_t encounters = 0;
+  for (const CandidatePair& pair : pairs) {
+    const Vec2 relative = commands[pair.j].velocity - commands[pair.i].velocity;
+    if (first_contact_time(pair.offset, relative, limits.detection_radius, 0.0, limits.dt)) {
+      ++encounters;
     }
   }
   return encounters;

@@ -4,6 +4,7 @@
 // at 2r) are processed in time order. An agent halts at the instant an event its command
 // cares about fires (halt_on, blocked_by); its later events are then recomputed from its
 // new, stationary trajectory. Every first contact within s is counted as an encounter.
+// When no command guards its move, nothing can halt and the encounters are simply counted.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,10 +15,15 @@
 namespace swarmagg {
 
 // Two agents that may meet during the step: i < j, `offset` from i to j at the step start.
+// Simultaneous events are processed in the order of (rank, a, b), where a is i, or j when
+// `a_is_j`, and b the other: the order in which the reference grid scan meets the pairs
+// (pair_convention.hpp), whatever order the pairs are listed in.
 struct CandidatePair {
   std::uint32_t i = 0;
   std::uint32_t j = 0;
   Vec2 offset;
+  std::uint32_t rank = 0;
+  bool a_is_j = false;
 };
 
 struct MotionLimits {
@@ -28,11 +34,17 @@ struct MotionLimits {
 
 class GuardedMotion {
  public:
-  // Fills stop_time[i] (dt when agent i moves the whole step) and returns the number of
-  // encounters of the step.
+  // Resolves the step for agents that guard their moves (some command has halt_on or
+  // blocked_by bits) and returns the number of encounters; stop_times() then holds when
+  // each agent stopped (dt when it moved the whole step).
   std::uint64_t resolve(std::span<const CandidatePair> pairs, std::span<const MotionCommand> commands,
-                        std::span<const Signal> signals, const MotionLimits& limits,
-                        std::vector<double>& stop_time);
+                        std::span<const Signal> signals, const MotionLimits& limits);
+  std::span<const double> stop_times() const { return stop_time_; }
+
+  // The encounters of a step in which no agent halts: every agent moves the whole step.
+  static std::uint64_t count_encounters(std::span<const CandidatePair> pairs,
+                                        std::span<const MotionCommand> commands,
+                                        const MotionLimits& limits);
 
  private:
   enum class Kind : std::uint8_t { Perceive, Contact };
@@ -43,7 +55,12 @@ class GuardedMotion {
     std::uint32_t version_i;
     std::uint32_t version_j;
   };
+  struct Later {  // heap order: the earliest event on top
+    const CandidatePair* pairs;
+    bool operator()(const Event& a, const Event& b) const;
+  };
 
+  void reset(std::size_t agents, double dt);
   void schedule_pair(std::uint32_t pair, double from_time);
   void halt(std::uint32_t agent, double time);
   void build_incidence();
@@ -56,13 +73,19 @@ class GuardedMotion {
   std::span<const MotionCommand> commands_;
   std::span<const Signal> signals_;
   MotionLimits limits_;
-  std::vector<double>* stop_time_ = nullptr;
+  std::vector<double> stop_time_;
+  std::vector<std::uint32_t> halted_;  // agents whose stop time is below dt
   std::vector<Event> heap_;
+  // An agent halts at most once per step (later events are never earlier), so versions
+  // only need to differ within a step: they count up across steps and are never reset.
   std::vector<std::uint32_t> version_;
+  // Pairs of each agent, built on the first halt of a step: linked lists through the pair
+  // ends (2 * pair + end), whose heads are valid only where head_stamp_ is this step's.
   bool incidence_built_ = false;
-  std::vector<std::uint32_t> incidence_start_;
-  std::vector<std::uint32_t> incidence_;
-  std::vector<std::uint32_t> incidence_cursor_;
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> head_;
+  std::vector<std::uint32_t> head_stamp_;
+  std::vector<std::uint32_t> next_end_;
 };
 
 }  // namespace swarmagg

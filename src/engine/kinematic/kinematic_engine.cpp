@@ -1,14 +1,32 @@
 #include "engine/kinematic/kinematic_engine.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "engine/kinematic/guarded_motion.hpp"
-#include "engine/kinematic/uniform_grid.hpp"
+#include "engine/kinematic/neighbour_search.hpp"
+#include "engine/kinematic/step_threads.hpp"
 #include "geometry/arena_geometry.hpp"
 
 namespace swarmagg {
 namespace {
+
+// What the step needs to know about the commands before resolving them.
+struct CommandSummary {
+  double fastest = 0.0;  // largest commanded speed
+  bool guarded = false;  // some agent may halt (halt_on or blocked_by bits)
+};
+
+CommandSummary summarise(std::span<const MotionCommand> commands) {
+  double fastest2 = 0.0;
+  SignalMask guards = 0;
+  for (const MotionCommand& c : commands) {
+    fastest2 = std::max(fastest2, norm2(c.velocity));
+    guards |= c.halt_on | c.blocked_by;
+  }
+  return {std::sqrt(fastest2), guards != 0};
+}
 
 class KinematicEngine final : public Engine {
  public:
@@ -22,17 +40,22 @@ class KinematicEngine final : public Engine {
         nominal_speed_(spec.robots.speed),
         positions_(initial_positions.begin(), initial_positions.end()),
         reflections_(positions_.size(), 0) {
-    rebuild_neighbourhood(nominal_speed_);
+    rebuild_neighbourhood(nominal_speed_, true);
   }
 
   StepReport step(std::span<const MotionCommand> commands,
                   std::span<const Signal> signals) override {
-    const double fastest = fastest_speed(commands);
-    if (fastest > pairs_speed_) rebuild_neighbourhood(fastest);
+    const CommandSummary summary = summarise(commands);
+    // Faster than the candidates allow: search again (what agents perceive is unchanged).
+    if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false);
     StepReport report;
-    report.encounters = motion_.resolve(pairs_, commands, signals, limits_, stop_time_);
-    move(commands);
-    rebuild_neighbourhood(std::max(nominal_speed_, fastest));
+    if (summary.guarded) {
+      report.encounters = motion_.resolve(search_.candidates(), commands, signals, limits_);
+      move_and_rebuild(commands, motion_.stop_times().data(), summary.fastest);
+    } else {
+      report.encounters = GuardedMotion::count_encounters(search_.candidates(), commands, limits_);
+      move_and_rebuild(commands, nullptr, summary.fastest);
+    }
     return report;
   }
 
@@ -42,23 +65,37 @@ class KinematicEngine final : public Engine {
   std::span<const std::uint8_t> reflections() const override {
     return arena_.torus() ? std::span<const std::uint8_t>{} : std::span<const std::uint8_t>(reflections_);
   }
+  void set_threads(int threads) override { threads_.resize(std::max(1, threads)); }
 
  private:
-  static double fastest_speed(std::span<const MotionCommand> commands) {
-    double fastest2 = 0.0;
-    for (const MotionCommand& c : commands) fastest2 = std::max(fastest2, norm2(c.velocity));
-    return std::sqrt(fastest2);
+  // Moves every agent for its stop time (dt for all when `stop_time` is null), then finds
+  // the pairs for the next step and what each agent perceives.
+  void move_and_rebuild(std::span<const MotionCommand> commands, const double* stop_time,
+                        double fastest) {
+    const SearchRadii radii = radii_for(std::max(nominal_speed_, fastest), true);
+    const double dt = limits_.dt;
+    if (stop_time == nullptr) {
+      auto move = [&](std::uint32_t i, Vec2 p) { return move_agent(i, p, commands[i].velocity * dt); };
+      search_.move_and_find(arena_, positions_, radii, threads_, move);
+    } else {
+      auto move = [&](std::uint32_t i, Vec2 p) {
+        return move_agent(i, p, commands[i].velocity * stop_time[i]);
+      };
+      search_.move_and_find(arena_, positions_, radii, threads_, move);
+    }
+    neighbours_.assign_from_pairs(positions_.size(), search_.close_pairs());
   }
 
-  void move(std::span<const MotionCommand> commands) {
-    for (std::size_t i = 0; i < positions_.size(); ++i) {
-      positions_[i] += commands[i].velocity * stop_time_[i];
-      if (arena_.torus()) {
-        positions_[i] = arena_.wrap(positions_[i]);
-      } else {
-        reflections_[i] = reflect_off_walls(positions_[i]);
-      }
+  // Agent i, at p, moves by `step`: wrapped on a torus, reflected off walls.
+  Vec2 move_agent(std::uint32_t i, Vec2 p, Vec2 step) {
+    p += step;
+    if (arena_.torus()) {
+      p = arena_.wrap(p);
+    } else {
+      reflections_[i] = reflect_off_walls(p);
     }
+    positions_[i] = p;
+    return p;
   }
 
   std::uint8_t reflect_off_walls(Vec2& p) const {
@@ -79,27 +116,21 @@ class KinematicEngine final : public Engine {
     return bits;
   }
 
-  // Rebuilds the grid on the current positions, each agent's perceived neighbours, and the
-  // pairs that can meet during the next step if no agent is faster than `speed`.
-  void rebuild_neighbourhood(double speed) {
+  // The radii of the search for pairs that can meet during the next step if no agent is
+  // faster than `speed` (and with `perception`, of what each agent perceives).
+  SearchRadii radii_for(double speed, bool perception) {
     pairs_speed_ = speed;
-    const double pair_reach =
+    SearchRadii radii;
+    radii.sensing = sensing_radius_;
+    radii.pair_reach =
         std::max(limits_.detection_radius, limits_.contact_distance) + 2.0 * speed * limits_.dt;
-    const double reach = std::max(sensing_radius_, pair_reach);
-    // Cells much smaller than the spacing between agents cost more to sweep than the
-    // distance checks they save; about 1.4 agents per cell measured best (callgrind).
-    const double spacing = std::sqrt(arena_.width() * arena_.height() /
-                                     std::max<std::size_t>(1, positions_.size()));
-    grid_.rebuild(arena_, std::max(reach, 1.2 * spacing), positions_);
-    close_.clear();
-    pairs_.clear();
-    const double sense2 = sensing_radius_ * sensing_radius_;
-    const double pair2 = pair_reach * pair_reach;
-    grid_.for_each_close_pair(reach, [&](std::uint32_t i, std::uint32_t j, Vec2 d, double d2) {
-      if (d2 <= sense2) close_.push_back({i, j, d, std::sqrt(d2)});
-      if (d2 <= pair2) pairs_.push_back({i, j, d});
-    });
-    neighbours_.assign_from_pairs(positions_.size(), close_);
+    radii.perception = perception;
+    return radii;
+  }
+
+  void rebuild_neighbourhood(double speed, bool perception) {
+    search_.find(arena_, positions_, radii_for(speed, perception), threads_);
+    if (perception) neighbours_.assign_from_pairs(positions_.size(), search_.close_pairs());
   }
 
   ArenaGeometry arena_;
@@ -110,11 +141,9 @@ class KinematicEngine final : public Engine {
   double pairs_speed_ = 0.0;
   std::vector<Vec2> positions_;
   std::vector<std::uint8_t> reflections_;
-  std::vector<double> stop_time_;
-  UniformGrid grid_;
+  StepThreads threads_;
+  NeighbourSearch search_;
   NeighbourLists neighbours_;
-  std::vector<CandidatePair> pairs_;
-  std::vector<ClosePair> close_;
   GuardedMotion motion_;
 };
 

@@ -1,0 +1,229 @@
+#pragma once
+// Agents sorted into horizontal strips at least `window` high, and by x within each strip,
+// kept as structure-of-arrays in that order. A pair closer than `window` then lies in one
+// strip or two adjacent ones, within an x-window of 2 * window: the scan compares each
+// agent with a handful of others, reading memory sequentially, with no empty cells to sweep.
+//
+// Each strip ends with a sentinel slot at x = +infinity, so the inner loops need no bound
+// check. Agents move little per step, so `advance` moves them in slot order (reading memory
+// sequentially) and re-sorts from the previous order: a stable counting sort by (strip,
+// block), blocks being x-intervals of a few agents each (an agent entering a strip lands
+// next to its place), then an insertion sort by x that has almost nothing left to do.
+// Keeping the order costs O(N) and allocates nothing after warm-up.
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "engine/kinematic/step_threads.hpp"
+#include "geometry/arena_geometry.hpp"
+
+namespace swarmagg {
+
+class SortedStrips {
+ public:
+  // Whether the arena is large enough for strips of `window`: at least three strips, and
+  // three windows across, so that no pair is met twice around the torus.
+  static bool fits(const ArenaGeometry& arena, double window);
+
+  // Sorts the agents at `positions` (by id) into strips at least `window` high, starting
+  // from the previous order when nothing but the positions changed.
+  void update(const ArenaGeometry& arena, double window, std::span<const Vec2> positions,
+              StepThreads& threads);
+  // Moves every agent, agent `id` at p to move(id, p), and re-sorts from the previous order.
+  // Returns false, having moved nobody, unless the arena, the window and the number of
+  // agents are those of the last sort. `move` may run on several threads at once.
+  template <typename Move>
+  bool advance(const ArenaGeometry& arena, double window, std::size_t agents, StepThreads& threads,
+               Move& move);
+
+  // Calls visit(a, b) for every pair of slots whose agents lie within `window` of each
+  // other (torus-aware), once: strips [first, last) scan themselves and the strip above.
+  template <typename Visit>
+  void for_each_candidate(int first, int last, Visit&& visit) const;
+
+  int strips() const { return strips_; }
+  std::uint32_t id(std::uint32_t slot) const { return id_[slot]; }
+  Vec2 position(std::uint32_t slot) const { return {x_[slot], y_[slot]}; }
+
+ private:
+  struct Layout {
+    int strips = 1;
+    int blocks = 1;  // per strip
+    double strip_scale = 1.0;  // strips per unit length (y)
+    double block_scale = 1.0;  // blocks per unit length (x)
+    std::uint32_t cell_of(Vec2 p) const;  // strip * blocks + block
+    bool operator==(const Layout&) const = default;
+  };
+  static Layout layout_for(const ArenaGeometry& arena, double window, std::size_t agents);
+
+  // Slots of strip s: [strip_first(s), strip_sentinel(s)).
+  std::uint32_t strip_first(int s) const { return cell_begin_[static_cast<std::size_t>(s) * layout_.blocks]; }
+  std::uint32_t strip_sentinel(int s) const { return strip_first(s + 1) - 1; }
+
+  bool same_layout(const ArenaGeometry& arena, double window, std::size_t agents) const;
+  void sort_from_scratch(std::span<const Vec2> positions);
+  int restrip_tasks(const StepThreads& threads);
+  int first_strip(int task, int tasks) const {
+    return static_cast<int>(StepThreads::slice_begin(static_cast<std::size_t>(strips_), task, tasks));
+  }
+  template <typename Move>
+  void move_strips(int task, int first, int last, Move& move);
+  void finish_restrip(int tasks, StepThreads& threads);
+  void scatter_strips(int task, int first, int last);
+  void prefix_counts(int tasks);
+  void sort_strips_by_x(int first, int last);
+  void close_strips();
+
+  template <typename Visit>
+  void scan_strip(int s, Visit& visit) const;
+  template <typename Visit>
+  void scan_seam(int s, std::uint32_t a, Visit& visit) const;
+
+  ArenaGeometry arena_{1.0, 1.0, Topology::Torus};
+  double window_ = 0.0;
+  Layout layout_;
+  int strips_ = 0;
+  std::size_t agents_ = 0;
+  // Slots of cell c (strip * blocks + block) start at cell_begin_[c]; a strip's sentinel
+  // follows its last block. cells + 1 entries.
+  std::vector<std::uint32_t> cell_begin_;
+  std::vector<std::uint32_t> next_begin_;  // the restrip's new bounds
+  std::vector<double> x_;
+  std::vector<double> y_;
+  std::vector<std::uint32_t> id_;
+  // Scratch of the restrip, by old slot: new position and cell; per task, cell counts.
+  std::vector<double> new_x_;
+  std::vector<double> new_y_;
+  std::vector<std::uint32_t> new_id_;
+  std::vector<std::uint32_t> new_cell_;
+  std::vector<std::vector<std::uint32_t>> task_cursor_;
+};
+
+// Positions are never negative (walls keep bodies inside, the torus wraps); the unsigned
+// minimum only keeps a stray value inside the table.
+inline std::uint32_t SortedStrips::Layout::cell_of(Vec2 p) const {
+  const auto strip = std::min(static_cast<unsigned>(static_cast<int>(p.y * strip_scale)),
+                              static_cast<unsigned>(strips - 1));
+  const auto block = std::min(static_cast<unsigned>(static_cast<int>(p.x * block_scale)),
+                              static_cast<unsigned>(blocks - 1));
+  return strip * static_cast<unsigned>(blocks) + block;
+}
+
+template <typename Move>
+bool SortedStrips::advance(const ArenaGeometry& arena, double window, std::size_t agents,
+                           StepThreads& threads, Move& move) {
+  if (!same_layout(arena, window, agents)) return false;
+  const int tasks = restrip_tasks(threads);
+  auto gather = [&](int task) {
+    move_strips(task, first_strip(task, tasks), first_strip(task + 1, tasks), move);
+  };
+  threads.run(tasks, gather);
+  finish_restrip(tasks, threads);
+  return true;
+}
+
+// Moves the agents of strips [first, last) and counts them by destination cell. The loop
+// copies members into locals: stores through the arrays could otherwise alias them (as far
+// as the compiler knows) and force a reload per agent.
+template <typename Move>
+void SortedStrips::move_strips(int task, int first, int last, Move& move) {
+  const Layout layout = layout_;
+  std::uint32_t* counts = task_cursor_[task].data();
+  const double* x = x_.data();
+  const double* y = y_.data();
+  const std::uint32_t* id = id_.data();
+  std::uint32_t* new_cell = new_cell_.data();
+  double* new_x = new_x_.data();
+  double* new_y = new_y_.data();
+  std::uint32_t* new_id = new_id_.data();
+  for (int s = first; s < last; ++s) {
+    const std::uint32_t begin = strip_first(s), end = strip_sentinel(s);
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t agent = id[k];
+      const Vec2 p = move(agent, Vec2{x[k], y[k]});
+      const std::uint32_t cell = layout.cell_of(p);
+      new_cell[k] = cell;
+      new_x[k] = p.x;
+      new_y[k] = p.y;
+      new_id[k] = agent;
+      ++counts[cell];
+    }
+  }
+}
+
+template <typename Visit>
+void SortedStrips::for_each_candidate(int first, int last, Visit&& visit) const {
+  for (int s = first; s < last; ++s) scan_strip(s, visit);
+}
+
+template <typename Visit>
+void SortedStrips::scan_strip(int s, Visit& visit) const {
+  const std::uint32_t begin = strip_first(s), end = strip_sentinel(s);
+  if (begin == end) return;
+  const bool top = s + 1 == strips_;
+  const bool above = arena_.torus() || !top;
+  const double window = window_, window2 = window * window;
+  const double shift_y = top ? arena_.height() : 0.0;
+  const double* x = x_.data();
+  const double* y = y_.data();
+  // On a torus, agents within a window of either edge also look across the seam: slots
+  // [begin, inner) and [outer, end).
+  std::uint32_t inner = begin, outer = end;
+  if (arena_.torus()) {
+    while (inner < end && x[inner] - window < 0.0) ++inner;
+    while (outer > inner && x[outer - 1] + window >= arena_.width()) --outer;
+  }
+  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
+  for (std::uint32_t a = begin; a < end; ++a) {
+    const double xa = x[a], ya = y[a];
+    const double high = xa + window;
+    // The same strip, ahead in x (the sentinel ends the loop).
+    for (std::uint32_t b = a + 1; x[b] <= high; ++b) {
+      const double dx = x[b] - xa, dy = y[b] - ya;
+      if (dx * dx + dy * dy <= window2) visit(a, b);
+    }
+    // The strip above, within [xa - window, xa + window]; `low` only moves forward. (Without
+    // a strip above, `low` rests on this strip's sentinel and the loops do nothing.)
+    // Two steps without branches cover most agents (the strip above holds about as many
+    // agents as this one), which spares a mispredicted loop exit per agent.
+    const double ya_below = ya - shift_y, from = xa - window;
+    low += x[low] < from;
+    low += x[low] < from;
+    while (x[low] < from) ++low;
+    for (std::uint32_t b = low; x[b] <= high; ++b) {
+      const double dx = x[b] - xa, dy = y[b] - ya_below;
+      if (dx * dx + dy * dy <= window2) visit(a, b);
+    }
+    if (a < inner || a >= outer) scan_seam(s, a, visit);
+  }
+}
+
+// Pairs across the x seam of a torus for slot a of strip s: partners near the other edge
+// of the same strip (met from the agent near x = width only) and of the strip above.
+template <typename Visit>
+void SortedStrips::scan_seam(int s, std::uint32_t a, Visit& visit) const {
+  const bool top = s + 1 == strips_;
+  const int t = top ? 0 : s + 1;
+  const double width = arena_.width(), shift_y = top ? arena_.height() : 0.0;
+  const double window = window_, window2 = window * window;
+  const double xa = x_[a], ya = y_[a];
+  auto test = [&](std::uint32_t b, double shift_x, double dy_shift) {
+    const double dx = x_[b] + shift_x - xa, dy = y_[b] + dy_shift - ya;
+    if (dx * dx + dy * dy <= window2) visit(a, b);
+  };
+  const std::uint32_t first = strip_first(s), t_first = strip_first(t), t_end = strip_sentinel(t);
+  if (xa + window >= width) {
+    for (std::uint32_t b = first; x_[b] + width <= xa + window; ++b) test(b, width, 0.0);
+    for (std::uint32_t b = t_first; x_[b] + width <= xa + window; ++b) test(b, width, shift_y);
+  }
+  if (xa - window < 0.0) {
+    for (std::uint32_t b = t_end; b > t_first && x_[b - 1] - width >= xa - window; --b) {
+      test(b - 1, -width, shift_y);
+    }
+  }
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,242 @@
+// SIGINT or SIGTERM during `swarmagg run` or `sweep`: the run stops, exits 130 (143), keeps
+// every completed output intact and leaves no partial file behind. The binary runs a world
+// long enough to be caught mid-run; the signal is sent once its handlers are installed.
+#include <fcntl.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using Clock = std::chrono::steady_clock;
+
+const std::string kLongWorld = std::string(SWARMAGG_SOURCE_DIR) + "/worlds/paper/full-0.0025.yaml";
+
+struct Outcome {
+  int exit_code = -1;  // -1 unless the process exited normally
+  int signal_number = 0;
+  bool timed_out = false;
+  std::string output;  // stdout and stderr together
+};
+
+// A running `swarmagg`, its stdout and stderr going to one pipe.
+class Child {
+ public:
+  explicit Child(const std::vector<std::string>& arguments) {
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+    posix_spawn_file_actions_addclose(&actions, fds[0]);
+    std::vector<char*> argv;
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    if (posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&actions);
+    close(fds[1]);
+    reader_ = fds[0];
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  ~Child() {
+    if (pid_ > 0 && !reaped_) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (reader_ >= 0) close(reader_);
+  }
+
+  bool started() const { return pid_ > 0; }
+
+  // The signal handlers are in place once /proc shows SIGINT and SIGTERM as caught; a signal
+  // sent earlier would kill the process the default way.
+  bool wait_for_handlers(std::chrono::seconds limit) const {
+    const unsigned long wanted = (1ul << (SIGINT - 1)) | (1ul << (SIGTERM - 1));
+    for (const auto deadline = Clock::now() + limit; Clock::now() < deadline;) {
+      std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
+      for (std::string line; std::getline(status, line);) {
+        if (line.rfind("SigCgt:", 0) != 0) continue;
+        if ((std::stoul(line.substr(7), nullptr, 16) & wanted) == wanted) return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
+
+  void send(int signal_number) const { kill(pid_, signal_number); }
+
+  Outcome wait(std::chrono::seconds limit) {
+    Outcome outcome;
+    const auto deadline = Clock::now() + limit;
+    pollfd pipe_end{reader_, POLLIN, 0};
+    char buffer[4096];
+    while (true) {
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) {
+        outcome.timed_out = true;
+        kill(pid_, SIGKILL);
+        break;
+      }
+      if (poll(&pipe_end, 1, static_cast<int>(left.count())) <= 0) continue;
+      const ssize_t got = read(reader_, buffer, sizeof buffer);
+      if (got <= 0) break;
+      outcome.output.append(buffer, static_cast<std::size_t>(got));
+    }
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    reaped_ = true;
+    if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) outcome.signal_number = WTERMSIG(status);
+    return outcome;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int reader_ = -1;
+  bool reaped_ = false;
+};
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("swarmagg-interrupt-" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every file below `dir` (relative path -> content).
+std::map<std::string, std::string> files_below(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  if (!fs::exists(dir)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file())
+      files[fs::relative(entry.path(), dir).string()] = read_all(entry.path());
+  }
+  return files;
+}
+
+std::vector<std::string> temporary_files_below(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& [name, content] : files_below(dir)) {
+    if (name.ends_with(".tmp")) found.push_back(name);
+  }
+  return found;
+}
+
+// Starts `arguments`, interrupts it with `signal_number` `delay` after its handlers are in
+// place and waits for it to stop.
+Outcome interrupt(const std::vector<std::string>& arguments, int signal_number,
+                  std::chrono::milliseconds delay) {
+  Child child(arguments);
+  EXPECT_TRUE(child.started());
+  EXPECT_TRUE(child.wait_for_handlers(std::chrono::seconds(60))) << "never installed its handlers";
+  std::this_thread::sleep_for(delay);
+  child.send(signal_number);
+  return child.wait(std::chrono::seconds(60));
+}
+
+std::vector<std::string> long_run(const fs::path& out) {
+  // 10^7 steps of 120 agents in each of two replicates: far longer than the test waits.
+  return {SWARMAGG_BINARY, "run",       kLongWorld, "--replicates",         "2",
+          "--threads",     "2",         "--set",    "run.duration=1000000", "--quiet",
+          "--out",         out.string()};
+}
+
+void expect_interrupted(const Outcome& o, int code) {
+  ASSERT_FALSE(o.timed_out) << "did not stop within a minute of the signal";
+  ASSERT_EQ(o.signal_number, 0) << "killed by signal " << o.signal_number << ":\n" << o.output;
+  EXPECT_EQ(o.exit_code, code) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("interrupted; completed outputs are intact"));
+}
+
+// A complete run of the same world in `out`, as a user's earlier run would have left it.
+std::map<std::string, std::string> earlier_run(const fs::path& out) {
+  Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=20",
+               "--quiet", "--out", out.string()});
+  const Outcome o = child.wait(std::chrono::seconds(120));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  return files_below(out);
+}
+
+TEST(Interrupt, SigintStopsARunWithExitCode130AndKeepsTheEarlierOutputIntact) {
+  const fs::path out = fresh_dir("sigint");
+  const auto before = earlier_run(out);
+  ASSERT_TRUE(before.contains("world.resolved.yaml"));
+  ASSERT_TRUE(before.contains("timeseries.csv"));
+  expect_interrupted(interrupt(long_run(out), SIGINT, std::chrono::milliseconds(500)), 130);
+  EXPECT_EQ(files_below(out), before) << "the earlier complete output changed";
+  fs::remove_all(out);
+}
+
+TEST(Interrupt, SigtermStopsARunWithExitCode143AndLeavesNoPartialFile) {
+  const fs::path out = fresh_dir("sigterm");
+  expect_interrupted(interrupt(long_run(out), SIGTERM, std::chrono::milliseconds(500)), 143);
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  // world.resolved.yaml is written last: without it, no other output may exist either.
+  const auto after = files_below(out);
+  if (!after.contains("world.resolved.yaml")) {
+    EXPECT_TRUE(after.empty()) << after.size() << " outputs of an incomplete run";
+  }
+  fs::remove_all(out);
+}
+
+TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
+  const fs::path out = fresh_dir("at-once");
+  expect_interrupted(interrupt(long_run(out), SIGINT, std::chrono::milliseconds(0)), 130);
+  EXPECT_FALSE(fs::exists(out / "timeseries.csv"));
+  fs::remove_all(out);
+}
+
+// A sweep of three runs, two short and one long: interrupted during the long one, the short
+// ones stay complete and the long one leaves no folder.
+TEST(Interrupt, SigintStopsASweepAndKeepsItsCompletedRuns) {
+  const fs::path dir = fresh_dir("sweep");
+  fs::create_directories(dir);
+  const fs::path sweep = dir / "sweep.yaml";
+  std::ofstream(sweep) << "name: interrupted\nbase: " << kLongWorld
+                       << "\nparameters:\n  run.duration: [20, 30, 1000000]\nreplicates: 1\n"
+                          "seed: 1\n";
+  const fs::path out = dir / "out";
+  const Outcome o = interrupt({SWARMAGG_BINARY, "sweep", sweep.string(), "--threads", "1",
+                               "--quiet", "--out", out.string()},
+                              SIGINT, std::chrono::milliseconds(1500));
+  expect_interrupted(o, 130);
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  int complete = 0;
+  for (const auto& point : fs::directory_iterator(out / "runs")) {
+    for (const auto& run : fs::directory_iterator(point.path())) {
+      EXPECT_TRUE(fs::exists(run.path() / "world.resolved.yaml")) << run.path() << " is partial";
+      EXPECT_TRUE(fs::exists(run.path() / "timeseries.csv")) << run.path();
+      ++complete;
+    }
+  }
+  EXPECT_EQ(complete, 2) << "the two short runs complete, the long one absent";
+  fs::remove_all(dir);
+}
+
+}  // namespace
