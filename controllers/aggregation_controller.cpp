@@ -1,6 +1,7 @@
 #include "controllers/aggregation_controller.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace swarmagg {
@@ -83,9 +84,7 @@ void AggregationController::count_leave(std::uint32_t agent, const ControllerInp
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
   if (!rules_.join) return;
-  const auto n = static_cast<std::uint32_t>(swarm.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!searching(i)) continue;
+  for (const std::uint32_t i : searchers_) {
     for (const Neighbour& nb : input.neighbours.of(i)) {
       if (nb.distance > rules_.detection_radius) break;
       if (previous_[nb.id] != AgentState::Wait) continue;
@@ -99,10 +98,8 @@ void AggregationController::join_waiting(const ControllerInput& input, SwarmStat
 
 void AggregationController::pair_searchers(const ControllerInput& input, SwarmState& swarm,
                                            EventCounts& events) {
-  const auto n = static_cast<std::uint32_t>(swarm.size());
   pairs_.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!searching(i) || settled_[i]) continue;
+  for (const std::uint32_t i : unsettled_) {
     for (const Neighbour& nb : input.neighbours.of(i)) {
       if (nb.distance > rules_.detection_radius) break;
       if (nb.id > i && searching(nb.id) && !settled_[nb.id]) pairs_.push_back({nb.distance, i, nb.id});
@@ -134,10 +131,9 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
 
 void AggregationController::steer_searchers(const ControllerInput& input, SwarmState& swarm,
                                             const CounterRng& rng) {
-  const auto n = static_cast<std::uint32_t>(swarm.size());
   const auto step = static_cast<std::uint64_t>(input.step);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!searching(i) || settled_[i]) continue;
+  for (const std::uint32_t i : unsettled_) {
+    if (settled_[i]) continue;  // paired
     if (rules_.approach_radius) {
       const Neighbour* target = nullptr;
       for (const Neighbour& nb : input.neighbours.of(i)) {
@@ -171,31 +167,77 @@ Vec2 AggregationController::escape_direction(std::uint32_t agent, const Controll
   return length > 1e-12 ? towards * (-1.0 / length) : fallback;
 }
 
-MotionCommand AggregationController::command_for(std::uint32_t agent,
-                                                 const SwarmState& swarm) const {
+// The command of each state, looked up rather than branched on: states of neighbouring
+// indices are unrelated, so a switch mispredicts about every other agent.
+void AggregationController::write_commands(const SwarmState& swarm,
+                                           std::span<MotionCommand> commands) const {
   constexpr SignalMask kSearching =
       mask_of(static_cast<Signal>(AgentState::Go)) | mask_of(static_cast<Signal>(AgentState::Approach));
   constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
-  MotionCommand c;
-  switch (swarm.state[agent]) {
-    case AgentState::Go:
-    case AgentState::Approach:
-      c.velocity = swarm.heading[agent] * rules_.speed;
-      c.halt_on = kSearching | (rules_.join ? kWaiting : 0);
-      c.blocked_by = rules_.join ? kWaiting : 0;
-      break;
-    case AgentState::Wait:
-      // Waiting bodies are solid to each other, so a body engine cannot shove one through
-      // another and loosen the aggregate (kinematic waiting agents never move anyway).
-      c.blocked_by = kWaiting;
-      break;
-    case AgentState::Leave:
-      c.velocity = swarm.heading[agent] * rules_.speed;
-      c.blocked_by = kWaiting;
-      c.repelled_by = kWaiting;
-      break;
+  struct StateCommand {
+    std::uint64_t moving;  // all ones when the state moves along its heading
+    SignalMask halt_on, blocked_by, repelled_by;
+  };
+  const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
+  const SignalMask search_block = rules_.join ? kWaiting : 0;
+  constexpr std::uint64_t kMoves = ~std::uint64_t{0};
+  // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
+  // other, so a body engine cannot shove one through another and loosen the aggregate
+  // (kinematic waiting agents never move anyway).
+  const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
+                                               {0, 0, kWaiting, 0},
+                                               {kMoves, 0, kWaiting, kWaiting},
+                                               {kMoves, search_halt, search_block, 0}};
+  static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
+                static_cast<int>(AgentState::Leave) == 2 && static_cast<int>(AgentState::Approach) == 3);
+  const auto n = swarm.size();
+  const AgentState* state = swarm.state.data();
+  const Vec2* heading = swarm.heading.data();
+  MotionCommand* out = commands.data();
+  const double speed = rules_.speed;
+  for (std::size_t i = 0; i < n; ++i) {
+    const StateCommand& c = table[static_cast<std::uint8_t>(state[i]) & 3u];
+    const Vec2 v = heading[i] * speed;
+    // A standing agent's velocity is +0 exactly (masking, not multiplying by zero).
+    const Vec2 velocity{std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.x) & c.moving),
+                        std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.y) & c.moving)};
+    out[i] = MotionCommand{velocity, c.halt_on, c.blocked_by, c.repelled_by};
   }
-  return c;
+}
+
+// Index lists of the agents by the state they start the decision in, filled without
+// branches (each index is written to every list; only the matching list's end advances).
+void AggregationController::list_by_state(std::size_t n) {
+  for (IndexList* list : {&searchers_, &waiters_, &leavers_}) {
+    if (list->slots.size() != n) list->slots.resize(n);
+  }
+  std::size_t searching = 0, waiting = 0, leaving = 0;
+  const AgentState* previous = previous_.data();
+  std::uint32_t* s = searchers_.slots.data();
+  std::uint32_t* w = waiters_.slots.data();
+  std::uint32_t* l = leavers_.slots.data();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const AgentState state = previous[i];
+    s[searching] = w[waiting] = l[leaving] = i;
+    searching += (state == AgentState::Go) | (state == AgentState::Approach);
+    waiting += state == AgentState::Wait;
+    leaving += state == AgentState::Leave;
+  }
+  searchers_.count = searching;
+  waiters_.count = waiting;
+  leavers_.count = leaving;
+}
+
+// The searchers that joining left searching, in index order, without branches.
+void AggregationController::list_unsettled() {
+  if (unsettled_.slots.size() != searchers_.slots.size()) unsettled_.slots.resize(searchers_.slots.size());
+  std::size_t count = 0;
+  std::uint32_t* out = unsettled_.slots.data();
+  for (const std::uint32_t i : searchers_) {
+    out[count] = i;
+    count += settled_[i] == 0;
+  }
+  unsettled_.count = count;
 }
 
 void AggregationController::decide(const ControllerInput& input, SwarmState& swarm,
@@ -206,16 +248,19 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   settled_.assign(n, 0);
   leavers_left_.assign(input.aggregates.sizes().begin(), input.aggregates.sizes().end());
   turn_at_walls(input.reflections, swarm);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (previous_[i] == AgentState::Leave) update_leaving(i, input, swarm, rng);
-    if (previous_[i] != AgentState::Wait) continue;
+  list_by_state(n);
+  // Leaving and waiting agents decide from the previous states only, so each group can be
+  // walked on its own (in index order, as leave events are counted in that order).
+  for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
+  for (const std::uint32_t i : waiters_) {
     update_waiting(i, input, swarm, rng);
     if (swarm.state[i] == AgentState::Leave) count_leave(i, input, events);
   }
   join_waiting(input, swarm, events);
+  list_unsettled();
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
-  for (std::uint32_t i = 0; i < n; ++i) commands[i] = command_for(i, swarm);
+  write_commands(swarm, commands);
 }
 
 }  // namespace swarmagg

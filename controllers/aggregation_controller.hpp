@@ -23,6 +23,14 @@ class AggregationController final : public Controller {
               std::span<MotionCommand> commands, EventCounts& events) override;
 
  private:
+  // Agent indices, kept at full length so that refilling writes only what is used.
+  struct IndexList {
+    std::vector<std::uint32_t> slots;
+    std::size_t count = 0;
+    const std::uint32_t* begin() const { return slots.data(); }
+    const std::uint32_t* end() const { return slots.data() + count; }
+  };
+
   struct SearchPair {
     double distance;
     std::uint32_t a;
@@ -43,13 +51,21 @@ class AggregationController final : public Controller {
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);
   Vec2 escape_direction(std::uint32_t agent, const ControllerInput& input, Vec2 fallback) const;
-  MotionCommand command_for(std::uint32_t agent, const SwarmState& swarm) const;
+  void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
+  void list_by_state(std::size_t n);
+  void list_unsettled();
 
   AggregationRules rules_;
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
   std::vector<SearchPair> pairs_;
   std::vector<std::int32_t> leavers_left_;  // per aggregate: members not yet counted leaving
+  // Agents by the state they start the decision in (index order), and the searchers that
+  // did not join a waiting agent.
+  IndexList searchers_;
+  IndexList waiters_;
+  IndexList leavers_;
+  IndexList unsettled_;
 };
 
 }  // namespace swarmagg

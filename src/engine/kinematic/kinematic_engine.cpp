@@ -18,14 +18,28 @@ struct CommandSummary {
   bool guarded = false;  // some agent may halt (halt_on or blocked_by bits)
 };
 
+// Agents per move task below which waking another thread costs more than it saves.
+constexpr std::size_t kAgentsPerMoveTask = 65536;
+
+// Two running maxima (even and odd agents) keep two comparisons in flight; the maximum of
+// exact values does not depend on the order it is taken in.
 CommandSummary summarise(std::span<const MotionCommand> commands) {
-  double fastest2 = 0.0;
+  double even2 = 0.0, odd2 = 0.0;
   SignalMask guards = 0;
-  for (const MotionCommand& c : commands) {
-    fastest2 = std::max(fastest2, norm2(c.velocity));
-    guards |= c.halt_on | c.blocked_by;
+  const MotionCommand* c = commands.data();
+  const std::size_t n = commands.size();
+  std::size_t i = 0;
+  for (; i + 1 < n; i += 2) {
+    const double a = norm2(c[i].velocity), b = norm2(c[i + 1].velocity);
+    even2 = a > even2 ? a : even2;
+    odd2 = b > odd2 ? b : odd2;
+    guards |= c[i].halt_on | c[i].blocked_by | c[i + 1].halt_on | c[i + 1].blocked_by;
   }
-  return {std::sqrt(fastest2), guards != 0};
+  if (i < n) {
+    even2 = std::max(even2, norm2(c[i].velocity));
+    guards |= c[i].halt_on | c[i].blocked_by;
+  }
+  return {std::sqrt(std::max(even2, odd2)), guards != 0};
 }
 
 class KinematicEngine final : public Engine {
@@ -72,30 +86,43 @@ class KinematicEngine final : public Engine {
   // the pairs for the next step and what each agent perceives.
   void move_and_rebuild(std::span<const MotionCommand> commands, const double* stop_time,
                         double fastest) {
-    const SearchRadii radii = radii_for(std::max(nominal_speed_, fastest), true);
-    const double dt = limits_.dt;
-    if (stop_time == nullptr) {
-      auto move = [&](std::uint32_t i, Vec2 p) { return move_agent(i, p, commands[i].velocity * dt); };
-      search_.move_and_find(arena_, positions_, radii, threads_, move);
-    } else {
-      auto move = [&](std::uint32_t i, Vec2 p) {
-        return move_agent(i, p, commands[i].velocity * stop_time[i]);
-      };
-      search_.move_and_find(arena_, positions_, radii, threads_, move);
-    }
-    neighbours_.assign_from_pairs(positions_.size(), search_.close_pairs());
+    const std::size_t n = positions_.size();
+    const int tasks = static_cast<int>(
+        std::clamp<std::size_t>(n / kAgentsPerMoveTask, 1, static_cast<std::size_t>(threads_.size())));
+    auto move = [&](int task) {
+      const std::size_t first = StepThreads::slice_begin(n, task, tasks);
+      const std::size_t last = StepThreads::slice_begin(n, task + 1, tasks);
+      if (stop_time == nullptr) {
+        const double dt = limits_.dt;
+        move_range(commands, first, last, [dt](std::size_t) { return dt; });
+      } else {
+        move_range(commands, first, last, [stop_time](std::size_t i) { return stop_time[i]; });
+      }
+    };
+    threads_.run(tasks, move);
+    rebuild_neighbourhood(std::max(nominal_speed_, fastest), true);
   }
 
-  // Agent i, at p, moves by `step`: wrapped on a torus, reflected off walls.
-  Vec2 move_agent(std::uint32_t i, Vec2 p, Vec2 step) {
-    p += step;
+  // Plain loops over raw arrays (nothing the stores could alias), wrapping only the few
+  // agents that crossed an edge.
+  template <typename StopTime>
+  void move_range(std::span<const MotionCommand> commands, std::size_t first, std::size_t last,
+                  StopTime stop_time) {
+    Vec2* position = positions_.data();
+    const MotionCommand* command = commands.data();
     if (arena_.torus()) {
-      p = arena_.wrap(p);
-    } else {
-      reflections_[i] = reflect_off_walls(p);
+      const double width = arena_.width(), height = arena_.height();
+      for (std::size_t i = first; i < last; ++i) {
+        const Vec2 p = position[i] + command[i].velocity * stop_time(i);
+        const bool inside = (p.x >= 0.0) & (p.x < width) & (p.y >= 0.0) & (p.y < height);
+        position[i] = inside ? p : arena_.wrap(p);
+      }
+      return;
     }
-    positions_[i] = p;
-    return p;
+    for (std::size_t i = first; i < last; ++i) {
+      position[i] += command[i].velocity * stop_time(i);
+      reflections_[i] = reflect_off_walls(position[i]);
+    }
   }
 
   std::uint8_t reflect_off_walls(Vec2& p) const {

@@ -29,12 +29,6 @@ class NeighbourSearch {
   // Finds the pairs among agents at `positions` (by id).
   void find(const ArenaGeometry& arena, std::span<const Vec2> positions, const SearchRadii& radii,
             StepThreads& threads);
-  // Moves every agent, agent i to move(i, positions[i]) (which must also store the result
-  // in positions[i]), then finds the pairs. While agents keep to their sorted strips the
-  // move is done on the strips' copies, in sorted order, on several threads.
-  template <typename Move>
-  void move_and_find(const ArenaGeometry& arena, std::span<const Vec2> positions,
-                     const SearchRadii& radii, StepThreads& threads, Move& move);
 
   std::span<const CandidatePair> candidates() const { return candidates_; }
   std::span<const ClosePair> close_pairs() const { return close_; }
@@ -70,16 +64,5 @@ class NeighbourSearch {
   std::vector<CandidatePair> joined_candidates_;
   std::vector<ClosePair> joined_close_;
 };
-
-template <typename Move>
-void NeighbourSearch::move_and_find(const ArenaGeometry& arena, std::span<const Vec2> positions,
-                                    const SearchRadii& radii, StepThreads& threads, Move& move) {
-  const Plan p = plan(arena, positions.size(), radii);
-  if (p.strips && strips_.advance(arena, p.window, positions.size(), threads, move)) {
-    return scan(p, positions.size(), threads);
-  }
-  for (std::uint32_t i = 0; i < positions.size(); ++i) move(i, positions[i]);
-  find(arena, positions, radii, threads);
-}
 
 }  // namespace swarmagg

@@ -46,8 +46,7 @@ bool SortedStrips::same_layout(const ArenaGeometry& arena, double window, std::s
 
 void SortedStrips::update(const ArenaGeometry& arena, double window, std::span<const Vec2> positions,
                           StepThreads& threads) {
-  auto stay = [positions](std::uint32_t agent, Vec2) { return positions[agent]; };
-  if (advance(arena, window, positions.size(), threads, stay)) return;
+  if (same_layout(arena, window, positions.size())) return restrip(positions, threads);
   arena_ = arena;
   window_ = window;
   layout_ = layout_for(arena, window, positions.size());
@@ -60,6 +59,7 @@ void SortedStrips::sort_from_scratch(std::span<const Vec2> positions) {
   const std::size_t n = positions.size();
   const std::size_t cells = static_cast<std::size_t>(strips_) * layout_.blocks;
   const std::size_t slots = n + static_cast<std::size_t>(strips_);
+  const std::size_t padded = slots + kLookAhead;
   task_cursor_.resize(1);
   std::vector<std::uint32_t>& counts = task_cursor_[0];
   counts.assign(cells, 0);
@@ -70,9 +70,10 @@ void SortedStrips::sort_from_scratch(std::span<const Vec2> positions) {
   }
   prefix_counts(1);
   cell_begin_.swap(next_begin_);
-  x_.resize(slots);
-  y_.resize(slots);
-  id_.resize(slots);
+  // The padding after the last strip reads as sentinels.
+  x_.assign(padded, kInfinity);
+  y_.assign(padded, 0.0);
+  id_.assign(padded, kNoAgent);
   for (std::size_t i = 0; i < n; ++i) id_[counts[new_cell_[i]]++] = static_cast<std::uint32_t>(i);
   for (int s = 0; s < strips_; ++s) {
     auto first = id_.begin() + strip_first(s), last = id_.begin() + strip_sentinel(s);
@@ -116,23 +117,23 @@ void SortedStrips::close_strips() {
     const std::uint32_t sentinel = strip_sentinel(s);
     x_[sentinel] = kInfinity;
     y_[sentinel] = 0.0;
-    id_[sentinel] = std::numeric_limits<std::uint32_t>::max();
+    id_[sentinel] = kNoAgent;
   }
 }
 
 // A stable counting sort by cell in the previous slot order, in parallel over contiguous
-// strip ranges: each task counts its slots by destination cell (move_strips), and the
-// prefix over (cell, task) gives every task its own cursors, so the result is exactly the
-// sequential one. Then an insertion sort by x within strips.
-int SortedStrips::restrip_tasks(const StepThreads& threads) {
+// strip ranges: each task counts its slots by destination cell, and the prefix over (cell,
+// task) gives every task its own cursors, so the result is exactly the sequential one.
+// Then an insertion sort by x within strips.
+void SortedStrips::restrip(std::span<const Vec2> positions, StepThreads& threads) {
   const std::size_t cells = static_cast<std::size_t>(strips_) * layout_.blocks;
   const int tasks = tasks_for(agents_, strips_, threads);
   task_cursor_.resize(static_cast<std::size_t>(tasks));
   for (auto& cursor : task_cursor_) cursor.assign(cells, 0);
-  return tasks;
-}
-
-void SortedStrips::finish_restrip(int tasks, StepThreads& threads) {
+  auto gather = [&](int task) {
+    gather_strips(positions, task, first_strip(task, tasks), first_strip(task + 1, tasks));
+  };
+  threads.run(tasks, gather);
   prefix_counts(tasks);
   auto scatter = [&](int task) {
     scatter_strips(task, first_strip(task, tasks), first_strip(task + 1, tasks));
@@ -144,6 +145,36 @@ void SortedStrips::finish_restrip(int tasks, StepThreads& threads) {
     sort_strips_by_x(first_strip(task, tasks), first_strip(task + 1, tasks));
   };
   threads.run(tasks, sort);
+}
+
+// The agents are read in sorted order, so their positions (by id) are scattered in memory:
+// they are prefetched a little ahead (the padding after the last strip keeps the look-ahead
+// inside the arrays). The loops copy members into locals: stores through the arrays could
+// otherwise alias them (as far as the compiler knows) and force reloads.
+void SortedStrips::gather_strips(std::span<const Vec2> positions, int task, int first, int last) {
+  const Layout layout = layout_;
+  std::uint32_t* counts = task_cursor_[task].data();
+  const std::uint32_t* id = id_.data();
+  const Vec2* position = positions.data();
+  const auto last_agent = static_cast<std::uint32_t>(positions.size() - 1);
+  std::uint32_t* new_cell = new_cell_.data();
+  double* new_x = new_x_.data();
+  double* new_y = new_y_.data();
+  std::uint32_t* new_id = new_id_.data();
+  for (int s = first; s < last; ++s) {
+    const std::uint32_t begin = strip_first(s), end = strip_sentinel(s);
+    for (std::uint32_t k = begin; k < end; ++k) {
+      __builtin_prefetch(position + std::min(id[k + kLookAhead], last_agent));
+      const std::uint32_t agent = id[k];
+      const Vec2 p = position[agent];
+      const std::uint32_t cell = layout.cell_of(p);
+      new_cell[k] = cell;
+      new_x[k] = p.x;
+      new_y[k] = p.y;
+      new_id[k] = agent;
+      ++counts[cell];
+    }
+  }
 }
 
 void SortedStrips::scatter_strips(int task, int first, int last) {

@@ -5,11 +5,10 @@
 // agent with a handful of others, reading memory sequentially, with no empty cells to sweep.
 //
 // Each strip ends with a sentinel slot at x = +infinity, so the inner loops need no bound
-// check. Agents move little per step, so `advance` moves them in slot order (reading memory
-// sequentially) and re-sorts from the previous order: a stable counting sort by (strip,
-// block), blocks being x-intervals of a few agents each (an agent entering a strip lands
-// next to its place), then an insertion sort by x that has almost nothing left to do.
-// Keeping the order costs O(N) and allocates nothing after warm-up.
+// check. Agents move little per step, so `update` starts from the previous order: a stable
+// counting sort by (strip, block), blocks being x-intervals of a few agents each (an agent
+// entering a strip lands next to its place), then an insertion sort by x that has almost
+// nothing left to do. Keeping the order costs O(N) and allocates nothing after warm-up.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -24,6 +23,10 @@ namespace swarmagg {
 
 class SortedStrips {
  public:
+  static constexpr std::uint32_t kNoAgent = std::numeric_limits<std::uint32_t>::max();
+  // Slots after the last strip, read by look-ahead (as sentinels: x = infinity, no agent).
+  static constexpr std::uint32_t kLookAhead = 16;
+
   // Whether the arena is large enough for strips of `window`: at least three strips, and
   // three windows across, so that no pair is met twice around the torus.
   static bool fits(const ArenaGeometry& arena, double window);
@@ -32,12 +35,6 @@ class SortedStrips {
   // from the previous order when nothing but the positions changed.
   void update(const ArenaGeometry& arena, double window, std::span<const Vec2> positions,
               StepThreads& threads);
-  // Moves every agent, agent `id` at p to move(id, p), and re-sorts from the previous order.
-  // Returns false, having moved nobody, unless the arena, the window and the number of
-  // agents are those of the last sort. `move` may run on several threads at once.
-  template <typename Move>
-  bool advance(const ArenaGeometry& arena, double window, std::size_t agents, StepThreads& threads,
-               Move& move);
 
   // Calls visit(a, b) for every pair of slots whose agents lie within `window` of each
   // other (torus-aware), once: strips [first, last) scan themselves and the strip above.
@@ -65,13 +62,11 @@ class SortedStrips {
 
   bool same_layout(const ArenaGeometry& arena, double window, std::size_t agents) const;
   void sort_from_scratch(std::span<const Vec2> positions);
-  int restrip_tasks(const StepThreads& threads);
   int first_strip(int task, int tasks) const {
     return static_cast<int>(StepThreads::slice_begin(static_cast<std::size_t>(strips_), task, tasks));
   }
-  template <typename Move>
-  void move_strips(int task, int first, int last, Move& move);
-  void finish_restrip(int tasks, StepThreads& threads);
+  void restrip(std::span<const Vec2> positions, StepThreads& threads);
+  void gather_strips(std::span<const Vec2> positions, int task, int first, int last);
   void scatter_strips(int task, int first, int last);
   void prefix_counts(int tasks);
   void sort_strips_by_x(int first, int last);
@@ -112,48 +107,6 @@ inline std::uint32_t SortedStrips::Layout::cell_of(Vec2 p) const {
   return strip * static_cast<unsigned>(blocks) + block;
 }
 
-template <typename Move>
-bool SortedStrips::advance(const ArenaGeometry& arena, double window, std::size_t agents,
-                           StepThreads& threads, Move& move) {
-  if (!same_layout(arena, window, agents)) return false;
-  const int tasks = restrip_tasks(threads);
-  auto gather = [&](int task) {
-    move_strips(task, first_strip(task, tasks), first_strip(task + 1, tasks), move);
-  };
-  threads.run(tasks, gather);
-  finish_restrip(tasks, threads);
-  return true;
-}
-
-// Moves the agents of strips [first, last) and counts them by destination cell. The loop
-// copies members into locals: stores through the arrays could otherwise alias them (as far
-// as the compiler knows) and force a reload per agent.
-template <typename Move>
-void SortedStrips::move_strips(int task, int first, int last, Move& move) {
-  const Layout layout = layout_;
-  std::uint32_t* counts = task_cursor_[task].data();
-  const double* x = x_.data();
-  const double* y = y_.data();
-  const std::uint32_t* id = id_.data();
-  std::uint32_t* new_cell = new_cell_.data();
-  double* new_x = new_x_.data();
-  double* new_y = new_y_.data();
-  std::uint32_t* new_id = new_id_.data();
-  for (int s = first; s < last; ++s) {
-    const std::uint32_t begin = strip_first(s), end = strip_sentinel(s);
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t agent = id[k];
-      const Vec2 p = move(agent, Vec2{x[k], y[k]});
-      const std::uint32_t cell = layout.cell_of(p);
-      new_cell[k] = cell;
-      new_x[k] = p.x;
-      new_y[k] = p.y;
-      new_id[k] = agent;
-      ++counts[cell];
-    }
-  }
-}
-
 template <typename Visit>
 void SortedStrips::for_each_candidate(int first, int last, Visit&& visit) const {
   for (int s = first; s < last; ++s) scan_strip(s, visit);
@@ -187,9 +140,10 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
     }
     // The strip above, within [xa - window, xa + window]; `low` only moves forward. (Without
     // a strip above, `low` rests on this strip's sentinel and the loops do nothing.)
-    // Two steps without branches cover most agents (the strip above holds about as many
+    // Three steps without branches cover most agents (the strip above holds about as many
     // agents as this one), which spares a mispredicted loop exit per agent.
     const double ya_below = ya - shift_y, from = xa - window;
+    low += x[low] < from;
     low += x[low] < from;
     low += x[low] < from;
     while (x[low] < from) ++low;
