@@ -28,21 +28,44 @@ WorldSpec bench_world(int n, BenchScenario scenario) {
   return spec;
 }
 
-KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, std::int64_t steps,
-                                     int repeats, int threads) {
+namespace {
+
+struct BenchPlan {
+  std::int64_t warmup_steps = 0;
+  std::int64_t steps = 0;
+  int replicates = 1;
+};
+
+BenchPlan plan_for(int n, BenchScenario scenario, double budget) {
+  if (scenario == BenchScenario::GhostWorstCase) {
+    return {20, std::max<std::int64_t>(10, std::llround(budget / n)), 1};
+  }
+  constexpr std::int64_t kWindow = 50;
+  const double replicates = std::round(budget / 3.0 / (static_cast<double>(n) * kWindow));
+  return {200, kWindow, static_cast<int>(std::max(1.0, replicates))};
+}
+
+}  // namespace
+
+KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budget, int repeats,
+                                     int threads) {
   const WorldSpec spec = bench_world(n, scenario);
+  const BenchPlan plan = plan_for(n, scenario, budget);
   double best = 0.0;
   for (int r = 0; r < repeats; ++r) {
-    Replicate replicate(spec, r);
-    replicate.set_threads(threads);
-    for (int k = 0; k < 20; ++k) replicate.step();
-    const auto start = std::chrono::steady_clock::now();
-    for (std::int64_t k = 0; k < steps; ++k) replicate.step();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    best = std::max(best, static_cast<double>(n) * static_cast<double>(steps) / seconds);
+    double seconds = 0.0;
+    for (int k = 0; k < plan.replicates; ++k) {
+      Replicate replicate(spec, r * plan.replicates + k);
+      replicate.set_threads(threads);
+      for (std::int64_t step = 0; step < plan.warmup_steps; ++step) replicate.step();
+      const auto start = std::chrono::steady_clock::now();
+      for (std::int64_t step = 0; step < plan.steps; ++step) replicate.step();
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const double agent_steps = static_cast<double>(n) * static_cast<double>(plan.steps) * plan.replicates;
+    best = std::max(best, agent_steps / seconds);
   }
-  return {n, steps, best, best / n * spec.engine.dt};
+  return {n, plan.warmup_steps, plan.steps, plan.replicates, best, best / n * spec.engine.dt};
 }
 
 }  // namespace swarmagg

@@ -16,23 +16,23 @@ struct BenchOptions {
   bool quick = false;
 };
 
-// Steps so each size costs about the same number of agent-steps.
-std::int64_t steps_for(int n, bool quick) {
-  const double budget = quick ? 2e6 : 3e7;
-  return std::max<std::int64_t>(10, static_cast<std::int64_t>(budget / n));
-}
+// Agent-steps timed per size and repeat, so every size costs about the same.
+double budget_for(bool quick) { return quick ? 2e6 : 3e7; }
 
 nlohmann::json kinematic_series(BenchScenario scenario, bool quick, bool verbose) {
   nlohmann::json series = nlohmann::json::array();
   for (int n : {1000, 10000, 100000, 1000000}) {
-    const auto r = bench_kinematic(n, scenario, steps_for(n, quick), quick ? 1 : 3);
+    const auto r = bench_kinematic(n, scenario, budget_for(quick), quick ? 1 : 3);
     series.push_back({{"n", r.n},
+                      {"warmup_steps", r.warmup_steps},
                       {"steps", r.steps},
+                      {"replicates", r.replicates},
+                      {"ns_per_agent_step", 1e9 / r.agent_steps_per_s},
                       {"agent_steps_per_s", r.agent_steps_per_s},
                       {"real_time_factor", r.real_time_factor}});
     if (verbose) {
-      std::fprintf(stderr, "  n = %7d: %6.2f M agent-steps/s, %8.1f x real time\n", n,
-                   r.agent_steps_per_s / 1e6, r.real_time_factor);
+      std::fprintf(stderr, "  n = %7d: %6.2f M agent-steps/s (%5.1f ns each), %8.1f x real time\n",
+                   n, r.agent_steps_per_s / 1e6, 1e9 / r.agent_steps_per_s, r.real_time_factor);
     }
   }
   return series;
@@ -41,7 +41,7 @@ nlohmann::json kinematic_series(BenchScenario scenario, bool quick, bool verbose
 nlohmann::json box2d_series(bool quick, bool verbose) {
   nlohmann::json series = nlohmann::json::array();
   for (int n : {100, 1000, 10000}) {
-    const auto r = bench_box2d(n, static_cast<int>(steps_for(n, quick) / 10), quick ? 1 : 3);
+    const auto r = bench_box2d(n, static_cast<int>(budget_for(quick) / 10 / n), quick ? 1 : 3);
     series.push_back({{"n", r.n},
                       {"body_steps_per_s", r.body_steps_per_s},
                       {"bare_box2d_body_steps_per_s", r.bare_box2d_body_steps_per_s},

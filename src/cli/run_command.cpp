@@ -1,5 +1,6 @@
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
@@ -49,6 +50,7 @@ void print_summary(const WorldSpec& spec, const RunResult& result, const std::fi
   for (const ReplicateOutcome& r : result.replicates) noa += r.rows.back().noa;
   std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
             << " steps in " << result.wall_seconds << " s on " << result.threads
+            << (result.step_threads > 1 ? " x " + std::to_string(result.step_threads) : std::string())
             << " threads; mean final NOA " << noa / spec.run.replicates << "\n"
             << "outputs in " << out.string() << "/\n";
 }

@@ -117,6 +117,14 @@ struct WorldSpec {
                ? std::max(robots.detection_radius, controller.approach_radius)
                : robots.detection_radius;
   }
+  // How far agents perceive one another: 0 when the controller reads no neighbours (ghost
+  // collisions only count encounters, which the engine detects), so that an engine need not
+  // build lists nobody reads.
+  double perception_radius() const {
+    const bool ghost = controller.type == ControllerType::Collision &&
+                       controller.collision_mode == CollisionMode::Ghost;
+    return ghost ? 0.0 : sensing_radius();
+  }
 };
 
 }  // namespace swarmagg

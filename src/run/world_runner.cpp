@@ -42,17 +42,20 @@ void report_progress(const WorldSpec& spec, std::int64_t total, Clock::time_poin
 
 }  // namespace
 
-int effective_threads(const WorldSpec& spec, int requested) {
+ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
   int threads = requested > 0 ? requested : spec.run.threads;
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::clamp(threads, 1, spec.run.replicates);
+  threads = std::max(threads, 1);
+  const int at_once = std::clamp(threads, 1, spec.run.replicates);
+  return {at_once, std::max(1, threads / at_once)};
 }
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check) {
+                               bool check, int step_threads) {
   const auto start = Clock::now();
   Replicate replicate(spec, index);
   if (check) replicate.set_checking(true);
+  replicate.set_threads(step_threads);
   ReplicateOutcome outcome;
   outcome.index = index;
   outcome.seed = replicate.seed();
@@ -85,7 +88,9 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
 RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
   const auto start = Clock::now();
   RunResult result;
-  result.threads = effective_threads(spec, options.threads);
+  const ThreadPlan plan = plan_threads(spec, options.threads);
+  result.threads = plan.replicates_at_once;
+  result.step_threads = plan.step_threads;
   result.replicates.resize(static_cast<std::size_t>(spec.run.replicates));
   steps_done_total.store(0);
   std::atomic<int> next{0};
@@ -97,7 +102,7 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
       try {
         auto observer = options.observers ? options.observers(index) : nullptr;
         result.replicates[static_cast<std::size_t>(index)] =
-            run_replicate(spec, index, observer.get(), options.check);
+            run_replicate(spec, index, observer.get(), options.check, plan.step_threads);
       } catch (...) {
         std::lock_guard lock(failure_mutex);
         if (!failure) failure = std::current_exception();

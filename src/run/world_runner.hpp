@@ -25,7 +25,8 @@ struct ReplicateOutcome {
 struct RunResult {
   std::vector<ReplicateOutcome> replicates;
   double wall_seconds = 0.0;
-  int threads = 1;
+  int threads = 1;       // replicates run at once
+  int step_threads = 1;  // threads inside each replicate's step
 };
 
 struct RunOptions {
@@ -35,11 +36,17 @@ struct RunOptions {
   ObserverFactory observers;
 };
 
-// The thread count a run uses for `replicates` replicates.
-int effective_threads(const WorldSpec& spec, int requested);
+// The threads a run uses: `requested`, else the world's run.threads, else the machine's
+// cores. Replicates run in parallel first; threads beyond one per replicate go inside the
+// replicates' steps (a single large world then uses them all). Results do not depend on it.
+struct ThreadPlan {
+  int replicates_at_once = 1;
+  int step_threads = 1;
+};
+ThreadPlan plan_threads(const WorldSpec& spec, int requested);
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check = false);
+                               bool check = false, int step_threads = 1);
 RunResult run_world(const WorldSpec& spec, const RunOptions& options);
 
 }  // namespace swarmagg

@@ -49,6 +49,35 @@ TEST(WorldRunner, ThreadCountDoesNotChangeTheOutput) {
   EXPECT_EQ(csv_of(one), csv_of(two));
 }
 
+TEST(WorldRunner, ThreadsBeyondTheReplicatesGoIntoTheSteps) {
+  WorldSpec spec = full_model_world();
+  spec.run.replicates = 1;
+  EXPECT_EQ(plan_threads(spec, 4).replicates_at_once, 1);
+  EXPECT_EQ(plan_threads(spec, 4).step_threads, 4);
+  spec.run.replicates = 2;
+  EXPECT_EQ(plan_threads(spec, 5).replicates_at_once, 2);
+  EXPECT_EQ(plan_threads(spec, 5).step_threads, 2);
+  spec.run.replicates = 10;
+  EXPECT_EQ(plan_threads(spec, 3).replicates_at_once, 3);
+  EXPECT_EQ(plan_threads(spec, 3).step_threads, 1);
+  spec.run.threads = 2;
+  EXPECT_EQ(plan_threads(spec, 0).replicates_at_once, 2) << "0 falls back to run.threads";
+}
+
+// One large replicate: `--threads` splits its steps, and the output stays the same.
+TEST(WorldRunner, OneLargeReplicateGivesTheSameOutputOnSeveralThreads) {
+  WorldSpec spec = full_model_world();
+  spec.robots.count = 40000;
+  spec.arena.width = spec.arena.height = 2000.0;
+  spec.run.replicates = 1;
+  spec.run.duration = 3.0;
+  spec.run.record_every = 1;
+  const RunResult one = run_with_threads(spec, 1);
+  const RunResult three = run_with_threads(spec, 3);
+  EXPECT_EQ(three.step_threads, 3);
+  EXPECT_EQ(csv_of(one), csv_of(three));
+}
+
 TEST(WorldRunner, AnotherSeedGivesAnotherRun) {
   WorldSpec spec = full_model_world();
   const std::string first = csv_of(run_with_threads(spec, 2));

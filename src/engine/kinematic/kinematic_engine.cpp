@@ -50,10 +50,12 @@ class KinematicEngine final : public Engine {
         limits_{spec.robots.detection_radius * (1.0 - 1e-9), 2.0 * spec.robots.radius,
                 spec.engine.dt},
         body_radius_(spec.robots.radius),
-        sensing_radius_(spec.sensing_radius()),
+        sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
         positions_(initial_positions.begin(), initial_positions.end()),
         reflections_(positions_.size(), 0) {
+    // Without perception every agent's list stays empty.
+    neighbours_.reset(positions_.size());
     rebuild_neighbourhood(nominal_speed_, true);
   }
 
@@ -156,6 +158,7 @@ class KinematicEngine final : public Engine {
   }
 
   void rebuild_neighbourhood(double speed, bool perception) {
+    perception = perception && sensing_radius_ > 0.0;
     search_.find(arena_, positions_, radii_for(speed, perception), threads_);
     if (perception) neighbours_.assign_from_pairs(positions_.size(), search_.close_pairs());
   }
