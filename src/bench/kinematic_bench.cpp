@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "config/world_loader.hpp"
+#include "core/thread_clock.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
@@ -45,6 +46,13 @@ BenchPlan plan_for(int n, BenchScenario scenario, double budget) {
   return {200, kWindow, static_cast<int>(std::max(1.0, replicates))};
 }
 
+// One thread is timed by its own CPU time, so that other processes on the machine do not
+// count; several threads by the wall clock.
+double now(int threads) {
+  if (threads == 1) return thread_cpu_seconds();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
 KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budget, int repeats,
@@ -58,9 +66,9 @@ KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budge
       Replicate replicate(spec, r * plan.replicates + k);
       replicate.set_threads(threads);
       for (std::int64_t step = 0; step < plan.warmup_steps; ++step) replicate.step();
-      const auto start = std::chrono::steady_clock::now();
+      const double start = now(threads);
       for (std::int64_t step = 0; step < plan.steps; ++step) replicate.step();
-      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      seconds += now(threads) - start;
     }
     const double agent_steps = static_cast<double>(n) * static_cast<double>(plan.steps) * plan.replicates;
     best = std::max(best, agent_steps / seconds);

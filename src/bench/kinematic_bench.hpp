@@ -2,7 +2,8 @@
 // Throughput of the kinematic engine with its controllers, as `swarmagg bench` reports it.
 // Method: N agents at the paper's density (150 per 180 x 180, the square arena scaled with
 // N), s = 4, r = 1, v = 1, dt = 0.1, one replicate on one thread unless asked otherwise.
-// The replicates are built and warmed up outside the clock; then the whole step (controller,
+// The replicates are built and warmed up outside the clock (the thread's CPU time with one
+// thread, the wall clock with more); then the whole step (controller,
 // engine, aggregates) is timed; the best of `repeats` runs is kept. Scenarios:
 //  - the worst case, collision controller in ghost mode: every agent moves every step and
 //    every encounter is resolved. Its statistics do not change with time, so one replicate

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <vector>
 
 #include "config/world_spec.hpp"
 #include "core/rng.hpp"
+#include "core/thread_clock.hpp"
 #include "engine/box2d/box2d_engine.hpp"
 #include "engine/box2d/fixture_tags.hpp"
 
@@ -67,18 +67,11 @@ Scene make_scene(int n) {
   return scene;
 }
 
-// CPU time of the calling thread: on a shared machine, time spent descheduled is not ours.
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 template <typename F>
 double seconds(F&& run) {
-  const double t0 = thread_seconds();
+  const double t0 = thread_cpu_seconds();
   run();
-  return thread_seconds() - t0;
+  return thread_cpu_seconds() - t0;
 }
 
 double time_ours(const Scene& scene, int steps, bool solid) {
