@@ -253,6 +253,9 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   const auto n = static_cast<std::uint32_t>(swarm.size());
   previous_.assign(swarm.state.begin(), swarm.state.end());
   settled_.assign(n, 0);
+  // assign() reallocates to the exact size whenever it grows, which is every step while
+  // aggregates form; room for the most there can be (two members each) is reserved once.
+  if (leavers_left_.capacity() < n / 2) leavers_left_.reserve(n / 2);
   leavers_left_.assign(input.aggregates.sizes().begin(), input.aggregates.sizes().end());
   turn_at_walls(input.reflections, swarm);
   list_by_state(n);
