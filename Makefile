@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SWARMAGG := $(BUILD_DIR)/swarmagg
 
-.PHONY: deps configure build demo test bench clean fuzz test-sanitize
+.PHONY: deps configure build demo test bench microbench clean fuzz test-sanitize
 
 deps:
 	@scripts/install-deps.sh
@@ -36,6 +36,11 @@ fuzz: deps
 
 bench: build
 	@$(SWARMAGG) bench
+
+# Google Benchmark micro-benchmarks of the kinematic hot path (bench/), one per stage.
+MICROBENCHES := neighbours encounters aggregates controller
+microbench: build
+	@for b in $(MICROBENCHES); do $(BUILD_DIR)/bench/bench_$$b || exit 1; done
 
 clean:
 	@rm -rf $(BUILD_DIR)

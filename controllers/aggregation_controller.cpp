@@ -50,6 +50,13 @@ void AggregationController::update_leaving(std::uint32_t agent, const Controller
 
 void AggregationController::update_waiting(std::uint32_t agent, const ControllerInput& input,
                                            SwarmState& swarm, const CounterRng& rng) {
+  // A pair dissolves when a partner stops waiting (SPEC 3, 4): a waiting agent that stays
+  // (isolated_wait: stay) must not keep the link, or the partner's next pair would be linked
+  // to it too, making one aggregate of three under join: false.
+  const std::int32_t partner = swarm.partner[agent];
+  if (partner != kNoPartner && previous_[partner] != AgentState::Wait) {
+    swarm.partner[agent] = kNoPartner;
+  }
   if (rules_.resume_when_isolated && isolated(agent, input, swarm)) {
     swarm.state[agent] = AgentState::Go;
     swarm.partner[agent] = kNoPartner;
@@ -246,6 +253,9 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   const auto n = static_cast<std::uint32_t>(swarm.size());
   previous_.assign(swarm.state.begin(), swarm.state.end());
   settled_.assign(n, 0);
+  // assign() reallocates to the exact size whenever it grows, which is every step while
+  // aggregates form; room for the most there can be (two members each) is reserved once.
+  if (leavers_left_.capacity() < n / 2) leavers_left_.reserve(n / 2);
   leavers_left_.assign(input.aggregates.sizes().begin(), input.aggregates.sizes().end());
   turn_at_walls(input.reflections, swarm);
   list_by_state(n);

@@ -54,6 +54,9 @@ void AggregateTracker::label_components(std::size_t n, std::span<const std::uint
   if (aggregate_of_.size() != n) {
     aggregate_of_.assign(n, -1);
     size_of_agent_.assign(n, 0);
+    // Their bounds (every agent labelled, aggregates of two), so no step ever grows them.
+    labelled_.reserve(n);
+    sizes_.reserve(n / 2);
   } else {
     for (const std::uint32_t i : labelled_) {
       aggregate_of_[i] = -1;

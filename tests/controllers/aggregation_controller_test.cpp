@@ -178,6 +178,31 @@ TEST(BayindirController, WithoutJoiningAWaitingAgentResumesWhenItsPartnerLeft) {
   EXPECT_EQ(f.swarm.state[c], AgentState::Go);  // c has no partner either
 }
 
+// isolated_wait: stay (issue 10): the pair dissolved when the partner left, so the agent
+// that stays waits alone. A link kept to the old partner would join it to the partner's next
+// pair: one aggregate of three under join: false, whose later leavers count as shrinks.
+TEST(BayindirController, WithoutJoiningAStayingAgentDropsAPartnerWhoLeft) {
+  WorldSpec spec = bayindir(false, true, 0.0);
+  spec.controller.isolated_wait = IsolatedWait::Stay;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Leave);  // a's partner, its timeout nearly over
+  const auto c = f.add(13, 13, AgentState::Go);      // b's next partner
+  f.swarm.partner[a] = static_cast<std::int32_t>(b);
+  f.swarm.leave_time_left[b] = 0.1;
+  f.decide();  // b searches again; c ignores the waiting a and the leaving b
+  EXPECT_EQ(f.swarm.state[b], AgentState::Go);
+  f.decide();  // b and c form a pair
+  ASSERT_EQ(f.swarm.state[b], AgentState::Wait);
+  ASSERT_EQ(f.swarm.partner[c], static_cast<std::int32_t>(b));
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.swarm.partner[a], kNoPartner);
+  f.perceive();
+  EXPECT_EQ(f.aggregates.count(), 1);
+  EXPECT_EQ(f.aggregates.aggregate_of()[a], -1);
+  EXPECT_EQ(f.aggregates.size_of_agent()[b], 2);
+}
+
 WorldSpec soysal() {
   WorldSpec spec;
   spec.controller.type = ControllerType::Soysal;

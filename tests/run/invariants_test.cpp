@@ -321,10 +321,10 @@ TEST(InvariantsInRuns, CreationAndDissipationWithPartners) {
   expect_run_keeps_invariants({"controller.join=false", "controller.p_leave=0.01"}, 3000);
 }
 
-// Fails (issue 10 report): under isolated_wait: stay a waiting agent keeps its partner after
-// that partner left; when the partner pairs again, partner links join three agents into one
-// aggregate (step 149 here) and a later leave counts as a shrink. Enable once fixed.
-TEST(InvariantsInRuns, DISABLED_CreationAndDissipationWithPartnersWhoStay) {
+// Issue 10: under isolated_wait: stay a waiting agent once kept its partner after that
+// partner left; when the partner paired again, partner links joined three agents into one
+// aggregate (step 149 here) and a later leave counted as a shrink.
+TEST(InvariantsInRuns, CreationAndDissipationWithPartnersWhoStay) {
   expect_run_keeps_invariants(
       {"controller.join=false", "controller.p_leave=0.01", "controller.isolated_wait=stay"}, 3000);
 }

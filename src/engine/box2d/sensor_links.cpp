@@ -15,11 +15,18 @@ std::vector<SensorLink>::iterator find_link(std::vector<SensorLink>& links, Agen
                       [other](const SensorLink& l) { return l.other == other; });
 }
 
+// Links an agent usually has at once: reserved up front, so that the first few neighbours
+// of every agent do not each grow its vector during the run (it still grows beyond this).
+constexpr std::size_t kTypicalLinks = 8;
+
 }  // namespace
 
 void SensorLinks::reset(std::size_t agent_count) {
   links_.resize(agent_count);
-  for (auto& links : links_) links.clear();
+  for (auto& links : links_) {
+    links.clear();
+    links.reserve(kTypicalLinks);
+  }
 }
 
 SensorLink& SensorLinks::find_or_add(AgentId a, AgentId b) {

@@ -79,6 +79,15 @@ void NeighbourSearch::join_tasks(int tasks) {
   }
   joined_candidates_.clear();
   joined_close_.clear();
+  // Inserting the tasks' halves one by one grows the joined buffers to barely the total,
+  // so a growing pair count would reallocate them every step: reserve with headroom.
+  std::size_t candidates = 0, close = 0;
+  for (int task = 0; task < tasks; ++task) {
+    candidates += found_[static_cast<std::size_t>(task)].candidates.size();
+    close += found_[static_cast<std::size_t>(task)].close.size();
+  }
+  if (candidates > joined_candidates_.capacity()) joined_candidates_.reserve(2 * candidates);
+  if (close > joined_close_.capacity()) joined_close_.reserve(2 * close);
   for (int task = 0; task < tasks; ++task) {
     const Found& f = found_[static_cast<std::size_t>(task)];
     joined_candidates_.insert(joined_candidates_.end(), f.candidates.begin(), f.candidates.end());
