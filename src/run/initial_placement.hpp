@@ -2,6 +2,7 @@
 // Initial positions and headings of one replicate: the world's explicit placement, or
 // uniform random positions without body overlap (detection discs may overlap, as in the
 // paper) and uniform random headings, all drawn from the replicate's generator.
+// Random placements of 4096 agents or more number the agents in spatial order (see the .cpp).
 #include <vector>
 
 #include "config/world_spec.hpp"

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -114,6 +115,38 @@ TEST(InitialPlacement, RandomBodiesNeverOverlap) {
     for (std::size_t j = i + 1; j < placed.positions.size(); ++j) {
       ASSERT_GE(arena.distance(placed.positions[i], placed.positions[j]), 2.0);
     }
+  }
+}
+
+// Large swarms are numbered along bands of the arena (two detection radii high, by x within
+// a band), so that agents near each other have nearby ids; small ones keep the draw order.
+bool numbered_by_space(const std::vector<Vec2>& positions, double band) {
+  for (std::size_t i = 1; i < positions.size(); ++i) {
+    const double previous_band = std::floor(positions[i - 1].y / band);
+    const double this_band = std::floor(positions[i].y / band);
+    if (this_band < previous_band) return false;
+    if (this_band == previous_band && positions[i].x < positions[i - 1].x) return false;
+  }
+  return true;
+}
+
+TEST(InitialPlacement, LargeSwarmsAreNumberedAlongSpaceSmallOnesByDraw) {
+  WorldSpec large = load_world_text("arena: {width: 1000, height: 1000}\nrobots: {count: 5000}\n", "t");
+  const InitialPlacement placed = place_agents(large, CounterRng::for_replicate(1, 0));
+  ASSERT_EQ(placed.positions.size(), 5000u);
+  EXPECT_TRUE(numbered_by_space(placed.positions, 2.0 * large.robots.detection_radius));
+  WorldSpec small = large;
+  small.robots.count = 4000;
+  const InitialPlacement drawn = place_agents(small, CounterRng::for_replicate(1, 0));
+  EXPECT_FALSE(numbered_by_space(drawn.positions, 2.0 * small.robots.detection_radius));
+  // The numbering only permutes: the first 4000 draws are the same positions either way
+  // (both runs draw agent i's position from the same counter), so every small-swarm
+  // position appears in the large swarm.
+  std::vector<Vec2> sorted_large = placed.positions;
+  auto by_xy = [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  std::sort(sorted_large.begin(), sorted_large.end(), by_xy);
+  for (const Vec2& p : drawn.positions) {
+    EXPECT_TRUE(std::binary_search(sorted_large.begin(), sorted_large.end(), p, by_xy));
   }
 }
 
