@@ -67,7 +67,8 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
   const LeaveRule& rule = rules_.leave_rule;
   const int size = input.aggregates.size_of_agent()[agent];
-  const bool counts_neighbours = rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
+  const bool counts_neighbours =
+      rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
   const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
   if (u >= leave_probability(rule, size, perceived)) return;
   swarm.state[agent] = AgentState::Leave;
@@ -109,7 +110,8 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
   for (const std::uint32_t i : unsettled_) {
     for (const Neighbour& nb : input.neighbours.of(i)) {
       if (nb.distance > rules_.detection_radius) break;
-      if (nb.id > i && searching(nb.id) && !settled_[nb.id]) pairs_.push_back({nb.distance, i, nb.id});
+      if (nb.id > i && searching(nb.id) && !settled_[nb.id])
+        pairs_.push_back({nb.distance, i, nb.id});
     }
   }
   std::sort(pairs_.begin(), pairs_.end(), [](const SearchPair& x, const SearchPair& y) {
@@ -178,8 +180,8 @@ Vec2 AggregationController::escape_direction(std::uint32_t agent, const Controll
 // indices are unrelated, so a switch mispredicts about every other agent.
 void AggregationController::write_commands(const SwarmState& swarm,
                                            std::span<MotionCommand> commands) const {
-  constexpr SignalMask kSearching =
-      mask_of(static_cast<Signal>(AgentState::Go)) | mask_of(static_cast<Signal>(AgentState::Approach));
+  constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
+                                    mask_of(static_cast<Signal>(AgentState::Approach));
   constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
   struct StateCommand {
     std::uint64_t moving;  // all ones when the state moves along its heading
@@ -192,11 +194,12 @@ void AggregationController::write_commands(const SwarmState& swarm,
   // other, so a body engine cannot shove one through another and loosen the aggregate
   // (kinematic waiting agents never move anyway).
   const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
-                                               {0, 0, kWaiting, 0},
-                                               {kMoves, 0, kWaiting, kWaiting},
-                                               {kMoves, search_halt, search_block, 0}};
+                                                {0, 0, kWaiting, 0},
+                                                {kMoves, 0, kWaiting, kWaiting},
+                                                {kMoves, search_halt, search_block, 0}};
   static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
-                static_cast<int>(AgentState::Leave) == 2 && static_cast<int>(AgentState::Approach) == 3);
+                static_cast<int>(AgentState::Leave) == 2 &&
+                static_cast<int>(AgentState::Approach) == 3);
   const auto n = swarm.size();
   const AgentState* state = swarm.state.data();
   const Vec2* heading = swarm.heading.data();
@@ -237,7 +240,8 @@ void AggregationController::list_by_state(std::size_t n) {
 
 // The searchers that joining left searching, in index order, without branches.
 void AggregationController::list_unsettled() {
-  if (unsettled_.slots.size() != searchers_.slots.size()) unsettled_.slots.resize(searchers_.slots.size());
+  if (unsettled_.slots.size() != searchers_.slots.size())
+    unsettled_.slots.resize(searchers_.slots.size());
   std::size_t count = 0;
   std::uint32_t* out = unsettled_.slots.data();
   for (const std::uint32_t i : searchers_) {

@@ -2,9 +2,8 @@
 
 namespace swarmagg {
 
-void GhostController::decide(const ControllerInput& input, SwarmState& swarm,
-                             const CounterRng& rng, std::span<MotionCommand> commands,
-                             EventCounts& /*events*/) {
+void GhostController::decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
+                             std::span<MotionCommand> commands, EventCounts& /*events*/) {
   turn_at_walls(input.reflections, swarm);
   const auto n = static_cast<std::uint32_t>(swarm.size());
   if (tumble_ > 0.0) {

@@ -70,7 +70,8 @@ KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budge
       for (std::int64_t step = 0; step < plan.steps; ++step) replicate.step();
       seconds += now(threads) - start;
     }
-    const double agent_steps = static_cast<double>(n) * static_cast<double>(plan.steps) * plan.replicates;
+    const double agent_steps =
+        static_cast<double>(n) * static_cast<double>(plan.steps) * plan.replicates;
     best = std::max(best, agent_steps / seconds);
   }
   return {n, plan.warmup_steps, plan.steps, plan.replicates, best, best / n * spec.engine.dt};

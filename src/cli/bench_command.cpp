@@ -17,7 +17,9 @@ struct BenchOptions {
 };
 
 // Agent-steps timed per size and repeat, so every size costs about the same.
-double budget_for(bool quick) { return quick ? 2e6 : 3e7; }
+double budget_for(bool quick) {
+  return quick ? 2e6 : 3e7;
+}
 
 nlohmann::json kinematic_series(BenchScenario scenario, bool quick, bool verbose) {
   nlohmann::json series = nlohmann::json::array();
@@ -47,9 +49,8 @@ nlohmann::json box2d_series(bool quick, bool verbose) {
                       {"bare_box2d_body_steps_per_s", r.bare_box2d_body_steps_per_s},
                       {"real_time_factor", r.body_steps_per_s / n * 0.1}});
     if (verbose) {
-      std::fprintf(stderr, "  n = %5d: %6.3f M body-steps/s (bare Box2D %6.3f M, ratio %.2f)\n",
-                   n, r.body_steps_per_s / 1e6, r.bare_box2d_body_steps_per_s / 1e6,
-                   r.overhead());
+      std::fprintf(stderr, "  n = %5d: %6.3f M body-steps/s (bare Box2D %6.3f M, ratio %.2f)\n", n,
+                   r.body_steps_per_s / 1e6, r.bare_box2d_body_steps_per_s / 1e6, r.overhead());
     }
   }
   return series;
@@ -61,7 +62,8 @@ int bench_command(const BenchOptions& options) {
   if (verbose) std::fprintf(stderr, "kinematic, worst case (ghost collisions), one thread:\n");
   report["kinematic"] = kinematic_series(BenchScenario::GhostWorstCase, options.quick, verbose);
   if (verbose) std::fprintf(stderr, "kinematic, Bayindir full model p = 0.001, one thread:\n");
-  report["kinematic_bayindir"] = kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
+  report["kinematic_bayindir"] =
+      kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
   if (verbose) std::fprintf(stderr, "box2d engine vs bare Box2D:\n");
   report["box2d"] = box2d_series(options.quick, verbose);
   report["render_ms_per_frame"] = render_ms_per_frame(1000, 800, 800, options.quick ? 5 : 30);

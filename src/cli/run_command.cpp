@@ -6,9 +6,9 @@
 #include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
 #include "core/errors.hpp"
+#include "models/predictions.hpp"
 #include "render/render_size.hpp"
 #include "render/video.hpp"
-#include "models/predictions.hpp"
 #include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
@@ -33,7 +33,8 @@ struct RunCommandOptions {
 
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
-  if (options.render_every) world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
+  if (options.render_every)
+    world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
   if (options.render_size) {
     const RenderSize size = parse_render_size(*options.render_size);
     world.overrides.push_back("render.width=" + std::to_string(size.width));
@@ -45,12 +46,14 @@ void add_render_overrides(const RunCommandOptions& options, WorldOptions& world)
   }
 }
 
-void print_summary(const WorldSpec& spec, const RunResult& result, const std::filesystem::path& out) {
+void print_summary(const WorldSpec& spec, const RunResult& result,
+                   const std::filesystem::path& out) {
   double noa = 0.0;
   for (const ReplicateOutcome& r : result.replicates) noa += r.rows.back().noa;
   std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
             << " steps in " << result.wall_seconds << " s on " << result.threads
-            << (result.step_threads > 1 ? " x " + std::to_string(result.step_threads) : std::string())
+            << (result.step_threads > 1 ? " x " + std::to_string(result.step_threads)
+                                        : std::string())
             << " threads; mean final NOA " << noa / spec.run.replicates << "\n"
             << "outputs in " << out.string() << "/\n";
 }
@@ -70,7 +73,8 @@ int run_command(const RunCommandOptions& options) {
   add_render_overrides(options, world);
   const WorldSpec spec = world.load();
   const bool out_given = !options.out.empty();
-  const std::filesystem::path out = out_given ? std::filesystem::path(options.out) : default_run_folder(spec);
+  const std::filesystem::path out =
+      out_given ? std::filesystem::path(options.out) : default_run_folder(spec);
   const std::filesystem::path frames = frames_folder(spec, out, out_given);
   if (!options.video.empty() && spec.render.every <= 0) {
     throw InputError("--video needs frames: give --render-every K (or render.every in the world)");
@@ -84,7 +88,8 @@ int run_command(const RunCommandOptions& options) {
   write_run_folder(spec, result, out);
   if (!options.no_model) write_predictions(spec, out);
   if (!options.quiet) print_summary(spec, result, out);
-  if (spec.render.every > 0 && !options.quiet) std::cout << "frames in " << frames.string() << "/\n";
+  if (spec.render.every > 0 && !options.quiet)
+    std::cout << "frames in " << frames.string() << "/\n";
   if (!options.video.empty()) {
     assemble_video(frames, options.video, options.fps);
     if (!options.quiet) std::cout << "video " << options.video << "\n";

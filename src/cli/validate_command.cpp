@@ -8,7 +8,8 @@ namespace swarmagg::cli {
 
 void add_validate_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<WorldOptions>();
-  CLI::App* command = app.add_subcommand("validate", "Check a world file and print it fully resolved");
+  CLI::App* command =
+      app.add_subcommand("validate", "Check a world file and print it fully resolved");
   options->add_to(*command);
   command->callback([options, &action] {
     action = [options] {

@@ -44,8 +44,7 @@ struct RealBounds {
 
 const RealBounds kPositive{0.0, false, std::numeric_limits<double>::infinity(),
                            "a positive number"};
-const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(),
-                              "a number >= 0"};
+const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(), "a number >= 0"};
 const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
 
 WorldKey real_key(std::string path, Access<double> access, const RealBounds& bounds) {
@@ -63,8 +62,8 @@ WorldKey real_key(std::string path, Access<double> access, const RealBounds& bou
 
 template <typename Int>
 WorldKey integer_key(std::string path, Access<Int> access, long long low, long long high) {
-  std::string expected = "a whole number from " + std::to_string(low) + " to " +
-                         std::to_string(high);
+  std::string expected =
+      "a whole number from " + std::to_string(low) + " to " + std::to_string(high);
   auto read = [access, low, high, expected](WorldSpec& w, const YAML::Node& node) {
     const long long v = read_integer(node, expected);
     if (v < low || v > high) throw KeyValueError{expected};
@@ -158,8 +157,9 @@ WorldKey name_key() {
   auto read = [expected](WorldSpec& w, const YAML::Node& node) {
     const std::string text = scalar_text(node, expected);
     const bool ok = !text.empty() && text.size() <= 128 && text.front() != '.' &&
-                    text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                           "0123456789-_.") == std::string::npos;
+                    text.find_first_not_of(
+                        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                        "0123456789-_.") == std::string::npos;
     if (!ok) throw KeyValueError{expected};
     w.name = text;
   };
@@ -204,68 +204,115 @@ std::vector<WorldKey> build_keys() {
   constexpr long long kMaxInt = 1'000'000'000;
   std::vector<WorldKey> keys;
   keys.push_back(name_key());
-  keys.push_back(real_key("arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive));
-  keys.push_back(real_key("arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive));
-  keys.push_back(enum_key<Topology>("arena.topology", [](WorldSpec& w) -> Topology& { return w.arena.topology; },
+  keys.push_back(real_key(
+      "arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive));
+  keys.push_back(real_key(
+      "arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive));
+  keys.push_back(enum_key<Topology>("arena.topology",
+                                    [](WorldSpec& w) -> Topology& { return w.arena.topology; },
                                     {{"torus", Topology::Torus}, {"walls", Topology::Walls}}));
-  keys.push_back(integer_key<int>("robots.count", [](WorldSpec& w) -> int& { return w.robots.count; }, 1, kMaxAgents));
-  keys.push_back(real_key("robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive));
-  keys.push_back(real_key("robots.detection_radius", [](WorldSpec& w) -> double& { return w.robots.detection_radius; }, kPositive));
-  keys.push_back(real_key("robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative));
+  keys.push_back(integer_key<int>(
+      "robots.count", [](WorldSpec& w) -> int& { return w.robots.count; }, 1, kMaxAgents));
+  keys.push_back(real_key(
+      "robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive));
+  keys.push_back(real_key(
+      "robots.detection_radius", [](WorldSpec& w) -> double& { return w.robots.detection_radius; },
+      kPositive));
+  keys.push_back(real_key(
+      "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative));
   keys.push_back(placement_key());
   keys.push_back(enum_key<ControllerType>(
       "controller.type", [](WorldSpec& w) -> ControllerType& { return w.controller.type; },
-      {{"bayindir", ControllerType::Bayindir}, {"soysal", ControllerType::Soysal},
+      {{"bayindir", ControllerType::Bayindir},
+       {"soysal", ControllerType::Soysal},
        {"collision", ControllerType::Collision}}));
-  keys.push_back(real_key("controller.p_leave", [](WorldSpec& w) -> double& { return w.controller.p_leave; }, kProbability));
-  keys.push_back(real_key("controller.leave_timeout", [](WorldSpec& w) -> double& { return w.controller.leave_timeout; }, kNonNegative));
-  keys.push_back(bool_key("controller.join", [](WorldSpec& w) -> bool& { return w.controller.join; }));
-  keys.push_back(bool_key("controller.leave", [](WorldSpec& w) -> bool& { return w.controller.leave; }));
+  keys.push_back(real_key(
+      "controller.p_leave", [](WorldSpec& w) -> double& { return w.controller.p_leave; },
+      kProbability));
+  keys.push_back(real_key(
+      "controller.leave_timeout",
+      [](WorldSpec& w) -> double& { return w.controller.leave_timeout; }, kNonNegative));
+  keys.push_back(
+      bool_key("controller.join", [](WorldSpec& w) -> bool& { return w.controller.join; }));
+  keys.push_back(
+      bool_key("controller.leave", [](WorldSpec& w) -> bool& { return w.controller.leave; }));
   keys.push_back(enum_key<IsolatedWait>(
-      "controller.isolated_wait", [](WorldSpec& w) -> IsolatedWait& { return w.controller.isolated_wait; },
+      "controller.isolated_wait",
+      [](WorldSpec& w) -> IsolatedWait& { return w.controller.isolated_wait; },
       {{"resume", IsolatedWait::Resume}, {"stay", IsolatedWait::Stay}}));
-  keys.push_back(real_key("controller.approach_radius", [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive));
-  keys.push_back(real_key("controller.p0", [](WorldSpec& w) -> double& { return w.controller.p0; }, kProbability));
+  keys.push_back(real_key(
+      "controller.approach_radius",
+      [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive));
+  keys.push_back(real_key(
+      "controller.p0", [](WorldSpec& w) -> double& { return w.controller.p0; }, kProbability));
   keys.push_back(enum_key<LeaveLaw>(
       "controller.leave_law", [](WorldSpec& w) -> LeaveLaw& { return w.controller.leave_law; },
-      {{"constant", LeaveLaw::Constant}, {"inverse", LeaveLaw::Inverse},
+      {{"constant", LeaveLaw::Constant},
+       {"inverse", LeaveLaw::Inverse},
        {"inverse_square", LeaveLaw::InverseSquare}}));
   keys.push_back(enum_key<LeaveSize>(
       "controller.leave_size", [](WorldSpec& w) -> LeaveSize& { return w.controller.leave_size; },
       {{"aggregate", LeaveSize::Aggregate}, {"neighbours", LeaveSize::Neighbours}}));
   keys.push_back(enum_key<CollisionMode>(
-      "controller.collision_mode", [](WorldSpec& w) -> CollisionMode& { return w.controller.collision_mode; },
+      "controller.collision_mode",
+      [](WorldSpec& w) -> CollisionMode& { return w.controller.collision_mode; },
       {{"ghost", CollisionMode::Ghost}, {"paper", CollisionMode::Paper}}));
-  keys.push_back(real_key("controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; }, kProbability));
-  keys.push_back(enum_key<EngineType>(
-      "engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
-      {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
-  keys.push_back(real_key("engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive));
-  keys.push_back(real_key("engine.box2d.repulsion_gain", [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative));
-  keys.push_back(real_key("engine.box2d.linear_damping", [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative));
-  keys.push_back(integer_key<int>("engine.box2d.velocity_iterations", [](WorldSpec& w) -> int& { return w.engine.box2d.velocity_iterations; }, 1, 100));
-  keys.push_back(integer_key<int>("engine.box2d.position_iterations", [](WorldSpec& w) -> int& { return w.engine.box2d.position_iterations; }, 1, 100));
-  keys.push_back(integer_key<int>("engine.box2d.substeps", [](WorldSpec& w) -> int& { return w.engine.box2d.substeps; }, 1, 1000));
-  keys.push_back(real_key("run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive));
-  keys.push_back(integer_key<int>("run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000));
+  keys.push_back(real_key(
+      "controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; },
+      kProbability));
+  keys.push_back(
+      enum_key<EngineType>("engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
+                           {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
+  keys.push_back(real_key(
+      "engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive));
+  keys.push_back(real_key(
+      "engine.box2d.repulsion_gain",
+      [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative));
+  keys.push_back(real_key(
+      "engine.box2d.linear_damping",
+      [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative));
+  keys.push_back(integer_key<int>(
+      "engine.box2d.velocity_iterations",
+      [](WorldSpec& w) -> int& { return w.engine.box2d.velocity_iterations; }, 1, 100));
+  keys.push_back(integer_key<int>(
+      "engine.box2d.position_iterations",
+      [](WorldSpec& w) -> int& { return w.engine.box2d.position_iterations; }, 1, 100));
+  keys.push_back(integer_key<int>(
+      "engine.box2d.substeps", [](WorldSpec& w) -> int& { return w.engine.box2d.substeps; }, 1,
+      1000));
+  keys.push_back(real_key(
+      "run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive));
+  keys.push_back(integer_key<int>(
+      "run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000));
   keys.push_back(seed_key("run.seed", [](WorldSpec& w) -> std::uint64_t& { return w.run.seed; }));
-  keys.push_back(integer_key<int>("run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
-  keys.push_back(integer_key<int>("run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
-  keys.push_back(enum_key<Kappa>("model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
-                                 {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));
+  keys.push_back(integer_key<int>(
+      "run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
+  keys.push_back(integer_key<int>(
+      "run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
+  keys.push_back(enum_key<Kappa>(
+      "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
+      {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));
   keys.push_back(enum_key<CreationVariant>(
       "model.creation", [](WorldSpec& w) -> CreationVariant& { return w.model.creation; },
       {{"original", CreationVariant::Original}, {"collision", CreationVariant::Collision}}));
   keys.push_back(enum_key<LeavingVariant>(
       "model.leaving", [](WorldSpec& w) -> LeavingVariant& { return w.model.leaving; },
       {{"original", LeavingVariant::Original}, {"peripheral", LeavingVariant::Peripheral}}));
-  keys.push_back(bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }));
-  keys.push_back(integer_key<int>("model.stochastic_replicates", [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
-  keys.push_back(integer_key<int>("render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
-  keys.push_back(integer_key<int>("render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 32, 8192));
-  keys.push_back(integer_key<int>("render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 32, 8192));
-  keys.push_back(integer_key<int>("render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000));
-  keys.push_back(string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }));
+  keys.push_back(
+      bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }));
+  keys.push_back(integer_key<int>(
+      "model.stochastic_replicates",
+      [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
+  keys.push_back(integer_key<int>(
+      "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
+  keys.push_back(integer_key<int>(
+      "render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 32, 8192));
+  keys.push_back(integer_key<int>(
+      "render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 32, 8192));
+  keys.push_back(integer_key<int>(
+      "render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000));
+  keys.push_back(
+      string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }));
   return keys;
 }
 
@@ -277,8 +324,9 @@ std::string format_number(double value) {
   const double magnitude = std::fabs(value);
   const bool plain = magnitude == 0.0 || (magnitude >= 1e-6 && magnitude < 1e15);
   char buffer[400];
-  const auto result = plain ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
-                            : std::to_chars(buffer, buffer + sizeof buffer, value);
+  const auto result =
+      plain ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
+            : std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
 }
 
@@ -295,8 +343,8 @@ const WorldKey* find_world_key(const std::string& path) {
 }
 
 const std::vector<std::string>& world_blocks() {
-  static const std::vector<std::string> blocks = {"arena", "robots", "controller", "engine",
-                                                  "engine.box2d", "run", "model", "render"};
+  static const std::vector<std::string> blocks = {"arena",        "robots", "controller", "engine",
+                                                  "engine.box2d", "run",    "model",      "render"};
   return blocks;
 }
 

@@ -83,8 +83,8 @@ class DocumentReader {
     for (const auto& entry : map) {
       const std::string at = where(source_, entry.first);
       if (!entry.first.IsScalar()) throw InputError(at + ": a key must be a plain name");
-      const std::string path = prefix.empty() ? entry.first.Scalar()
-                                              : prefix + "." + entry.first.Scalar();
+      const std::string path =
+          prefix.empty() ? entry.first.Scalar() : prefix + "." + entry.first.Scalar();
       if (!seen_.insert(path).second) throw InputError(at + ": key '" + path + "' given twice");
       read_entry(path, entry.second, at);
     }
@@ -272,8 +272,8 @@ void check_placement(const WorldSpec& spec, bool count_given) {
     const bool inside = placed[i].x >= margin && placed[i].x <= spec.arena.width - margin &&
                         placed[i].y >= margin && placed[i].y <= spec.arena.height - margin;
     if (!inside) {
-      throw InputError(spec.source + ": robots.placement: agent " + std::to_string(i) +
-                       " at (" + format_number(placed[i].x) + ", " + format_number(placed[i].y) +
+      throw InputError(spec.source + ": robots.placement: agent " + std::to_string(i) + " at (" +
+                       format_number(placed[i].x) + ", " + format_number(placed[i].y) +
                        ") is outside the " + format_number(spec.arena.width) + " x " +
                        format_number(spec.arena.height) + " arena");
     }
@@ -284,8 +284,9 @@ void check_placement(const WorldSpec& spec, bool count_given) {
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
                         const std::vector<std::string>& overrides) {
   if (!document.IsDefined() || document.IsNull()) {
-    throw InputError(source + ": the world file is empty; expected a mapping of world keys "
-                              "(for example 'robots: {count: 50}')");
+    throw InputError(source +
+                     ": the world file is empty; expected a mapping of world keys "
+                     "(for example 'robots: {count: 50}')");
   }
   if (!document.IsMap()) {
     throw InputError(where(source, document) + ": expected a mapping of world keys, got " +
@@ -358,13 +359,12 @@ void check_world(const WorldSpec& spec) {
                    ") must be wider than twice the sensing radius plus a body");
   }
   // Random sequential placement jams near 55% coverage; beyond half the arena it fails.
-  const double coverage = robots.count * 3.141592653589793 * robots.radius * robots.radius /
-                          spec.arena.area();
+  const double coverage =
+      robots.count * 3.141592653589793 * robots.radius * robots.radius / spec.arena.area();
   if (coverage > 0.5) {
     impossible(spec, "robots.count",
-               std::to_string(robots.count) + " agents of radius " +
-                   format_number(robots.radius) + " cover " +
-                   format_number(std::round(coverage * 100.0)) +
+               std::to_string(robots.count) + " agents of radius " + format_number(robots.radius) +
+                   " cover " + format_number(std::round(coverage * 100.0)) +
                    "% of the arena; at most 50% can be placed without overlap");
   }
   if (spec.controller.type == ControllerType::Soysal && spec.controller.approach_radius <= s) {

@@ -38,16 +38,16 @@ struct PlacedAgent {
 
 struct RobotsSpec {
   int count = 150;
-  double radius = 1.0;            // r, body radius
-  double detection_radius = 4.0;  // s, centre to centre
-  double speed = 1.0;             // v
+  double radius = 1.0;                 // r, body radius
+  double detection_radius = 4.0;       // s, centre to centre
+  double speed = 1.0;                  // v
   std::vector<PlacedAgent> placement;  // empty: uniform random placement
   bool random_placement() const { return placement.empty(); }
 };
 
 struct ControllerSpec {
   ControllerType type = ControllerType::Bayindir;
-  double p_leave = 0.0;        // bayindir: per step
+  double p_leave = 0.0;         // bayindir: per step
   double leave_timeout = 10.0;  // tu
   bool join = true;
   bool leave = true;
@@ -61,11 +61,11 @@ struct ControllerSpec {
 };
 
 struct Box2DSpec {
-  double repulsion_gain = 20.0;     // force per unit mass at zero distance, fading to 0 at s
+  double repulsion_gain = 20.0;  // force per unit mass at zero distance, fading to 0 at s
   double linear_damping = 0.0;
   int velocity_iterations = 8;
   int position_iterations = 3;
-  int substeps = 1;                 // Box2D steps per simulation step
+  int substeps = 1;  // Box2D steps per simulation step
 };
 
 struct EngineSpec {

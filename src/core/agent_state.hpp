@@ -14,10 +14,14 @@ constexpr int kAgentStateCount = 4;
 
 constexpr std::string_view to_string(AgentState s) {
   switch (s) {
-    case AgentState::Go: return "GO";
-    case AgentState::Wait: return "WAIT";
-    case AgentState::Leave: return "LEAVE";
-    case AgentState::Approach: return "APPROACH";
+    case AgentState::Go:
+      return "GO";
+    case AgentState::Wait:
+      return "WAIT";
+    case AgentState::Leave:
+      return "LEAVE";
+    case AgentState::Approach:
+      return "APPROACH";
   }
   return "?";
 }
@@ -26,9 +30,9 @@ constexpr std::int32_t kNoPartner = -1;
 
 struct SwarmState {
   std::vector<AgentState> state;
-  std::vector<Vec2> heading;             // unit vector of the current straight-line motion
-  std::vector<double> leave_time_left;   // tu left in LEAVE
-  std::vector<std::int32_t> partner;     // the agent a pair formed with (join: false), or kNoPartner
+  std::vector<Vec2> heading;            // unit vector of the current straight-line motion
+  std::vector<double> leave_time_left;  // tu left in LEAVE
+  std::vector<std::int32_t> partner;    // the agent a pair formed with (join: false), or kNoPartner
 
   void resize(std::size_t n) {
     state.assign(n, AgentState::Go);

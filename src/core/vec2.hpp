@@ -31,9 +31,17 @@ struct Vec2 {
   friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
 };
 
-constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-constexpr double norm2(Vec2 a) { return dot(a, a); }
-inline double norm(Vec2 a) { return std::sqrt(norm2(a)); }
-inline Vec2 from_angle(double radians) { return {std::cos(radians), std::sin(radians)}; }
+constexpr double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
+constexpr double norm2(Vec2 a) {
+  return dot(a, a);
+}
+inline double norm(Vec2 a) {
+  return std::sqrt(norm2(a));
+}
+inline Vec2 from_angle(double radians) {
+  return {std::cos(radians), std::sin(radians)};
+}
 
 }  // namespace swarmagg

@@ -7,8 +7,10 @@ namespace swarmagg {
 std::unique_ptr<Engine> make_engine(const WorldSpec& spec,
                                     std::span<const Vec2> initial_positions) {
   switch (spec.engine.type) {
-    case EngineType::Kinematic: return make_kinematic_engine(spec, initial_positions);
-    case EngineType::Box2D: return make_box2d_engine(spec, initial_positions);
+    case EngineType::Kinematic:
+      return make_kinematic_engine(spec, initial_positions);
+    case EngineType::Box2D:
+      return make_box2d_engine(spec, initial_positions);
   }
   return nullptr;
 }

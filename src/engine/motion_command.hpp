@@ -14,7 +14,9 @@ using Signal = std::uint8_t;  // at most 16 distinct values
 // step, which at a million agents is memory traffic, not arithmetic.
 using SignalMask = std::uint16_t;
 
-constexpr SignalMask mask_of(Signal s) { return static_cast<SignalMask>(1u << s); }
+constexpr SignalMask mask_of(Signal s) {
+  return static_cast<SignalMask>(1u << s);
+}
 
 struct MotionCommand {
   Vec2 velocity;  // desired velocity, u/tu

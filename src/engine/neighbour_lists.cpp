@@ -1,6 +1,5 @@
 #include "engine/neighbour_lists.hpp"
 
-
 namespace swarmagg {
 namespace {
 

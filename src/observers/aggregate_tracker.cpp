@@ -8,7 +8,8 @@ namespace {
 // Lists the waiting agents in index order into `waiting` (kept at full length) and returns
 // how many there are. Without branches: every index is written, only a waiting one counts,
 // since waiting and moving agents alternate unpredictably along the indices.
-std::size_t list_waiting(const std::vector<AgentState>& state, std::vector<std::uint32_t>& waiting) {
+std::size_t list_waiting(const std::vector<AgentState>& state,
+                         std::vector<std::uint32_t>& waiting) {
   const std::size_t n = state.size();
   if (waiting.size() != n) waiting.resize(n);
   std::uint32_t* out = waiting.data();
@@ -27,7 +28,8 @@ void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState
                               double detection_radius, AggregateLinks links) {
   const std::size_t n = swarm.size();
   // Only waiting agents can be in aggregates; the union-find touches nothing else.
-  const std::span<const std::uint32_t> waiting(waiting_.data(), list_waiting(swarm.state, waiting_));
+  const std::span<const std::uint32_t> waiting(waiting_.data(),
+                                               list_waiting(swarm.state, waiting_));
   sets_.reserve_elements(n);
   index_of_root_.resize(n);
   for (const std::uint32_t i : waiting) {

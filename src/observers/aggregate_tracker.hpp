@@ -17,8 +17,8 @@ enum class AggregateLinks { Proximity, PartnersOnly };
 
 class AggregateTracker {
  public:
-  void update(const NeighbourLists& neighbours, const SwarmState& swarm,
-              double detection_radius, AggregateLinks links);
+  void update(const NeighbourLists& neighbours, const SwarmState& swarm, double detection_radius,
+              AggregateLinks links);
 
   int count() const { return count_; }
   int largest() const { return largest_; }
@@ -38,7 +38,7 @@ class AggregateTracker {
   std::vector<std::int32_t> size_of_agent_;
   std::vector<std::int32_t> sizes_;
   std::vector<std::int32_t> index_of_root_;
-  std::vector<std::uint32_t> waiting_;  // full length; the waiting agents come first
+  std::vector<std::uint32_t> waiting_;   // full length; the waiting agents come first
   std::vector<std::uint32_t> labelled_;  // agents whose labels differ from -1 / 0
   int count_ = 0;
   int largest_ = 0;

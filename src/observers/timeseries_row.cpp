@@ -6,10 +6,18 @@ StateCounts count_states(std::span<const AgentState> states) {
   StateCounts counts;
   for (const AgentState s : states) {
     switch (s) {
-      case AgentState::Go: ++counts.searching; break;
-      case AgentState::Wait: ++counts.waiting; break;
-      case AgentState::Leave: ++counts.leaving; break;
-      case AgentState::Approach: ++counts.approaching; break;
+      case AgentState::Go:
+        ++counts.searching;
+        break;
+      case AgentState::Wait:
+        ++counts.waiting;
+        break;
+      case AgentState::Leave:
+        ++counts.leaving;
+        break;
+      case AgentState::Approach:
+        ++counts.approaching;
+        break;
     }
   }
   return counts;

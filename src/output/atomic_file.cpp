@@ -14,9 +14,9 @@ namespace {
 
 std::filesystem::path temporary_beside(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
-  return target.parent_path() / ("." + target.filename().string() + "." +
-                                 std::to_string(::getpid()) + "." +
-                                 std::to_string(counter.fetch_add(1)) + ".tmp");
+  return target.parent_path() /
+         ("." + target.filename().string() + "." + std::to_string(::getpid()) + "." +
+          std::to_string(counter.fetch_add(1)) + ".tmp");
 }
 
 [[noreturn]] void fail(const std::string& what, const std::filesystem::path& path) {

@@ -62,8 +62,12 @@ class PlacementGrid {
     }
     return true;
   }
-  int cell_x(double x) const { return std::min(nx_ - 1, static_cast<int>(x / arena_.width() * nx_)); }
-  int cell_y(double y) const { return std::min(ny_ - 1, static_cast<int>(y / arena_.height() * ny_)); }
+  int cell_x(double x) const {
+    return std::min(nx_ - 1, static_cast<int>(x / arena_.width() * nx_));
+  }
+  int cell_y(double y) const {
+    return std::min(ny_ - 1, static_cast<int>(y / arena_.height() * ny_));
+  }
 
   const ArenaGeometry& arena_;
   double contact_;
@@ -103,8 +107,8 @@ InitialPlacement random_placement(const WorldSpec& spec, const CounterRng& rng) 
       placed = true;
     }
     if (!placed) {
-      throw InputError(spec.source + ": robots.count: could not place agent " +
-                       std::to_string(i) + " of " + std::to_string(n) +
+      throw InputError(spec.source + ": robots.count: could not place agent " + std::to_string(i) +
+                       " of " + std::to_string(n) +
                        " without overlapping another body; use a larger arena or fewer agents");
     }
     result.headings.push_back(random_heading(rng, 0, static_cast<std::uint32_t>(i)));
@@ -138,7 +142,8 @@ void number_by_space(const WorldSpec& spec, std::vector<Vec2>& positions) {
 InitialPlacement place_agents(const WorldSpec& spec, const CounterRng& rng) {
   if (!spec.robots.random_placement()) return explicit_placement(spec);
   InitialPlacement placement = random_placement(spec, rng);
-  if (placement.positions.size() >= kSpatialNumberingFrom) number_by_space(spec, placement.positions);
+  if (placement.positions.size() >= kSpatialNumberingFrom)
+    number_by_space(spec, placement.positions);
   return placement;
 }
 

@@ -8,7 +8,9 @@ namespace {
 
 std::atomic<int> received{0};
 
-extern "C" void on_signal(int signal_number) { received.store(signal_number); }
+extern "C" void on_signal(int signal_number) {
+  received.store(signal_number);
+}
 
 }  // namespace
 
@@ -20,12 +22,16 @@ void install_interrupt_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-int interrupt_signal() { return received.load(std::memory_order_relaxed); }
+int interrupt_signal() {
+  return received.load(std::memory_order_relaxed);
+}
 
 void throw_if_interrupted() {
   if (const int s = interrupt_signal()) throw Interrupted(s);
 }
 
-void set_interrupt_signal(int signal_number) { received.store(signal_number); }
+void set_interrupt_signal(int signal_number) {
+  received.store(signal_number);
+}
 
 }  // namespace swarmagg

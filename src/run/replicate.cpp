@@ -49,7 +49,12 @@ void Replicate::step() {
 }
 
 SwarmSnapshot Replicate::snapshot() const {
-  return {&spec_, step_, time(), engine_->positions(), swarm_.state, aggregates_.aggregate_of(),
+  return {&spec_,
+          step_,
+          time(),
+          engine_->positions(),
+          swarm_.state,
+          aggregates_.aggregate_of(),
           aggregates_.count()};
 }
 

@@ -18,7 +18,8 @@ nlohmann::json spread(const std::vector<double>& values) {
   mean /= static_cast<double>(values.size());
   double squares = 0.0;
   for (double v : values) squares += (v - mean) * (v - mean);
-  const double sd = values.size() > 1 ? std::sqrt(squares / static_cast<double>(values.size() - 1)) : 0.0;
+  const double sd =
+      values.size() > 1 ? std::sqrt(squares / static_cast<double>(values.size() - 1)) : 0.0;
   const auto [low, high] = std::minmax_element(values.begin(), values.end());
   return {{"mean", mean}, {"sd", sd}, {"min", *low}, {"max", *high}};
 }
@@ -49,8 +50,8 @@ nlohmann::json replicate_summary(const ReplicateOutcome& r) {
 }  // namespace
 
 std::string resolved_world_text(const WorldSpec& spec) {
-  std::string text = "# Resolved by swarmagg " SWARMAGG_VERSION " (" SWARMAGG_GIT_HASH
-                     "); every key is shown.\n";
+  std::string text =
+      "# Resolved by swarmagg " SWARMAGG_VERSION " (" SWARMAGG_GIT_HASH "); every key is shown.\n";
   text += "# Replicate k draws from the generator keyed by (run.seed, k):";
   for (int k = 0; k < spec.run.replicates && k < 1000; ++k) {
     text += (k % 4 == 0 ? "\n#  " : "  ") + std::to_string(k) + ": " +
@@ -61,7 +62,8 @@ std::string resolved_world_text(const WorldSpec& spec) {
 
 std::vector<TimeseriesRow> all_rows(const RunResult& result) {
   std::vector<TimeseriesRow> rows;
-  for (const ReplicateOutcome& r : result.replicates) rows.insert(rows.end(), r.rows.begin(), r.rows.end());
+  for (const ReplicateOutcome& r : result.replicates)
+    rows.insert(rows.end(), r.rows.begin(), r.rows.end());
   return rows;
 }
 

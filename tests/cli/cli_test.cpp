@@ -63,8 +63,10 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
 
 TEST(Cli, RunWritesTheOutputFolder) {
   const auto out = temp_dir("run");
-  const Outcome o = swarmagg("run worlds/examples/demo.yaml --replicates 2 --threads 2 "
-                             "--set run.duration=50 --out " + out.string());
+  const Outcome o = swarmagg(
+      "run worlds/examples/demo.yaml --replicates 2 --threads 2 "
+      "--set run.duration=50 --out " +
+      out.string());
   EXPECT_EQ(o.exit_code, 0) << o.output;
   EXPECT_THAT(o.output, HasSubstr("mean final NOA"));
   EXPECT_TRUE(std::filesystem::exists(out / "timeseries.csv"));

@@ -91,7 +91,8 @@ TEST(WorldLoaderErrors, AMissingFileIsNamed) {
 }
 
 TEST(WorldLoaderErrors, SyntaxErrorsGiveTheLine) {
-  EXPECT_THAT(error_of("robots:\n  count: [1, 2\n"), AllOf(HasSubstr("w.yaml:"), HasSubstr("YAML syntax error")));
+  EXPECT_THAT(error_of("robots:\n  count: [1, 2\n"),
+              AllOf(HasSubstr("w.yaml:"), HasSubstr("YAML syntax error")));
 }
 
 TEST(WorldLoaderErrors, UnknownKeysSuggestTheClosestKnownOne) {
@@ -106,22 +107,26 @@ TEST(WorldLoaderErrors, WrongTypesSayWhatWasExpected) {
   EXPECT_THAT(error_of("robots:\n  count: many\n"),
               AllOf(HasSubstr("w.yaml:2:10"), HasSubstr("robots.count: expected a whole number"),
                     HasSubstr("got 'many'")));
-  EXPECT_THAT(error_of("controller: {join: maybe}\n"), HasSubstr("controller.join: expected true or false"));
+  EXPECT_THAT(error_of("controller: {join: maybe}\n"),
+              HasSubstr("controller.join: expected true or false"));
   EXPECT_THAT(error_of("arena: {topology: sphere}\n"), HasSubstr("one of: torus, walls"));
   EXPECT_THAT(error_of("robots: 5\n"), HasSubstr("robots: expected a mapping of keys"));
   EXPECT_THAT(error_of("robots: {radius: [1]}\n"), HasSubstr("got a list"));
 }
 
 TEST(WorldLoaderErrors, ImpossibleValuesAreRefused) {
-  EXPECT_THAT(error_of("robots: {radius: -1}\n"), HasSubstr("robots.radius: expected a positive number"));
+  EXPECT_THAT(error_of("robots: {radius: -1}\n"),
+              HasSubstr("robots.radius: expected a positive number"));
   EXPECT_THAT(error_of("engine: {dt: 0}\n"), HasSubstr("engine.dt: expected a positive number"));
   EXPECT_THAT(error_of("robots: {radius: 3, detection_radius: 4}\n"),
               HasSubstr("robots.detection_radius: must be at least twice robots.radius"));
   EXPECT_THAT(error_of("arena: {width: 20, height: 20}\nrobots: {count: 1000}\n"),
               HasSubstr("robots.count: 1000 agents"));
   EXPECT_THAT(error_of("controller: {p_leave: 1.5}\n"), HasSubstr("a probability between 0 and 1"));
-  EXPECT_THAT(error_of("arena: {width: .nan}\n"), HasSubstr("arena.width: expected a positive number"));
-  EXPECT_THAT(error_of("arena: {width: 1e999}\n"), HasSubstr("arena.width: expected a positive number"));
+  EXPECT_THAT(error_of("arena: {width: .nan}\n"),
+              HasSubstr("arena.width: expected a positive number"));
+  EXPECT_THAT(error_of("arena: {width: 1e999}\n"),
+              HasSubstr("arena.width: expected a positive number"));
   EXPECT_THAT(error_of("robots: {count: 99999999999999999999}\n"), HasSubstr("robots.count"));
 }
 

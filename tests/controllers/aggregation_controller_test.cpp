@@ -187,7 +187,7 @@ TEST(BayindirController, WithoutJoiningAStayingAgentDropsAPartnerWhoLeft) {
   ControllerFixture f(spec);
   const auto a = f.add(10, 10, AgentState::Wait);
   const auto b = f.add(13, 10, AgentState::Leave);  // a's partner, its timeout nearly over
-  const auto c = f.add(13, 13, AgentState::Go);      // b's next partner
+  const auto c = f.add(13, 13, AgentState::Go);     // b's next partner
   f.swarm.partner[a] = static_cast<std::int32_t>(b);
   f.swarm.leave_time_left[b] = 0.1;
   f.decide();  // b searches again; c ignores the waiting a and the leaving b

@@ -39,9 +39,9 @@ struct Scene {
 TEST(AggregateTracker, JoinsAChainAcrossTheSeamIntoOneAggregate) {
   Scene s;
   s.add(98.0, 50.0);
-  s.add(1.5, 50.0);   // 3.5 from the first across the x seam
-  s.add(1.5, 97.0);   // far from everyone: in no aggregate
-  s.add(1.5, 53.5);   // 3.5 above the second
+  s.add(1.5, 50.0);  // 3.5 from the first across the x seam
+  s.add(1.5, 97.0);  // far from everyone: in no aggregate
+  s.add(1.5, 53.5);  // 3.5 above the second
   s.update();
   EXPECT_EQ(s.tracker.count(), 1);
   EXPECT_EQ(s.tracker.largest(), 3);

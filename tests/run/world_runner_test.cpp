@@ -29,7 +29,9 @@ run: {duration: 150, replicates: 4, seed: 5, record_every: 7}
                          "test");
 }
 
-std::string csv_of(const RunResult& result) { return timeseries_csv(all_rows(result)); }
+std::string csv_of(const RunResult& result) {
+  return timeseries_csv(all_rows(result));
+}
 
 RunResult run_with_threads(const WorldSpec& spec, int threads) {
   RunOptions options;
@@ -131,7 +133,8 @@ bool numbered_by_space(const std::vector<Vec2>& positions, double band) {
 }
 
 TEST(InitialPlacement, LargeSwarmsAreNumberedAlongSpaceSmallOnesByDraw) {
-  WorldSpec large = load_world_text("arena: {width: 1000, height: 1000}\nrobots: {count: 5000}\n", "t");
+  WorldSpec large =
+      load_world_text("arena: {width: 1000, height: 1000}\nrobots: {count: 5000}\n", "t");
   const InitialPlacement placed = place_agents(large, CounterRng::for_replicate(1, 0));
   ASSERT_EQ(placed.positions.size(), 5000u);
   EXPECT_TRUE(numbered_by_space(placed.positions, 2.0 * large.robots.detection_radius));
@@ -189,7 +192,8 @@ TEST(RunFolder, WritesEveryOutputAndAResolvedWorldThatLoadsBack) {
   std::getline(csv, header);
   EXPECT_EQ(header, kTimeseriesHeader);
   for (const auto& entry : std::filesystem::directory_iterator(out)) {
-    EXPECT_EQ(entry.path().extension(), entry.path().extension() == ".tmp" ? ".none" : entry.path().extension());
+    EXPECT_EQ(entry.path().extension(),
+              entry.path().extension() == ".tmp" ? ".none" : entry.path().extension());
   }
   std::filesystem::remove_all(out);
 }

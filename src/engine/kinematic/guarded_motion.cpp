@@ -55,8 +55,8 @@ void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
     heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
     std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
   };
-  if (auto t = first_contact_time(offset, relative, limits_.detection_radius, from_time,
-                                  limits_.dt)) {
+  if (auto t =
+          first_contact_time(offset, relative, limits_.detection_radius, from_time, limits_.dt)) {
     push(*t, Kind::Perceive);
   }
   if (!blocks(pair.i, pair.j) && !blocks(pair.j, pair.i)) return;

@@ -37,8 +37,9 @@ class GuardedMotion {
   // Resolves the step for agents that guard their moves (some command has halt_on or
   // blocked_by bits) and returns the number of encounters; stop_times() then holds when
   // each agent stopped (dt when it moved the whole step).
-  std::uint64_t resolve(std::span<const CandidatePair> pairs, std::span<const MotionCommand> commands,
-                        std::span<const Signal> signals, const MotionLimits& limits);
+  std::uint64_t resolve(std::span<const CandidatePair> pairs,
+                        std::span<const MotionCommand> commands, std::span<const Signal> signals,
+                        const MotionLimits& limits);
   std::span<const double> stop_times() const { return stop_time_; }
 
   // The encounters of a step in which no agent halts: every agent moves the whole step.

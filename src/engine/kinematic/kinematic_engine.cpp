@@ -79,7 +79,8 @@ class KinematicEngine final : public Engine {
   const NeighbourLists& neighbours() const override { return neighbours_; }
   // A torus reflects nothing; an empty span spares controllers a pass over N zeros.
   std::span<const std::uint8_t> reflections() const override {
-    return arena_.torus() ? std::span<const std::uint8_t>{} : std::span<const std::uint8_t>(reflections_);
+    return arena_.torus() ? std::span<const std::uint8_t>{}
+                          : std::span<const std::uint8_t>(reflections_);
   }
   void set_threads(int threads) override { threads_.resize(std::max(1, threads)); }
 
@@ -89,8 +90,8 @@ class KinematicEngine final : public Engine {
   void move_and_rebuild(std::span<const MotionCommand> commands, const double* stop_time,
                         double fastest) {
     const std::size_t n = positions_.size();
-    const int tasks = static_cast<int>(
-        std::clamp<std::size_t>(n / kAgentsPerMoveTask, 1, static_cast<std::size_t>(threads_.size())));
+    const int tasks = static_cast<int>(std::clamp<std::size_t>(
+        n / kAgentsPerMoveTask, 1, static_cast<std::size_t>(threads_.size())));
     auto move = [&](int task) {
       const std::size_t first = StepThreads::slice_begin(n, task, tasks);
       const std::size_t last = StepThreads::slice_begin(n, task + 1, tasks);

@@ -21,8 +21,8 @@ NeighbourSearch::Plan NeighbourSearch::plan(const ArenaGeometry& arena, std::siz
   p.reach = std::max(radii.sensing, radii.pair_reach);
   // Cells much smaller than the spacing between agents cost more to sweep than the
   // distance checks they save (the reference grid's own rule; it fixes the convention).
-  const double spacing =
-      std::sqrt(arena.width() * arena.height() / static_cast<double>(std::max<std::size_t>(1, agents)));
+  const double spacing = std::sqrt(arena.width() * arena.height() /
+                                   static_cast<double>(std::max<std::size_t>(1, agents)));
   p.min_cell = std::max(p.reach, 1.2 * spacing);
   convention_ = PairConvention(arena, p.min_cell);
   p.window = p.reach * (1.0 + kWindowMargin);
@@ -41,7 +41,8 @@ void NeighbourSearch::find(const ArenaGeometry& arena, std::span<const Vec2> pos
 void NeighbourSearch::scan(const Plan& p, std::size_t agents, StepThreads& threads) {
   const int tasks = std::max(
       1, std::min({threads.size(), strips_.strips(), static_cast<int>(agents / kAgentsPerTask)}));
-  if (found_.size() < static_cast<std::size_t>(tasks)) found_.resize(static_cast<std::size_t>(tasks));
+  if (found_.size() < static_cast<std::size_t>(tasks))
+    found_.resize(static_cast<std::size_t>(tasks));
   auto scan_one = [&](int task) { scan_task(task, tasks, p.reach); };
   threads.run(tasks, scan_one);
   join_tasks(tasks);
@@ -59,16 +60,16 @@ void NeighbourSearch::scan_task(int task, int tasks, double reach) {
   const double pair2 = radii_.pair_reach * radii_.pair_reach;
   const bool perception = radii_.perception;
   strips_.for_each_candidate(first, last, [&](std::uint32_t a, std::uint32_t b) {
-        const auto pair = convention_.report(strips_.id(a), strips_.position(a), strips_.id(b),
-                                             strips_.position(b), reach2);
-        if (!pair) return;
-        if (perception && pair->d2 <= sense2) {
-          out.close.push_back({pair->i, pair->j, pair->offset, std::sqrt(pair->d2)});
-        }
-        if (pair->d2 <= pair2) {
-          out.candidates.push_back({pair->i, pair->j, pair->offset, pair->rank, pair->a_is_j});
-        }
-      });
+    const auto pair = convention_.report(strips_.id(a), strips_.position(a), strips_.id(b),
+                                         strips_.position(b), reach2);
+    if (!pair) return;
+    if (perception && pair->d2 <= sense2) {
+      out.close.push_back({pair->i, pair->j, pair->offset, std::sqrt(pair->d2)});
+    }
+    if (pair->d2 <= pair2) {
+      out.candidates.push_back({pair->i, pair->j, pair->offset, pair->rank, pair->a_is_j});
+    }
+  });
 }
 
 void NeighbourSearch::join_tasks(int tasks) {
@@ -100,7 +101,7 @@ void NeighbourSearch::join_tasks(int tasks) {
 // Small or narrow worlds: the reference grid itself, whose scan order is the convention
 // (rank = position in the list).
 void NeighbourSearch::scan_grid(const ArenaGeometry& arena, std::span<const Vec2> positions,
-                                     double min_cell, double reach) {
+                                double min_cell, double reach) {
   grid_.rebuild(arena, min_cell, positions);
   if (found_.empty()) found_.resize(1);
   Found& out = found_[0];

@@ -4,8 +4,8 @@
 // step (the guarded-motion solver's candidates). Pairs are searched in sorted strips
 // (sorted_strips.hpp) and reported as the reference grid would (pair_convention.hpp); worlds
 // too small for three strips or three grid cells along an axis are searched by the
-// reference grid itself (uniform_grid.hpp). Several threads may search strips at once; each fills its own
-// buffers, joined in strip order, so the result does not depend on the thread count.
+// reference grid itself (uniform_grid.hpp). Several threads may search strips at once; each fills
+// its own buffers, joined in strip order, so the result does not depend on the thread count.
 #include <span>
 #include <vector>
 

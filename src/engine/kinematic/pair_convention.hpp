@@ -114,8 +114,8 @@ inline std::optional<ConventionalPair> PairConvention::report(std::uint32_t id_p
   Vec2 d = q + shift - p;
   const double d2 = norm2(d);
   if (d2 > reach2) return std::nullopt;
-  ConventionalPair pair{id_p, id_q, d, d2,
-                        static_cast<std::uint32_t>((row_p * nx_ + column_p) * 5 + slot), false};
+  ConventionalPair pair{
+      id_p, id_q, d, d2, static_cast<std::uint32_t>((row_p * nx_ + column_p) * 5 + slot), false};
   if (id_p > id_q) {
     std::swap(pair.i, pair.j);
     pair.offset = -d;

@@ -38,14 +38,15 @@ SortedStrips::Layout SortedStrips::layout_for(const ArenaGeometry& arena, double
   return layout;
 }
 
-bool SortedStrips::same_layout(const ArenaGeometry& arena, double window, std::size_t agents) const {
+bool SortedStrips::same_layout(const ArenaGeometry& arena, double window,
+                               std::size_t agents) const {
   return strips_ > 0 && window == window_ && agents == agents_ && arena.width() == arena_.width() &&
          arena.height() == arena_.height() && arena.torus() == arena_.torus() &&
          layout_for(arena, window, agents) == layout_;
 }
 
-void SortedStrips::update(const ArenaGeometry& arena, double window, std::span<const Vec2> positions,
-                          StepThreads& threads) {
+void SortedStrips::update(const ArenaGeometry& arena, double window,
+                          std::span<const Vec2> positions, StepThreads& threads) {
   if (same_layout(arena, window, positions.size())) return restrip(positions, threads);
   arena_ = arena;
   window_ = window;

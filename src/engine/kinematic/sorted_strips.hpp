@@ -48,22 +48,25 @@ class SortedStrips {
  private:
   struct Layout {
     int strips = 1;
-    int blocks = 1;  // per strip
-    double strip_scale = 1.0;  // strips per unit length (y)
-    double block_scale = 1.0;  // blocks per unit length (x)
+    int blocks = 1;                       // per strip
+    double strip_scale = 1.0;             // strips per unit length (y)
+    double block_scale = 1.0;             // blocks per unit length (x)
     std::uint32_t cell_of(Vec2 p) const;  // strip * blocks + block
     bool operator==(const Layout&) const = default;
   };
   static Layout layout_for(const ArenaGeometry& arena, double window, std::size_t agents);
 
   // Slots of strip s: [strip_first(s), strip_sentinel(s)).
-  std::uint32_t strip_first(int s) const { return cell_begin_[static_cast<std::size_t>(s) * layout_.blocks]; }
+  std::uint32_t strip_first(int s) const {
+    return cell_begin_[static_cast<std::size_t>(s) * layout_.blocks];
+  }
   std::uint32_t strip_sentinel(int s) const { return strip_first(s + 1) - 1; }
 
   bool same_layout(const ArenaGeometry& arena, double window, std::size_t agents) const;
   void sort_from_scratch(std::span<const Vec2> positions);
   int first_strip(int task, int tasks) const {
-    return static_cast<int>(StepThreads::slice_begin(static_cast<std::size_t>(strips_), task, tasks));
+    return static_cast<int>(
+        StepThreads::slice_begin(static_cast<std::size_t>(strips_), task, tasks));
   }
   void restrip(std::span<const Vec2> positions, StepThreads& threads);
   void gather_strips(std::span<const Vec2> positions, int task, int first, int last);

@@ -2,7 +2,9 @@
 
 namespace swarmagg {
 
-StepThreads::~StepThreads() { stop_workers(); }
+StepThreads::~StepThreads() {
+  stop_workers();
+}
 
 void StepThreads::stop_workers() {
   {
