@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "config/paper_density_world.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_spec.hpp"
 #include "run/replicate.hpp"
@@ -18,21 +19,6 @@ namespace swarmagg::bench {
 
 // Steps a Bayindir replicate runs before its state is measured.
 constexpr int kWarmUpSteps = 150;
-
-inline WorldSpec paper_density_world(int n, ControllerType type) {
-  WorldSpec spec;
-  spec.name = "micro-bench";
-  spec.source = "micro-bench";
-  const double side = 180.0 * std::sqrt(n / 150.0);
-  spec.arena = {side, side, Topology::Torus};
-  spec.robots.count = n;
-  spec.controller.type = type;
-  if (type == ControllerType::Collision) spec.controller.collision_mode = CollisionMode::Ghost;
-  if (type == ControllerType::Bayindir) spec.controller.p_leave = 0.001;
-  spec.run.replicates = 1;
-  check_world(spec);
-  return spec;
-}
 
 // A replicate of `spec` (kept alive beside it) after `steps` steps.
 struct SteppedWorld {

@@ -4,29 +4,16 @@
 #include <chrono>
 #include <cmath>
 
-#include "config/world_loader.hpp"
+#include "config/paper_density_world.hpp"
 #include "core/thread_clock.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
 
 WorldSpec bench_world(int n, BenchScenario scenario) {
-  WorldSpec spec;
-  spec.name = "bench";
-  spec.source = "bench";
-  const double side = 180.0 * std::sqrt(n / 150.0);
-  spec.arena = {side, side, Topology::Torus};
-  spec.robots.count = n;
-  if (scenario == BenchScenario::GhostWorstCase) {
-    spec.controller.type = ControllerType::Collision;
-    spec.controller.collision_mode = CollisionMode::Ghost;
-  } else {
-    spec.controller.type = ControllerType::Bayindir;
-    spec.controller.p_leave = 0.001;
-  }
-  spec.run.replicates = 1;
-  check_world(spec);
-  return spec;
+  return paper_density_world(n, scenario == BenchScenario::GhostWorstCase
+                                    ? ControllerType::Collision
+                                    : ControllerType::Bayindir);
 }
 
 namespace {

@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "config/paper_density_world.hpp"
 #include "config/world_loader.hpp"
 #include "run/replicate.hpp"
 
@@ -21,23 +22,10 @@ namespace {
 constexpr int kAgents = 200000;
 constexpr int kSteps = 25;
 
-WorldSpec paper_density_world(ControllerType type) {
-  WorldSpec spec;
-  spec.name = "threads-identity";
-  spec.source = "step_threads_identity_test";
-  const double side = 180.0 * std::sqrt(kAgents / 150.0);
-  spec.arena = {side, side, Topology::Torus};
-  spec.robots.count = kAgents;
-  spec.controller.type = type;
-  if (type == ControllerType::Collision) {
-    spec.controller.collision_mode = CollisionMode::Ghost;
-    spec.controller.tumble = 0.001;
-  } else {
-    spec.controller.p_leave = 0.001;
-  }
-  spec.run.replicates = 1;
+WorldSpec identity_world(ControllerType type) {
+  WorldSpec spec = paper_density_world(kAgents, type);
+  if (type == ControllerType::Collision) spec.controller.tumble = 0.001;
   spec.run.seed = 11;
-  check_world(spec);
   return spec;
 }
 
@@ -84,7 +72,7 @@ void expect_identical(const EndState& one, const EndState& many, int threads) {
 }
 
 void check_thread_counts(ControllerType type) {
-  const WorldSpec spec = paper_density_world(type);
+  const WorldSpec spec = identity_world(type);
   const EndState one = run(spec, 1);
   // The comparison must see a world that did something.
   EXPECT_GT(one.events.encounters, 1000u);
