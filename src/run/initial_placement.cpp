@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "controllers/controller.hpp"
@@ -123,17 +122,21 @@ InitialPlacement random_placement(const WorldSpec& spec, const CounterRng& rng) 
 // Headings stay with their ids (they are independent of positions).
 void number_by_space(const WorldSpec& spec, std::vector<Vec2>& positions) {
   const double band = 2.0 * spec.robots.detection_radius;
-  std::vector<std::uint32_t> order(positions.size());
-  std::iota(order.begin(), order.end(), 0u);
-  auto band_of = [&](std::uint32_t i) { return std::floor(positions[i].y / band); };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const double band_a = band_of(a), band_b = band_of(b);
-    if (band_a != band_b) return band_a < band_b;
-    if (positions[a].x != positions[b].x) return positions[a].x < positions[b].x;
-    return a < b;
-  });
+  // (band, x, draw index) of each agent, sorted once: a total order, so ties cannot reorder.
+  struct Key {
+    double band, x;
+    std::uint32_t index;
+    bool operator<(const Key& o) const {
+      return band != o.band ? band < o.band : x != o.x ? x < o.x : index < o.index;
+    }
+  };
+  std::vector<Key> keys(positions.size());
+  for (std::uint32_t i = 0; i < keys.size(); ++i) {
+    keys[i] = {std::floor(positions[i].y / band), positions[i].x, i};
+  }
+  std::sort(keys.begin(), keys.end());
   std::vector<Vec2> ordered(positions.size());
-  for (std::size_t k = 0; k < order.size(); ++k) ordered[k] = positions[order[k]];
+  for (std::size_t k = 0; k < keys.size(); ++k) ordered[k] = positions[keys[k].index];
   positions.swap(ordered);
 }
 
