@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/agent_array.hpp"
 #include "core/vec2.hpp"
 
 namespace swarmagg {
@@ -29,10 +30,10 @@ constexpr std::string_view to_string(AgentState s) {
 constexpr std::int32_t kNoPartner = -1;
 
 struct SwarmState {
-  std::vector<AgentState> state;
-  std::vector<Vec2> heading;            // unit vector of the current straight-line motion
-  std::vector<double> leave_time_left;  // tu left in LEAVE
-  std::vector<std::int32_t> partner;    // the agent a pair formed with (join: false), or kNoPartner
+  AgentArray<AgentState> state;
+  AgentArray<Vec2> heading;            // unit vector of the current straight-line motion
+  AgentArray<double> leave_time_left;  // tu left in LEAVE
+  AgentArray<std::int32_t> partner;    // the agent a pair formed with (join: false), or kNoPartner
 
   void resize(std::size_t n) {
     state.assign(n, AgentState::Go);

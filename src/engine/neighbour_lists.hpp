@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "core/agent_array.hpp"
 #include "core/vec2.hpp"
 
 namespace swarmagg {
@@ -45,8 +46,8 @@ class NeighbourLists {
   std::size_t total() const { return items_.size(); }
 
  private:
-  std::vector<std::uint32_t> begin_;
-  std::vector<Neighbour> items_;
+  AgentArray<std::uint32_t> begin_;
+  AgentArray<Neighbour> items_;
   std::vector<AgentId> crowded_;  // agents with two or more neighbours (to sort)
 };
 

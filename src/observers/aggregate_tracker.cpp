@@ -8,8 +8,7 @@ namespace {
 // Lists the waiting agents in index order into `waiting` (kept at full length) and returns
 // how many there are. Without branches: every index is written, only a waiting one counts,
 // since waiting and moving agents alternate unpredictably along the indices.
-std::size_t list_waiting(const std::vector<AgentState>& state,
-                         std::vector<std::uint32_t>& waiting) {
+std::size_t list_waiting(std::span<const AgentState> state, AgentArray<std::uint32_t>& waiting) {
   const std::size_t n = state.size();
   if (waiting.size() != n) waiting.resize(n);
   std::uint32_t* out = waiting.data();

@@ -34,11 +34,11 @@ class AggregateTracker {
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);
 
   UnionFind sets_;
-  std::vector<std::int32_t> aggregate_of_;
-  std::vector<std::int32_t> size_of_agent_;
+  AgentArray<std::int32_t> aggregate_of_;
+  AgentArray<std::int32_t> size_of_agent_;
   std::vector<std::int32_t> sizes_;
-  std::vector<std::int32_t> index_of_root_;
-  std::vector<std::uint32_t> waiting_;   // full length; the waiting agents come first
+  AgentArray<std::int32_t> index_of_root_;
+  AgentArray<std::uint32_t> waiting_;    // full length; the waiting agents come first
   std::vector<std::uint32_t> labelled_;  // agents whose labels differ from -1 / 0
   int count_ = 0;
   int largest_ = 0;

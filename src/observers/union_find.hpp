@@ -4,6 +4,8 @@
 #include <numeric>
 #include <vector>
 
+#include "core/agent_array.hpp"
+
 namespace swarmagg {
 
 class UnionFind {
@@ -40,8 +42,8 @@ class UnionFind {
   std::uint32_t size_of(std::uint32_t a) { return size_[find(a)]; }
 
  private:
-  std::vector<std::uint32_t> parent_;
-  std::vector<std::uint32_t> size_;
+  AgentArray<std::uint32_t> parent_;
+  AgentArray<std::uint32_t> size_;
 };
 
 }  // namespace swarmagg

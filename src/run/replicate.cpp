@@ -23,7 +23,7 @@ Replicate::Replicate(const WorldSpec& spec, int index)
   engine_ = make_engine(spec, placement.positions);
   controller_ = make_controller(spec);
   swarm_.resize(placement.positions.size());
-  swarm_.heading = std::move(placement.headings);
+  swarm_.heading.assign(placement.headings.begin(), placement.headings.end());
   commands_.resize(swarm_.size());
   update_aggregates();
 }

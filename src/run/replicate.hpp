@@ -50,7 +50,7 @@ class Replicate {
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
-  std::vector<MotionCommand> commands_;
+  AgentArray<MotionCommand> commands_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG
   bool checking_ = false;

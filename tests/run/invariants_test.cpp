@@ -41,7 +41,7 @@ struct Scene {
         positions(std::move(at)) {
     spec.robots.count = static_cast<int>(positions.size());
     swarm.resize(positions.size());
-    swarm.state = std::move(states);
+    swarm.state.assign(states.begin(), states.end());
     perceive();
   }
 

@@ -51,8 +51,8 @@ EndState run(const WorldSpec& spec, int threads) {
 }
 
 // Bit for bit, not merely equal as numbers (== would take -0.0 for +0.0).
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+template <typename T, typename Allocator>
+bool same_bits(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/agent_array.hpp"
 #include "core/vec2.hpp"
 #include "engine/motion_command.hpp"
 
@@ -74,19 +75,19 @@ class GuardedMotion {
   std::span<const MotionCommand> commands_;
   std::span<const Signal> signals_;
   MotionLimits limits_;
-  std::vector<double> stop_time_;
+  AgentArray<double> stop_time_;
   std::vector<std::uint32_t> halted_;  // agents whose stop time is below dt
   std::vector<Event> heap_;
   // An agent halts at most once per step (later events are never earlier), so versions
   // only need to differ within a step: they count up across steps and are never reset.
-  std::vector<std::uint32_t> version_;
+  AgentArray<std::uint32_t> version_;
   // Pairs of each agent, built on the first halt of a step: linked lists through the pair
   // ends (2 * pair + end), whose heads are valid only where head_stamp_ is this step's.
   bool incidence_built_ = false;
   std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> head_;
-  std::vector<std::uint32_t> head_stamp_;
-  std::vector<std::uint32_t> next_end_;
+  AgentArray<std::uint32_t> head_;
+  AgentArray<std::uint32_t> head_stamp_;
+  AgentArray<std::uint32_t> next_end_;
 };
 
 }  // namespace swarmagg

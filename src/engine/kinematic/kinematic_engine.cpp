@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/agent_array.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
 #include "engine/kinematic/neighbour_search.hpp"
 #include "engine/kinematic/step_threads.hpp"
@@ -170,7 +171,7 @@ class KinematicEngine final : public Engine {
   double sensing_radius_;
   double nominal_speed_;
   double pairs_speed_ = 0.0;
-  std::vector<Vec2> positions_;
+  AgentArray<Vec2> positions_;
   std::vector<std::uint8_t> reflections_;
   StepThreads threads_;
   NeighbourSearch search_;

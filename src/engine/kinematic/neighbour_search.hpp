@@ -44,8 +44,8 @@ class NeighbourSearch {
   void scan(const Plan& plan, std::size_t agents, StepThreads& threads);
 
   struct Found {
-    std::vector<CandidatePair> candidates;
-    std::vector<ClosePair> close;
+    AgentArray<CandidatePair> candidates;
+    AgentArray<ClosePair> close;
   };
 
   void scan_grid(const ArenaGeometry& arena, std::span<const Vec2> positions, double min_cell,
@@ -61,8 +61,8 @@ class NeighbourSearch {
   std::vector<Found> found_;  // per task
   std::span<const CandidatePair> candidates_;
   std::span<const ClosePair> close_;
-  std::vector<CandidatePair> joined_candidates_;
-  std::vector<ClosePair> joined_close_;
+  AgentArray<CandidatePair> joined_candidates_;
+  AgentArray<ClosePair> joined_close_;
 };
 
 }  // namespace swarmagg

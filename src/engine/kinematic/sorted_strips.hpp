@@ -5,16 +5,21 @@
 // agent with a handful of others, reading memory sequentially, with no empty cells to sweep.
 //
 // Each strip ends with a sentinel slot at x = +infinity, so the inner loops need no bound
-// check. Agents move little per step, so `update` starts from the previous order: a stable
-// counting sort by (strip, block), blocks being x-intervals of a few agents each (an agent
-// entering a strip lands next to its place), then an insertion sort by x that has almost
-// nothing left to do. Keeping the order costs O(N) and allocates nothing after warm-up.
+// check. Agents move little per step, so `update` starts from the previous order, in two
+// passes over the slots: the first refreshes positions in place and lifts out the few agents
+// that changed strip; the second copies every strip to the other buffer, merging in its
+// arrivals (sorted by x) and moving back the rare agent that overtook another in x. Keeping
+// the order costs O(N) and allocates nothing after warm-up.
 #include <algorithm>
 #include <cstdint>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 #include <limits>
 #include <span>
 #include <vector>
 
+#include "core/agent_array.hpp"
 #include "core/vec2.hpp"
 #include "engine/kinematic/step_threads.hpp"
 #include "geometry/arena_geometry.hpp"
@@ -48,18 +53,24 @@ class SortedStrips {
  private:
   struct Layout {
     int strips = 1;
-    int blocks = 1;                       // per strip
-    double strip_scale = 1.0;             // strips per unit length (y)
-    double block_scale = 1.0;             // blocks per unit length (x)
-    std::uint32_t cell_of(Vec2 p) const;  // strip * blocks + block
+    double strip_scale = 1.0;  // strips per unit length (y)
+    std::uint32_t strip_of(double y) const;
     bool operator==(const Layout&) const = default;
   };
-  static Layout layout_for(const ArenaGeometry& arena, double window, std::size_t agents);
+  static Layout layout_for(const ArenaGeometry& arena, double window);
+
+  // An agent that changed strip since the last update: where it is now, which strip it
+  // entered and which slot it left.
+  struct Arrival {
+    double x = 0.0;
+    double y = 0.0;
+    std::uint32_t id = 0;
+    std::uint32_t strip = 0;
+    std::uint32_t slot = 0;
+  };
 
   // Slots of strip s: [strip_first(s), strip_sentinel(s)).
-  std::uint32_t strip_first(int s) const {
-    return cell_begin_[static_cast<std::size_t>(s) * layout_.blocks];
-  }
+  std::uint32_t strip_first(int s) const { return strip_begin_[static_cast<std::size_t>(s)]; }
   std::uint32_t strip_sentinel(int s) const { return strip_first(s + 1) - 1; }
 
   bool same_layout(const ArenaGeometry& arena, double window, std::size_t agents) const;
@@ -69,14 +80,13 @@ class SortedStrips {
         StepThreads::slice_begin(static_cast<std::size_t>(strips_), task, tasks));
   }
   void restrip(std::span<const Vec2> positions, StepThreads& threads);
-  void gather_strips(std::span<const Vec2> positions, int task, int first, int last);
-  void scatter_strips(int task, int first, int last);
-  void prefix_counts(int tasks);
-  void sort_strips_by_x(int first, int last);
-  void close_strips();
+  void refresh_strips(std::span<const Vec2> positions, int task, int first, int last);
+  void sort_arrivals(int tasks);
+  void merge_strips(int task, int first, int last);
 
   template <typename Visit>
   void scan_strip(int s, Visit& visit) const;
+  static std::uint32_t advance_past(const double* x, std::uint32_t low, double from);
   template <typename Visit>
   void scan_seam(int s, std::uint32_t a, Visit& visit) const;
 
@@ -85,34 +95,58 @@ class SortedStrips {
   Layout layout_;
   int strips_ = 0;
   std::size_t agents_ = 0;
-  // Slots of cell c (strip * blocks + block) start at cell_begin_[c]; a strip's sentinel
-  // follows its last block. cells + 1 entries.
-  std::vector<std::uint32_t> cell_begin_;
-  std::vector<std::uint32_t> next_begin_;  // the restrip's new bounds
-  std::vector<double> x_;
-  std::vector<double> y_;
-  std::vector<std::uint32_t> id_;
-  // Scratch of the restrip, by old slot: new position and cell; per task, cell counts.
-  std::vector<double> new_x_;
-  std::vector<double> new_y_;
-  std::vector<std::uint32_t> new_id_;
-  std::vector<std::uint32_t> new_cell_;
-  std::vector<std::vector<std::uint32_t>> task_cursor_;
+  // Slots of strip s start at strip_begin_[s]; its sentinel ends it. strips + 1 entries.
+  std::vector<std::uint32_t> strip_begin_;
+  AgentArray<double> x_;
+  AgentArray<double> y_;
+  AgentArray<std::uint32_t> id_;
+  // The restrip's scratch: the other buffer (swapped in when done) and its strip bounds;
+  // the agents that changed strip, per task of the first pass, then by destination strip
+  // (arrival_begin_[s] is the first of strip s).
+  std::vector<std::uint32_t> next_begin_;
+  AgentArray<double> next_x_;
+  AgentArray<double> next_y_;
+  AgentArray<std::uint32_t> next_id_;
+  std::vector<std::vector<Arrival>> leavers_;  // in slot order
+  std::vector<std::uint32_t> departures_;      // per strip
+  std::vector<Arrival> arrivals_;
+  std::vector<std::uint32_t> arrival_begin_;
 };
 
 // Positions are never negative (walls keep bodies inside, the torus wraps); the unsigned
 // minimum only keeps a stray value inside the table.
-inline std::uint32_t SortedStrips::Layout::cell_of(Vec2 p) const {
-  const auto strip = std::min(static_cast<unsigned>(static_cast<int>(p.y * strip_scale)),
-                              static_cast<unsigned>(strips - 1));
-  const auto block = std::min(static_cast<unsigned>(static_cast<int>(p.x * block_scale)),
-                              static_cast<unsigned>(blocks - 1));
-  return strip * static_cast<unsigned>(blocks) + block;
+inline std::uint32_t SortedStrips::Layout::strip_of(double y) const {
+  return std::min(static_cast<unsigned>(static_cast<int>(y * strip_scale)),
+                  static_cast<unsigned>(strips - 1));
 }
 
 template <typename Visit>
 void SortedStrips::for_each_candidate(int first, int last, Visit&& visit) const {
   for (int s = first; s < last; ++s) scan_strip(s, visit);
+}
+
+// The first slot from `low` on whose x is not below `from`, the strip being sorted up to its
+// sentinel. The strip above holds about as many agents as this one, so `low` moves about one
+// slot per agent: four slots are compared at once, without branches (a mispredicted loop exit
+// per agent would cost more), and the four loads do not wait on each other, as they would
+// when stepping one slot at a time: `low` carries from agent to agent, so its update is the
+// scan's critical path. The slots compared may lie past the sentinel (in the next strip or
+// the padding), hence only the leading run of slots below `from` counts.
+inline std::uint32_t SortedStrips::advance_past(const double* x, std::uint32_t low, double from) {
+#ifdef __SSE2__
+  const __m128d bound = _mm_set1_pd(from);
+  const int below = _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low), bound)) |
+                    _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low + 2), bound)) << 2;
+  low += static_cast<std::uint32_t>(__builtin_ctz(~below));  // the leading run's length
+#else
+  const unsigned first = x[low] < from;
+  const unsigned second = first & (x[low + 1] < from);
+  const unsigned third = second & (x[low + 2] < from);
+  const unsigned fourth = third & (x[low + 3] < from);
+  low += first + second + third + fourth;
+#endif
+  while (x[low] < from) ++low;
+  return low;
 }
 
 template <typename Visit>
@@ -132,8 +166,10 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
     while (inner < end && x[inner] - window < 0.0) ++inner;
     while (outer > inner && x[outer - 1] + window >= arena_.width()) --outer;
   }
-  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
-  for (std::uint32_t a = begin; a < end; ++a) {
+  // Scans agent a, given `low` at or before its first candidate in the strip above, and
+  // returns its first candidate there: `low` only moves forward. (Without a strip above,
+  // `low` rests on this strip's sentinel and the loops do nothing.)
+  auto scan_agent = [&](std::uint32_t a, std::uint32_t low) {
     const double xa = x[a], ya = y[a];
     const double high = xa + window;
     // The same strip, ahead in x (the sentinel ends the loop).
@@ -141,21 +177,18 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
       const double dx = x[b] - xa, dy = y[b] - ya;
       if (dx * dx + dy * dy <= window2) visit(a, b);
     }
-    // The strip above, within [xa - window, xa + window]; `low` only moves forward. (Without
-    // a strip above, `low` rests on this strip's sentinel and the loops do nothing.)
-    // Three steps without branches cover most agents (the strip above holds about as many
-    // agents as this one), which spares a mispredicted loop exit per agent.
+    // The strip above, within [xa - window, xa + window].
     const double ya_below = ya - shift_y, from = xa - window;
-    low += x[low] < from;
-    low += x[low] < from;
-    low += x[low] < from;
-    while (x[low] < from) ++low;
+    low = advance_past(x, low, from);
     for (std::uint32_t b = low; x[b] <= high; ++b) {
       const double dx = x[b] - xa, dy = y[b] - ya_below;
       if (dx * dx + dy * dy <= window2) visit(a, b);
     }
     if (a < inner || a >= outer) scan_seam(s, a, visit);
-  }
+    return low;
+  };
+  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
+  for (std::uint32_t a = begin; a < end; ++a) low = scan_agent(a, low);
 }
 
 // Pairs across the x seam of a torus for slot a of strip s: partners near the other edge

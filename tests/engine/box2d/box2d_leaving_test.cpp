@@ -168,7 +168,7 @@ LeaveTally tally_leaves(const WorldSpec& spec, int replicates, int steps) {
     std::vector<std::uint8_t> inside(n, 0);
     std::vector<std::uint8_t> on_rim(n, 0);
     std::vector<Surroundings> around(n);
-    std::vector<AgentState> previous = replicate.swarm().state;
+    AgentArray<AgentState> previous = replicate.swarm().state;
     for (int k = 0; k < steps; ++k) {
       for (std::size_t i = 0; i < n; ++i) {
         around[i] =
