@@ -147,6 +147,9 @@ double time_bare(const Scene& scene, int steps, bool solid) {
 
 Box2DBenchResult bench_box2d(int n, int steps, int repeats, bool solid) {
   const Scene scene = make_scene(n);
+  // Half the arena's side of travel at most (see the header).
+  const int longest = std::max(1, static_cast<int>(0.5 * scene.side / (kSpeed * kDt)) - kWarmup);
+  steps = std::min(steps, longest);
   Box2DBenchResult result;
   result.n = n;
   result.steps = steps;
