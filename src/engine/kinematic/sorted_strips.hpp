@@ -166,10 +166,8 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
     while (inner < end && x[inner] - window < 0.0) ++inner;
     while (outer > inner && x[outer - 1] + window >= arena_.width()) --outer;
   }
-  // Scans agent a, given `low` at or before its first candidate in the strip above, and
-  // returns its first candidate there: `low` only moves forward. (Without a strip above,
-  // `low` rests on this strip's sentinel and the loops do nothing.)
-  auto scan_agent = [&](std::uint32_t a, std::uint32_t low) {
+  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
+  for (std::uint32_t a = begin; a < end; ++a) {
     const double xa = x[a], ya = y[a];
     const double high = xa + window;
     // The same strip, ahead in x (the sentinel ends the loop).
@@ -177,7 +175,8 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
       const double dx = x[b] - xa, dy = y[b] - ya;
       if (dx * dx + dy * dy <= window2) visit(a, b);
     }
-    // The strip above, within [xa - window, xa + window].
+    // The strip above, within [xa - window, xa + window]; `low` only moves forward. (Without
+    // a strip above, `low` rests on this strip's sentinel and the loops do nothing.)
     const double ya_below = ya - shift_y, from = xa - window;
     low = advance_past(x, low, from);
     for (std::uint32_t b = low; x[b] <= high; ++b) {
@@ -185,10 +184,7 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
       if (dx * dx + dy * dy <= window2) visit(a, b);
     }
     if (a < inner || a >= outer) scan_seam(s, a, visit);
-    return low;
-  };
-  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
-  for (std::uint32_t a = begin; a < end; ++a) low = scan_agent(a, low);
+  }
 }
 
 // Pairs across the x seam of a torus for slot a of strip s: partners near the other edge
