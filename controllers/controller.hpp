@@ -10,10 +10,10 @@
 #include "config/world_spec.hpp"
 #include "core/agent_state.hpp"
 #include "core/rng.hpp"
-#include "engine/motion_command.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/motion_command.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
+#include "control_interface/event_counts.hpp"
 
 namespace swarmagg {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/agent_state.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "run/replicate_observer.hpp"
 
 namespace swarmagg {

@@ -9,8 +9,8 @@
 
 #include "config/world_spec.hpp"
 #include "core/vec2.hpp"
-#include "engine/motion_command.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/motion_command.hpp"
+#include "control_interface/neighbour_lists.hpp"
 
 namespace swarmagg {
 

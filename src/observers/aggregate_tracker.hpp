@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/agent_state.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "observers/union_find.hpp"
 
 namespace swarmagg {

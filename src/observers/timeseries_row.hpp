@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
+#include "control_interface/event_counts.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {

@@ -34,9 +34,9 @@
 #include "config/world_spec.hpp"
 #include "core/agent_state.hpp"
 #include "core/vec2.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
+#include "control_interface/event_counts.hpp"
 
 namespace swarmagg {
 

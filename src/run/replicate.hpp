@@ -11,7 +11,7 @@
 #include "core/rng.hpp"
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
+#include "control_interface/event_counts.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {

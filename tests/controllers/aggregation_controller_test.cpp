@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "controller_fixture.hpp"
+#include "controller_testing/controller_fixture.hpp"
 
 namespace swarmagg {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "engine/box2d/periodic_body.hpp"
 #include "engine/box2d/sensor_links.hpp"
-#include "engine/motion_command.hpp"
+#include "control_interface/motion_command.hpp"
 
 namespace swarmagg::box2d {
 

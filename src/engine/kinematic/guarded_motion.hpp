@@ -11,7 +11,7 @@
 
 #include "core/agent_array.hpp"
 #include "core/vec2.hpp"
-#include "engine/motion_command.hpp"
+#include "control_interface/motion_command.hpp"
 
 namespace swarmagg {
 

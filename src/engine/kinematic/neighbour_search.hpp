@@ -14,7 +14,7 @@
 #include "engine/kinematic/sorted_strips.hpp"
 #include "engine/kinematic/step_threads.hpp"
 #include "engine/kinematic/uniform_grid.hpp"
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 
 namespace swarmagg {
 

@@ -11,7 +11,7 @@
 #include "core/vec2.hpp"
 #include "engine/box2d/box2d_engine.hpp"
 #include "engine/engine.hpp"
-#include "engine/motion_command.hpp"
+#include "control_interface/motion_command.hpp"
 #include "geometry/arena_geometry.hpp"
 
 namespace swarmagg::testing {
