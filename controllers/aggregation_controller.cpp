@@ -66,7 +66,7 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   if (!rules_.leave) return;
   const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
   const LeaveRule& rule = rules_.leave_rule;
-  const int size = input.aggregates.size_of_agent()[agent];
+  const int size = input.aggregates.size_of_agent[agent];
   const bool counts_neighbours =
       rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
   const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
@@ -81,7 +81,7 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
 // aggregate of two that both leave dissipates once; of five losing two, shrinks twice.
 void AggregationController::count_leave(std::uint32_t agent, const ControllerInput& input,
                                         EventCounts& events) {
-  const std::int32_t aggregate = input.aggregates.aggregate_of()[agent];
+  const std::int32_t aggregate = input.aggregates.aggregate_of[agent];
   if (aggregate < 0) return;
   std::int32_t& left = leavers_left_[aggregate];
   if (left >= 3) ++events.shrinks;
@@ -167,13 +167,7 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
 
 Vec2 AggregationController::escape_direction(std::uint32_t agent, const ControllerInput& input,
                                              Vec2 fallback) const {
-  Vec2 towards;
-  for (const Neighbour& nb : input.neighbours.of(agent)) {
-    if (nb.distance > rules_.detection_radius) break;
-    towards += nb.offset;
-  }
-  const double length = norm(towards);
-  return length > 1e-12 ? towards * (-1.0 / length) : fallback;
+  return heading_away(input.neighbours.of(agent), rules_.detection_radius, fallback);
 }
 
 // The command of each state, looked up rather than branched on: states of neighbouring
@@ -260,7 +254,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   // assign() reallocates to the exact size whenever it grows, which is every step while
   // aggregates form; room for the most there can be (two members each) is reserved once.
   if (leavers_left_.capacity() < n / 2) leavers_left_.reserve(n / 2);
-  leavers_left_.assign(input.aggregates.sizes().begin(), input.aggregates.sizes().end());
+  leavers_left_.assign(input.aggregates.sizes.begin(), input.aggregates.sizes.end());
   turn_at_walls(input.reflections, swarm);
   list_by_state(n);
   // Leaving and waiting agents decide from the previous states only, so each group can be

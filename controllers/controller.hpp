@@ -8,21 +8,13 @@
 #include <span>
 
 #include "config/world_spec.hpp"
+#include "control_interface/controller_input.hpp"
+#include "control_interface/event_counts.hpp"
+#include "control_interface/motion_command.hpp"
 #include "core/agent_state.hpp"
 #include "core/rng.hpp"
-#include "control_interface/motion_command.hpp"
-#include "control_interface/neighbour_lists.hpp"
-#include "observers/aggregate_tracker.hpp"
-#include "control_interface/event_counts.hpp"
 
 namespace swarmagg {
-
-struct ControllerInput {
-  std::int64_t step = 0;
-  const NeighbourLists& neighbours;
-  std::span<const std::uint8_t> reflections;  // engine.hpp's Reflection bits
-  const AggregateTracker& aggregates;         // of the states the decision starts from
-};
 
 class Controller {
  public:
@@ -33,6 +25,7 @@ class Controller {
                       std::span<MotionCommand> commands, EventCounts& events) = 0;
 };
 
+// The controller `spec.controller.type` registered (controllers/controller_registry.hpp).
 std::unique_ptr<Controller> make_controller(const WorldSpec& spec);
 
 // A uniformly random unit heading for `agent` at `step`.
@@ -40,6 +33,10 @@ inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32
   constexpr double kTwoPi = 6.283185307179586;
   return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, Draw::Heading));
 }
+
+// The unit vector away from the agents within `radius` among `neighbours` (nearest first):
+// opposite the sum of the offsets to them, or `fallback` when they cancel out.
+Vec2 heading_away(std::span<const Neighbour> neighbours, double radius, Vec2 fallback);
 
 // Mirrors headings the walls reflected during the last step.
 void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm);

@@ -1,7 +1,5 @@
-#include "controllers/aggregation_controller.hpp"
+#include "control_interface/wall_contacts.hpp"
 #include "controllers/controller.hpp"
-#include "controllers/ghost_controller.hpp"
-#include "engine/engine.hpp"
 
 namespace swarmagg {
 
@@ -12,19 +10,14 @@ void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm)
   }
 }
 
-std::unique_ptr<Controller> make_controller(const WorldSpec& spec) {
-  switch (spec.controller.type) {
-    case ControllerType::Bayindir:
-      return std::make_unique<AggregationController>(bayindir_rules(spec));
-    case ControllerType::Soysal:
-      return std::make_unique<AggregationController>(soysal_rules(spec));
-    case ControllerType::Collision:
-      if (spec.controller.collision_mode == CollisionMode::Ghost) {
-        return std::make_unique<GhostController>(spec.robots.speed, spec.controller.tumble);
-      }
-      return std::make_unique<AggregationController>(collision_paper_rules(spec));
+Vec2 heading_away(std::span<const Neighbour> neighbours, double radius, Vec2 fallback) {
+  Vec2 towards;
+  for (const Neighbour& nb : neighbours) {
+    if (nb.distance > radius) break;
+    towards += nb.offset;
   }
-  return nullptr;
+  const double length = norm(towards);
+  return length > 1e-12 ? towards * (-1.0 / length) : fallback;
 }
 
 }  // namespace swarmagg

@@ -1,5 +1,7 @@
 #include "compare/arm_comparison.hpp"
 
+#include "controllers/controller_registry.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -12,19 +14,6 @@ LeaveSplit split_attempts(const std::vector<std::vector<LeaveAttempt>>& per_repl
     }
   }
   return split;
-}
-
-bool world_has_leaving(const WorldSpec& spec) {
-  if (!spec.controller.leave) return false;
-  switch (spec.controller.type) {
-    case ControllerType::Bayindir:
-      return spec.controller.p_leave > 0.0;
-    case ControllerType::Soysal:
-      return spec.controller.p0 > 0.0;
-    case ControllerType::Collision:
-      return spec.controller.collision_mode == CollisionMode::Paper;
-  }
-  return false;
 }
 
 }  // namespace
@@ -53,7 +42,8 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b, int rim_below) {
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
   c.rim_below = rim_below;
-  c.has_leaving = world_has_leaving(a.spec) || world_has_leaving(b.spec);
+  c.has_leaving =
+      controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;
   return c;
 }
 

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "config/controller_catalog.hpp"
 #include "config/did_you_mean.hpp"
 #include "config/world_keys.hpp"
 #include "core/errors.hpp"
@@ -367,9 +368,11 @@ void check_world(const WorldSpec& spec) {
                    " cover " + format_number(std::round(coverage * 100.0)) +
                    "% of the arena; at most 50% can be placed without overlap");
   }
-  if (spec.controller.type == ControllerType::Soysal && spec.controller.approach_radius <= s) {
-    impossible(spec, "controller.approach_radius",
-               "must exceed robots.detection_radius (" + format_number(s) + ")");
+  const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
+  if (controller.check) {
+    if (const std::optional<KeyProblem> problem = controller.check(spec)) {
+      impossible(spec, problem->key, problem->why);
+    }
   }
   // Compared before rounding: steps() cannot represent a count beyond 2^63.
   if (spec.run.duration / spec.engine.dt > 1e12) {

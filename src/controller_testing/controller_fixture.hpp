@@ -3,8 +3,9 @@
 // runs one decision, so controller tests need no engine.
 #include <vector>
 
-#include "controllers/controller.hpp"
+#include "controllers/controller_registry.hpp"
 #include "geometry/arena_geometry.hpp"
+#include "observers/aggregate_tracker.hpp"
 
 namespace swarmagg::testing {
 
@@ -44,9 +45,9 @@ struct ControllerFixture {
       }
       neighbours.close_agent(i);
     }
-    const bool partners = !spec.controller.join;
     aggregates.update(neighbours, swarm, spec.robots.detection_radius,
-                      partners ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
+                      controller_rules(spec).partners_only ? AggregateLinks::PartnersOnly
+                                                           : AggregateLinks::Proximity);
   }
 
   void decide() {
@@ -54,7 +55,7 @@ struct ControllerFixture {
     perceive();
     commands.assign(positions.size(), MotionCommand{});
     reflections.assign(positions.size(), 0);
-    const ControllerInput input{step++, neighbours, reflections, aggregates};
+    const ControllerInput input{step++, neighbours, reflections, aggregates.facts()};
     controller->decide(input, swarm, CounterRng(11), commands, events);
   }
 };

@@ -1,12 +1,13 @@
 #include "reproduce/paper_predictions.hpp"
 
+#include "controllers/controller_registry.hpp"
 #include "models/predictions.hpp"
 
 namespace swarmagg {
 
 std::vector<VariantPrediction> paper_predictions(const WorldSpec& world) {
   std::vector<VariantPrediction> predictions = predict(world);
-  if (world.controller.type == ControllerType::Soysal || world.model.kappa == Kappa::Paper) {
+  if (controller_rules(world).model == ModelFamily::Soysal || world.model.kappa == Kappa::Paper) {
     return predictions;
   }
   WorldSpec fitted = world;

@@ -4,45 +4,36 @@
 #include "run/invariants.hpp"
 
 namespace swarmagg {
-namespace {
-
-AggregateLinks links_for(const WorldSpec& spec) {
-  const bool partners_only =
-      !spec.controller.join || (spec.controller.type == ControllerType::Collision &&
-                                spec.controller.collision_mode == CollisionMode::Paper);
-  return partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity;
-}
-
-}  // namespace
 
 Replicate::Replicate(const WorldSpec& spec, int index)
     : spec_(spec),
       index_(index),
-      rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))) {
+      rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))),
+      rules_(controller_rules(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
   engine_ = make_engine(spec, placement.positions);
   controller_ = make_controller(spec);
   swarm_.resize(placement.positions.size());
   swarm_.heading.assign(placement.headings.begin(), placement.headings.end());
   commands_.resize(swarm_.size());
+  signals_.resize(swarm_.size());
   update_aggregates();
 }
 
 Replicate::~Replicate() = default;
 
 void Replicate::update_aggregates() {
-  aggregates_.update(engine_->neighbours(), swarm_, spec_.robots.detection_radius,
-                     links_for(spec_));
+  aggregates_.update(
+      engine_->neighbours(), swarm_, spec_.robots.detection_radius,
+      rules_.partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
 }
 
 void Replicate::step() {
-  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_};
+  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(),
+                              aggregates_.facts()};
   controller_->decide(input, swarm_, rng_, commands_, events_);
-  // An agent displays its state: the state array is the signal array.
-  static_assert(sizeof(AgentState) == sizeof(Signal));
-  const std::span<const Signal> signals(reinterpret_cast<const Signal*>(swarm_.state.data()),
-                                        swarm_.size());
-  events_.encounters += engine_->step(commands_, signals).encounters;
+  write_signals(swarm_.state, signals_);  // an agent displays its state
+  events_.encounters += engine_->step(commands_, signals_).encounters;
   ++step_;
   update_aggregates();
   if (checking_) check_invariants(*this);

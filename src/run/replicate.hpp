@@ -6,12 +6,14 @@
 #include <memory>
 
 #include "config/world_spec.hpp"
-#include "controllers/controller.hpp"
+#include "control_interface/controller_rules.hpp"
+#include "control_interface/event_counts.hpp"
+#include "control_interface/state_signals.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/agent_state.hpp"
 #include "core/rng.hpp"
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "control_interface/event_counts.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {
@@ -30,6 +32,8 @@ class Replicate {
   double time() const { return static_cast<double>(step_) * spec_.engine.dt; }
 
   const WorldSpec& spec() const { return spec_; }
+  // What the world's controller allows, computed once by the controller.
+  const ControllerRules& rules() const { return rules_; }
   int index() const { return index_; }
   std::uint64_t seed() const { return rng_.key(); }
   const Engine& engine() const { return *engine_; }
@@ -45,12 +49,14 @@ class Replicate {
   const WorldSpec& spec_;
   int index_;
   CounterRng rng_;
+  ControllerRules rules_;
   std::unique_ptr<Engine> engine_;
   std::unique_ptr<Controller> controller_;
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
   AgentArray<MotionCommand> commands_;
+  AgentArray<Signal> signals_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG
   bool checking_ = false;

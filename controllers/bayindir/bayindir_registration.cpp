@@ -1,0 +1,37 @@
+// Bayindir's GO / WAIT / LEAVE controller (SPEC 3): the aggregation state machine with a
+// constant leave probability p per step; the experiment rules switch joining and leaving.
+#include "controllers/aggregation_controller.hpp"
+#include "controllers/controller_registry.hpp"
+
+namespace swarmagg {
+namespace {
+
+double detection_radius(const WorldSpec& spec) {
+  return spec.robots.detection_radius;
+}
+
+ControllerRules rules(const WorldSpec& spec) {
+  ControllerRules r;
+  r.allowed_states = state_bit(AgentState::Go) | state_bit(AgentState::Wait);
+  if (spec.controller.leave) r.allowed_states |= state_bit(AgentState::Leave);
+  r.joins = spec.controller.join;
+  r.leaves = spec.controller.leave;
+  r.leaving_happens = spec.controller.leave && spec.controller.p_leave > 0.0;
+  r.partners_only = !spec.controller.join;
+  r.model = ModelFamily::Bayindir;
+  return r;
+}
+
+}  // namespace
+
+ControllerRegistration bayindir_registration() {
+  ControllerRegistration r;
+  r.world = {"bayindir", {}, detection_radius, detection_radius, nullptr};
+  r.make = [](const WorldSpec& spec) -> std::unique_ptr<Controller> {
+    return std::make_unique<AggregationController>(bayindir_rules(spec));
+  };
+  r.rules = rules;
+  return r;
+}
+
+}  // namespace swarmagg
