@@ -3,10 +3,14 @@
 #include "core/errors.hpp"
 
 // Every controller, once: X(name) stands for name_registration(), defined in controllers/name/.
+// Adding a controller adds one line above the last one.
+// clang-format off
 #define SWARMAGG_CONTROLLERS(X) \
   X(bayindir)                   \
   X(soysal)                     \
-  X(collision)
+  X(collision)                  \
+  /* end of the controllers */
+// clang-format on
 
 namespace swarmagg {
 
