@@ -9,6 +9,7 @@
   X(bayindir)                   \
   X(soysal)                     \
   X(collision)                  \
+  X(cockroach)                  \
   /* end of the controllers */
 // clang-format on
 

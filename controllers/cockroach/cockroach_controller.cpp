@@ -1,0 +1,142 @@
+#include "controllers/cockroach/cockroach_controller.hpp"
+
+#include <algorithm>
+
+#include "control_interface/state_signals.hpp"
+
+namespace swarmagg {
+namespace {
+
+// This controller's own random purpose: distinct from every core Draw, so its stop draws are
+// independent of the leave, heading and tumble draws of the same agent and step.
+constexpr Draw kStopDraw = static_cast<Draw>(0x636b);  // "ck"
+
+}  // namespace
+
+double CockroachController::entry(const std::vector<double>& list, std::size_t n) {
+  return list[std::min(n, list.size() - 1)];
+}
+
+int CockroachController::waiting_perceived(std::uint32_t agent,
+                                           const ControllerInput& input) const {
+  int count = 0;
+  for (const Neighbour& nb : input.neighbours.of(agent)) {
+    if (nb.distance > parameters_.detection_radius) break;  // nearest first
+    count += previous_[nb.id] == AgentState::Wait;
+  }
+  return count;
+}
+
+void CockroachController::leave(std::uint32_t agent, const ControllerInput& input,
+                                SwarmState& swarm) {
+  swarm.state[agent] = AgentState::Leave;
+  swarm.leave_time_left[agent] = parameters_.leave_timeout;
+  swarm.heading[agent] =
+      heading_away(input.neighbours.of(agent), parameters_.detection_radius, swarm.heading[agent]);
+}
+
+// Members of one aggregate leaving in the same step are counted one after another, as in
+// SPEC 3: an aggregate of two that both leave dissipates once; of five losing two, shrinks twice.
+void CockroachController::count_leave(std::uint32_t agent, const ControllerInput& input,
+                                      EventCounts& events) {
+  const std::int32_t aggregate = input.aggregates.aggregate_of[agent];
+  if (aggregate < 0) return;
+  std::int32_t& left = leavers_left_[aggregate];
+  if (left >= 3) ++events.shrinks;
+  if (left == 2) ++events.dissipations;
+  --left;
+}
+
+void CockroachController::pair_searchers(SwarmState& swarm, EventCounts& events) {
+  std::sort(pairs_.begin(), pairs_.end(), [](const SearchPair& x, const SearchPair& y) {
+    if (x.distance != y.distance) return x.distance < y.distance;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  for (const SearchPair& p : pairs_) {
+    if (stopped_[p.a] || stopped_[p.b]) continue;
+    stopped_[p.a] = stopped_[p.b] = 1;
+    swarm.state[p.a] = swarm.state[p.b] = AgentState::Wait;
+    ++events.creations;
+  }
+}
+
+void CockroachController::write_commands(const SwarmState& swarm,
+                                         std::span<MotionCommand> commands) const {
+  constexpr SignalMask kGo = mask_of(signal_of(AgentState::Go));
+  constexpr SignalMask kWait = mask_of(signal_of(AgentState::Wait));
+  for (std::size_t i = 0; i < swarm.size(); ++i) {
+    const Vec2 moving = swarm.heading[i] * parameters_.speed;
+    switch (swarm.state[i]) {
+      case AgentState::Wait:
+        commands[i] = MotionCommand{{0.0, 0.0}, 0, kWait, 0};
+        break;
+      case AgentState::Leave:
+        commands[i] = MotionCommand{moving, 0, kWait, kWait};
+        break;
+      default:  // searching: halt where another searcher comes within s (to pair up there)
+        commands[i] = MotionCommand{moving, kGo, kWait, 0};
+        break;
+    }
+  }
+}
+
+void CockroachController::decide(const ControllerInput& input, SwarmState& swarm,
+                                 const CounterRng& rng, std::span<MotionCommand> commands,
+                                 EventCounts& events) {
+  const auto n = static_cast<std::uint32_t>(swarm.size());
+  const auto step = static_cast<std::uint64_t>(input.step);
+  previous_.assign(swarm.state.begin(), swarm.state.end());
+  stopped_.assign(n, 0);
+  leavers_left_.assign(input.aggregates.sizes.begin(), input.aggregates.sizes.end());
+  pairs_.clear();
+  turn_at_walls(input.reflections, swarm);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    switch (previous_[i]) {
+      case AgentState::Leave:
+        swarm.leave_time_left[i] -= parameters_.dt;
+        if (swarm.leave_time_left[i] > 1e-9) {
+          swarm.heading[i] =
+              heading_away(input.neighbours.of(i), parameters_.detection_radius, swarm.heading[i]);
+        } else {
+          swarm.state[i] = AgentState::Go;
+          swarm.heading[i] = random_heading(rng, input.step, i);
+        }
+        break;
+      case AgentState::Wait: {
+        const auto waiting = static_cast<std::size_t>(waiting_perceived(i, input));
+        if (rng.uniform(step, i, Draw::Leave) < entry(parameters_.leave_probability, waiting)) {
+          leave(i, input, swarm);
+          count_leave(i, input, events);
+        }
+        break;
+      }
+      default: {
+        const int waiting = waiting_perceived(i, input);
+        if (waiting == 0) {
+          for (const Neighbour& nb : input.neighbours.of(i)) {
+            if (nb.distance > parameters_.detection_radius) break;
+            if (nb.id > i && previous_[nb.id] == AgentState::Go &&
+                waiting_perceived(nb.id, input) == 0)
+              pairs_.push_back({nb.distance, i, nb.id});
+          }
+          break;
+        }
+        const double p = entry(parameters_.stop_probability, static_cast<std::size_t>(waiting - 1));
+        if (rng.uniform(step, i, kStopDraw) < p) {
+          swarm.state[i] = AgentState::Wait;
+          stopped_[i] = 1;
+          ++events.growths;
+        } else {
+          // Walks on: away from the waiting agents it met, so it does not push into them.
+          swarm.heading[i] =
+              heading_away(input.neighbours.of(i), parameters_.detection_radius, swarm.heading[i]);
+        }
+        break;
+      }
+    }
+  }
+  pair_searchers(swarm, events);
+  write_commands(swarm, commands);
+}
+
+}  // namespace swarmagg
