@@ -8,6 +8,8 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, double detection_radius, const Sha
     : detection_radius_(detection_radius), rules_(rules) {
   tally_.resize(agent_count);
   open_.reserve(static_cast<std::size_t>(agent_count));  // one attempt per agent at most
+  // Room for as many remembered members as there are agents, so that most runs never grow it.
+  former_.reserve(static_cast<std::size_t>(agent_count));
 }
 
 void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
@@ -77,14 +79,17 @@ bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& ne
   return true;
 }
 
+// In place: open attempts keep the order they started in, so their ranges lie in
+// increasing order and each moves down, never onto a range still to be moved.
 void LeaveEpisodes::compact_former() {
-  compacted_.clear();
+  std::size_t end = 0;
   for (OpenAttempt& attempt : open_) {
     const auto begin = former_.begin() + attempt.first;
-    attempt.first = static_cast<std::uint32_t>(compacted_.size());
-    compacted_.insert(compacted_.end(), begin, begin + attempt.count);
+    std::copy(begin, begin + attempt.count, former_.begin() + static_cast<std::ptrdiff_t>(end));
+    attempt.first = static_cast<std::uint32_t>(end);
+    end += attempt.count;
   }
-  former_.swap(compacted_);
+  former_.resize(end);
   dead_former_ = 0;
 }
 

@@ -11,8 +11,10 @@
 // observe_decision() runs once per step, between the controller's decision and the engine's
 // move, so the rim and the escape are judged on exactly what the controller saw when it
 // decided. It also counts that step's aggregates by size (the exposure). Its cost is linear
-// in the agents in aggregates plus the open attempts and the members they remember; it
-// allocates only up to high-water marks (the open attempts' remembered members).
+// in the agents in aggregates plus the open attempts and the members they remember. It
+// allocates nothing per step: room for N remembered members is reserved up front, and only
+// worlds whose open attempts remember more (many leavers of large aggregates at once) grow
+// it, to a high-water mark.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -59,7 +61,6 @@ class LeaveEpisodes {
   AggregateMembers members_;
   std::vector<OpenAttempt> open_;
   std::vector<AgentId> former_;  // sorted ranges, one per open attempt (and dead ones)
-  std::vector<AgentId> compacted_;
   std::size_t dead_former_ = 0;  // entries of former_ that belong to ended attempts
 };
 

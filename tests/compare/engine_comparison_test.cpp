@@ -42,7 +42,8 @@ TEST(EngineComparison, WritesTheFolder) {
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   for (const char* name :
        {"summary.txt", "compare.json", "noa.csv", "noa.gp", "noa.png", "final_noa.csv", "sizes.csv",
-        "final.gp", "final.png", "kinematic/timeseries.csv", "box2d/timeseries.csv"}) {
+        "final.gp", "final.png", "escape_rate.csv", "escape_rate.gp", "escape_rate.png",
+        "kinematic/timeseries.csv", "box2d/timeseries.csv"}) {
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
   }
   std::filesystem::remove_all(out);
