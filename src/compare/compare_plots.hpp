@@ -23,9 +23,10 @@ std::string histogram_csv(const std::string& value_name, const std::string& labe
                           const std::vector<double>& values_a, const std::string& label_b,
                           const std::vector<double>& values_b);
 
-// escape_rate.csv: size, then each arm's rate (escapes / aggregate_time) and its 95% half
-// width (NaN where the arm never had an aggregate of that size), then the two laws, with p
-// the per-step leave probability of a member of an aggregate of that size.
+// escape_rate.csv: size, then each arm's escapes, aggregate_time, rate (escapes /
+// aggregate_time) and the rate's 95% half width (NaN where the arm never had an aggregate of
+// that size), then the two laws, with p the per-step leave probability of a member of an
+// aggregate of that size.
 std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Comparison& c);
 
 void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,

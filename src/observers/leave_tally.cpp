@@ -19,6 +19,14 @@ void LeaveTally::resize(int agent_count) {
   aggregate_steps_by_size.resize(sizes, 0);
 }
 
+// Divided by the steps per tu rather than multiplied by dt: 119754 steps of 0.1 tu give
+// 11975.4, not 11975.400000000001.
+double LeaveTally::aggregate_time(int size, double dt) const {
+  const auto k = static_cast<std::size_t>(size);
+  if (k >= aggregate_steps_by_size.size()) return 0.0;
+  return static_cast<double>(aggregate_steps_by_size[k]) / (1.0 / dt);
+}
+
 LeaveTally& LeaveTally::operator+=(const LeaveTally& other) {
   attempts += other.attempts;
   escapes += other.escapes;

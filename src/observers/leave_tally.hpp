@@ -34,6 +34,8 @@ struct LeaveTally {
 
   // Room for every size an aggregate of `agent_count` agents can have.
   void resize(int agent_count);
+  // The summed tu that aggregates of `size` existed (0 beyond the sizes counted).
+  double aggregate_time(int size, double dt) const;
   int largest_size() const { return static_cast<int>(aggregate_steps_by_size.size()) - 1; }
   LeaveTally& operator+=(const LeaveTally& other);
 };

@@ -15,11 +15,10 @@ nlohmann::json leave_by_size_json(const LeaveTally& leave, double dt) {
   for (int m = 2; m <= leave.largest_size(); ++m) {
     const auto k = static_cast<std::size_t>(m);
     if (leave.aggregate_steps_by_size[k] == 0 && leave.attempts_by_size[k] == 0) continue;
-    rows.push_back(
-        {{"size", m},
-         {"attempts", leave.attempts_by_size[k]},
-         {"escapes", leave.escapes_by_size[k]},
-         {"aggregate_time", static_cast<double>(leave.aggregate_steps_by_size[k]) * dt}});
+    rows.push_back({{"size", m},
+                    {"attempts", leave.attempts_by_size[k]},
+                    {"escapes", leave.escapes_by_size[k]},
+                    {"aggregate_time", leave.aggregate_time(m, dt)}});
   }
   return rows;
 }
