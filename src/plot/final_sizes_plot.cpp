@@ -58,12 +58,12 @@ void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
                    run.world.name + ": aggregate sizes at the end (t = " + csv_number(end_time) +
                        " tu), mean of " + std::to_string(sizes.size()) + " replicate" +
                        (sizes.size() == 1 ? "" : "s"));
-  script +=
-      "set xlabel 'aggregate size (agents)'\nset ylabel 'aggregates of that size'\n"
-      "set key outside right top noenhanced\nset yrange [0:*]\nset xrange [1.5:" +
-      std::to_string(largest) +
-      ".5]\nset xtics 1\nset boxwidth 0.7\n"
-      "set style fill solid 0.5 border -1\n";
+  script += std::string(kKeyBelowPlot) +
+            "set xlabel 'aggregate size (agents)'\nset ylabel 'aggregates of that size'\n"
+            "set yrange [0:*]\nset xrange [1.5:" +
+            std::to_string(largest) +
+            ".5]\nset xtics 1\nset boxwidth 0.7\n"
+            "set style fill solid 0.5 border -1\n";
   if (largest > 30) script += "set xtics autofreq\n";
   script += "plot " + data + " skip 1 using 1:2 with boxes lc rgb '#7f7f7f' title 'simulation'";
   script += model_curve_lines(model, files, "model", "linespoints lw 2 pt 7 ps 1.2", 0.0);

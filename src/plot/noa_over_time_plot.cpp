@@ -40,10 +40,10 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
   std::string script = png_preamble(files.size, files.png_name(),
                                     run.world.name + ": number of aggregates, " +
                                         std::to_string(run.world.robots.count) + " agents");
-  script +=
-      "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\n"
-      "set key outside right top noenhanced\nset yrange [0:*]\n"
-      "set style fill transparent solid 0.3 noborder\n";
+  script += std::string(kKeyBelowPlot) +
+            "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\n"
+            "set yrange [0:*]\n"
+            "set style fill transparent solid 0.3 noborder\n";
   script += "plot " + data + " skip 1 using 1:3:4 with filledcurves lc rgb '#7f7f7f' title " +
             gnuplot_quote("95% CI of the mean");
   if (thin_lines) {

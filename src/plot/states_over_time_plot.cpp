@@ -51,10 +51,10 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
       png_preamble(files.size, files.png_name(),
                    run.world.name + ": agents per state, mean of " + std::to_string(replicates) +
                        " replicate" + (replicates == 1 ? "" : "s"));
-  script +=
-      "set xlabel 'time (tu)'\nset ylabel 'agents'\nset key outside right top\n"
-      "set yrange [0:" +
-      std::to_string(run.world.robots.count) + "]\n";
+  script += std::string(kKeyBelowPlot) +
+            "set xlabel 'time (tu)'\nset ylabel 'agents'\n"
+            "set yrange [0:" +
+            std::to_string(run.world.robots.count) + "]\n";
   script += "plot ";
   for (std::size_t k = 0; k < states.size(); ++k) {
     script += (k == 0 ? "" : ", \\\n  ") + data + " skip 1 using 1:" + std::to_string(k + 2) +
