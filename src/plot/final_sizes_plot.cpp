@@ -58,7 +58,7 @@ void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
                    run.world.name + ": aggregate sizes at the end (t = " + csv_number(end_time) +
                        " tu), mean of " + std::to_string(sizes.size()) + " replicate" +
                        (sizes.size() == 1 ? "" : "s"));
-  script += std::string(kKeyBelowPlot) +
+  script += std::string(kKeyAbovePlot) +
             "set xlabel 'aggregate size (agents)'\nset ylabel 'aggregates of that size'\n"
             "set yrange [0:*]\nset xrange [1.5:" +
             std::to_string(largest) +

@@ -40,7 +40,7 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
   std::string script = png_preamble(files.size, files.png_name(),
                                     run.world.name + ": number of aggregates, " +
                                         std::to_string(run.world.robots.count) + " agents");
-  script += std::string(kKeyBelowPlot) +
+  script += std::string(kKeyAbovePlot) +
             "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\n"
             "set yrange [0:*]\n"
             "set style fill transparent solid 0.3 noborder\n";

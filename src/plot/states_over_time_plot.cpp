@@ -51,7 +51,7 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
       png_preamble(files.size, files.png_name(),
                    run.world.name + ": agents per state, mean of " + std::to_string(replicates) +
                        " replicate" + (replicates == 1 ? "" : "s"));
-  script += std::string(kKeyBelowPlot) +
+  script += std::string(kKeyAbovePlot) +
             "set xlabel 'time (tu)'\nset ylabel 'agents'\n"
             "set yrange [0:" +
             std::to_string(run.world.robots.count) + "]\n";

@@ -100,7 +100,7 @@ void plot_against(const std::vector<std::string>& keys, std::size_t p,
   std::string script =
       png_preamble(files.size, files.png_name(),
                    "final NOA against " + keys[p] + ": mean over replicates, 95% CI of the mean");
-  script += std::string(kKeyBelowPlot) + "set xlabel " + gnuplot_quote(keys[p]) +
+  script += std::string(kKeyAbovePlot) + "set xlabel " + gnuplot_quote(keys[p]) +
             " noenhanced\nset ylabel 'final number of aggregates (NOA)'\n"
             "set yrange [0:*]\nset offsets graph 0.05, "
             "graph 0.05, 0, 0\n";
