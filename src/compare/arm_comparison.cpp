@@ -1,22 +1,9 @@
 #include "compare/arm_comparison.hpp"
 
 #include "controllers/controller_registry.hpp"
+#include "run/aggregate_summary.hpp"
 
 namespace swarmagg {
-namespace {
-
-LeaveSplit split_attempts(const std::vector<std::vector<LeaveAttempt>>& per_replicate) {
-  LeaveSplit split;
-  for (const auto& attempts : per_replicate) {
-    for (const LeaveAttempt& a : attempts) {
-      (a.rim ? split.rim_attempts : split.inside_attempts) += 1;
-      if (a.got_out) (a.rim ? split.rim_out : split.inside_out) += 1;
-    }
-  }
-  return split;
-}
-
-}  // namespace
 
 ArmSummary summarize_arm(const ArmResult& arm) {
   ArmSummary s;
@@ -30,18 +17,17 @@ ArmSummary summarize_arm(const ArmResult& arm) {
   }
   s.noa = mean_interval(s.final_noa);
   s.encounter_rate = mean_interval(s.encounter_rates);
-  s.leave = split_attempts(arm.leave_attempts);
+  s.leave = pooled_leave(arm.run);
   return s;
 }
 
-Comparison compare_arms(const ArmResult& a, const ArmResult& b, int rim_below) {
+Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   Comparison c;
   c.a = summarize_arm(a);
   c.b = summarize_arm(b);
   c.noa_difference = welch_interval(c.a.final_noa, c.b.final_noa);
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
-  c.rim_below = rim_below;
   c.has_leaving =
       controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;
   return c;

@@ -32,6 +32,8 @@ class AggregateTracker {
   std::span<const std::int32_t> sizes() const { return sizes_; }
   // What a controller may read of these (control_interface/aggregate_facts.hpp).
   AggregateFacts facts() const { return {sizes_, aggregate_of_, size_of_agent_}; }
+  // The agents in an aggregate, in index order.
+  std::span<const std::uint32_t> aggregated_agents() const { return labelled_; }
 
  private:
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);

@@ -9,7 +9,9 @@ Replicate::Replicate(const WorldSpec& spec, int index)
     : spec_(spec),
       index_(index),
       rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))),
-      rules_(controller_rules(spec)) {
+      rules_(controller_rules(spec)),
+      leave_episodes_(spec.robots.count, spec.robots.detection_radius,
+                      ShapeRules::for_world(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
   engine_ = make_engine(spec, placement.positions);
   controller_ = make_controller(spec);
@@ -32,6 +34,8 @@ void Replicate::step() {
   const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(),
                               aggregates_.facts()};
   controller_->decide(input, swarm_, rng_, commands_, events_);
+  leave_episodes_.observe_decision(aggregates_, engine_->neighbours(), engine_->positions(),
+                                   swarm_.state);
   write_signals(swarm_.state, signals_);  // an agent displays its state
   events_.encounters += engine_->step(commands_, signals_).encounters;
   ++step_;

@@ -14,6 +14,7 @@
 #include "core/rng.hpp"
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
+#include "observers/leave_episodes.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {
@@ -41,6 +42,8 @@ class Replicate {
   const SwarmState& swarm() const { return swarm_; }
   const AggregateTracker& aggregates() const { return aggregates_; }
   const EventCounts& events() const { return events_; }
+  // The LEAVE episodes so far, judged between each decision and the move that follows it.
+  const LeaveEpisodes& leave_episodes() const { return leave_episodes_; }
   SwarmSnapshot snapshot() const;
 
  private:
@@ -55,6 +58,7 @@ class Replicate {
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
+  LeaveEpisodes leave_episodes_;
   AgentArray<MotionCommand> commands_;
   AgentArray<Signal> signals_;
   std::int64_t step_ = 0;
