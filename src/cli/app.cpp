@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   Action action;
   // One line per subcommand (keep this list in the order of `swarmagg --help`).
   add_run_command(app, action);
+  add_render_command(app, action);
   add_model_command(app, action);
   add_sweep_command(app, action);
   add_merge_command(app, action);

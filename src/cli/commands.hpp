@@ -10,6 +10,7 @@ namespace swarmagg::cli {
 using Action = std::function<int()>;
 
 void add_run_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
 void add_model_command(CLI::App& app, Action& action);
 void add_validate_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);

@@ -7,11 +7,13 @@
 #include "cli/world_options.hpp"
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
+#include "output/trajectory_layout.hpp"
 #include "render/render_size.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
+#include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
 
 namespace swarmagg::cli {
@@ -27,6 +29,7 @@ struct RunCommandOptions {
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
   std::optional<int> render_replicate;
+  std::optional<int> trajectories;
   std::string video;
   double fps = 25.0;
 };
@@ -44,6 +47,8 @@ void add_render_overrides(const RunCommandOptions& options, WorldOptions& world)
   if (options.render_replicate) {
     world.overrides.push_back("render.replicate=" + std::to_string(*options.render_replicate));
   }
+  if (options.trajectories)
+    world.overrides.push_back("run.trajectories=" + std::to_string(*options.trajectories));
 }
 
 void print_summary(const WorldSpec& spec, const RunResult& result,
@@ -83,13 +88,27 @@ int run_command(const RunCommandOptions& options) {
   RunOptions run_options;
   run_options.progress = !options.quiet;
   run_options.check = options.check;
-  run_options.observers = frame_observers(spec, frames);
+  const auto trajectories = trajectory_writer(spec, out);
+  run_options.observers =
+      both_observers(frame_observers(spec, frames),
+                     trajectory_observers(trajectories.get(), spec.run.trajectories));
   const RunResult result = run_world(spec, run_options);
+  // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
+  // that stored trajectories would not belong to this one.
+  if (trajectories) {
+    trajectories->commit();
+  } else {
+    std::filesystem::remove(out / trajectory_layout::kFileName);
+  }
   write_run_folder(spec, result, out);
   if (!options.no_model) write_predictions(spec, out);
   if (!options.quiet) print_summary(spec, result, out);
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
+  if (trajectories && !options.quiet) {
+    std::cout << "trajectories every " << spec.run.trajectories << " steps in "
+              << trajectories->target().string() << "\n";
+  }
   if (!options.video.empty()) {
     assemble_video(frames, options.video, options.fps);
     if (!options.quiet) std::cout << "video " << options.video << "\n";
@@ -111,6 +130,9 @@ void add_run_command(CLI::App& app, Action& action) {
                       "Frame folder (default renders/<world name>, or <out>/frames with --out)");
   command->add_option("--render-replicate", options->render_replicate,
                       "Which replicate to render (default 0)");
+  command->add_option("--trajectories", options->trajectories,
+                      "Store every agent's state every K steps in <out>/trajectories.h5 "
+                      "(run.trajectories; 0 = off)");
   command->add_option("--video", options->video,
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");

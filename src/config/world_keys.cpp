@@ -289,6 +289,8 @@ std::vector<WorldKey> build_keys() {
       "run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
   keys.push_back(integer_key<int>(
       "run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
+  keys.push_back(integer_key<int>(
+      "run.trajectories", [](WorldSpec& w) -> int& { return w.run.trajectories; }, 0, kMaxInt));
   keys.push_back(enum_key<Kappa>(
       "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
       {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));

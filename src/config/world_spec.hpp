@@ -80,6 +80,7 @@ struct RunSpec {
   std::uint64_t seed = 1;
   int record_every = 10;  // steps between recorded rows
   int threads = 0;        // 0: as many as the machine has
+  int trajectories = 0;   // steps between rows of trajectories.h5; 0: no trajectory file
 };
 
 struct ModelSpec {

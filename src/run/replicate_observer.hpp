@@ -17,4 +17,7 @@ class ReplicateObserver {
 // Makes the observer of replicate `index`, or nullptr for none.
 using ObserverFactory = std::function<std::unique_ptr<ReplicateObserver>(int index)>;
 
+// Both factories' observers on each replicate (in that order); either may be empty.
+ObserverFactory both_observers(ObserverFactory first, ObserverFactory second);
+
 }  // namespace swarmagg

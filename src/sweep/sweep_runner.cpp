@@ -14,6 +14,7 @@
 #include "output/atomic_file.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
+#include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_progress.hpp"
@@ -31,10 +32,17 @@ double run_work(const SweepRun& run) {
 void run_into_folder(const SweepRun& run, const std::filesystem::path& folder,
                      SweepProgress& progress) {
   std::filesystem::remove_all(folder);
-  RunProgress observer(progress, run.world.robots.count, run.world.steps());
+  const auto trajectories = trajectory_writer(run.world, folder);
+  const ObserverFactory progress_observer = [&](int) -> std::unique_ptr<ReplicateObserver> {
+    return std::make_unique<RunProgress>(progress, run.world.robots.count, run.world.steps());
+  };
+  auto observer = both_observers(
+      progress_observer, trajectory_observers(trajectories.get(), run.world.run.trajectories))(0);
   RunResult result;
-  result.replicates.push_back(run_replicate(run.world, 0, &observer));
+  result.replicates.push_back(run_replicate(run.world, 0, observer.get()));
   result.wall_seconds = result.replicates.front().wall_seconds;
+  observer.reset();  // releases the trajectory's datasets before the file closes
+  if (trajectories) trajectories->commit();
   write_run_folder(run.world, result, folder);
 }
 

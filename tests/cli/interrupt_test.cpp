@@ -205,6 +205,16 @@ TEST(Interrupt, SigtermStopsARunWithExitCode143AndLeavesNoPartialFile) {
   fs::remove_all(out);
 }
 
+TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
+  const fs::path out = fresh_dir("trajectories");
+  auto arguments = long_run(out);
+  arguments.insert(arguments.end(), {"--trajectories", "100"});
+  expect_interrupted(interrupt(arguments, SIGTERM, std::chrono::milliseconds(1500)), 143);
+  EXPECT_FALSE(fs::exists(out / "trajectories.h5"));
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  fs::remove_all(out);
+}
+
 TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
   const fs::path out = fresh_dir("at-once");
   expect_interrupted(interrupt(long_run(out), SIGINT, std::chrono::milliseconds(0)), 130);
