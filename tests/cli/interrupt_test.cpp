@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include "cli/cli_testing.hpp"
+
 extern char** environ;
 
 namespace {
@@ -26,6 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using Clock = std::chrono::steady_clock;
+using swarmagg::testing::read_all;
 
 const std::string kLongWorld = std::string(SWARMAGG_SOURCE_DIR) + "/worlds/paper/full-0.0025.yaml";
 
@@ -120,13 +123,6 @@ fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("swarmagg-interrupt-" + name);
   fs::remove_all(dir);
   return dir;
-}
-
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // Every file below `dir` (relative path -> content).

@@ -4,8 +4,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli/cli_testing.hpp"
 #include "output/trajectory_reader.hpp"
 
 namespace swarmagg {
@@ -21,34 +20,17 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-struct Outcome {
-  int exit_code;
-  std::string output;
-};
+using Outcome = testing::CliOutcome;
+using testing::read_all;
 
 Outcome swarmagg(const std::string& arguments) {
-  const std::string command = std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
-  Outcome outcome{-1, {}};
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return outcome;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) outcome.output += buffer.data();
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+  return testing::run_swarmagg(arguments);
 }
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("swarmagg-trajectories-" + name);
   fs::remove_all(dir);
   return dir;
-}
-
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // NOA of timeseries.csv by (replicate, step).
