@@ -4,6 +4,8 @@
 #include <string>
 #include <thread>
 
+#include "swarmagg_version.hpp"
+
 namespace swarmagg {
 namespace {
 

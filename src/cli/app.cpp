@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "run/interrupt.hpp"
+#include "swarmagg_version.hpp"
 
 namespace swarmagg::cli {
 

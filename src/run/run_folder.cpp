@@ -8,6 +8,7 @@
 #include "core/rng.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
+#include "swarmagg_version.hpp"
 
 namespace swarmagg {
 namespace {
