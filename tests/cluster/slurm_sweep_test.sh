@@ -175,12 +175,18 @@ total=$(shard_runs $victim)
 say "scancel ${array}_$victim: shard $victim stopped with $done_before of $total runs complete"
 sed 's/^/  cancelled task log: /' "results/logs/swarmagg-sweep-${array}_$victim.out"
 ((done_before < total)) || fail "shard $victim finished before the scancel: make its runs longer"
+# The complete runs' resolved worlds, with their modification times: a resumed shard must
+# skip these runs, not redo them.
+kept=$(find "results/shard-$victim" -name world.resolved.yaml -exec stat -c '%n %y' {} + | sort)
 wait_until "the rest of the array (the merge is cancelled with the failed task)" queue_empty
 [[ ! -f results/sweep_summary.csv ]] || fail "the merge ran although a shard was cancelled"
 RESULTS=results "$submit" "$sweep_file" "$shards" --cpus-per-task=1 | sed 's/^/  resubmit: /'
 wait_until "the resubmitted array and merge" queue_empty
 sed 's/^/  merge log: /' results/logs/swarmagg-merge-*.out
 say "resume: shard $victim now $(complete_runs results $victim) of $total runs complete"
+now=$(find "results/shard-$victim" -name world.resolved.yaml -exec stat -c '%n %y' {} + | sort)
+[[ $(comm -23 <(echo "$kept") <(echo "$now")) == "" ]] || fail "the resumed shard redid complete runs"
+say "resume: the $done_before runs complete before the scancel were kept, not run again"
 same_as_reference results
 say "resumed merge byte-identical to the unsharded sweep"
 say "PASS (the daemons stop on exit)"
