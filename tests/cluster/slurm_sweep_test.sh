@@ -62,6 +62,7 @@ wait_until() {
   shift
   until "$@"; do
     ((SECONDS < deadline)) || fail "timed out after ${wait_limit}s waiting for $what"
+    for pid in "${pids[@]}"; do kill -0 "$pid" 2>/dev/null || fail "daemon $pid died (logs below)"; done
     sleep 0.5
   done
 }
@@ -87,7 +88,7 @@ setpriv --reuid=munge --regid=munge --init-groups munged --foreground --force \
 pids+=($!)
 wait_until "munged's socket" test -S "$tmp/munge/socket"
 
-# --- slurm.conf: one node, this host, free ports ------------------------------------------
+# --- slurm.conf: one node, this host at 127.0.0.1 (no name lookup), free ports ------------
 # A port nothing listens on (nothing answers a connection), picked at random.
 free_port() {
   local port
@@ -99,7 +100,7 @@ free_port() {
 host=$(hostname -s)
 cat >"$tmp/slurm.conf" <<CONF
 ClusterName=swarmaggtest
-SlurmctldHost=$host
+SlurmctldHost=$host(127.0.0.1)
 SlurmctldPort=$(free_port)
 SlurmdPort=$(free_port)
 SlurmUser=root
@@ -123,7 +124,7 @@ MpiDefault=none
 JobCompType=jobcomp/none
 AccountingStorageType=accounting_storage/none
 KillWait=5
-NodeName=$host CPUs=$(nproc) State=UNKNOWN
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=debug Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
 export SLURM_CONF=$tmp/slurm.conf
