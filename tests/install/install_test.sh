@@ -11,7 +11,7 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build_dir" --prefix "$tmp/prefix" >/dev/null
-for f in bin/swarmagg share/doc/swarmagg/README.md share/doc/swarmagg/rendering.md \
+for f in bin/swarmagg share/doc/swarmagg/README.md share/doc/swarmagg/docs/rendering.md share/doc/swarmagg/docs/frame-full-0.0025.png \
   share/swarmagg/worlds/examples/demo.yaml share/swarmagg/worlds/paper/full-0.0025.yaml \
   share/swarmagg/examples/sweeps/p-leave-vs-count.yaml share/swarmagg/examples/slurm/sweep.sbatch; do
   [[ -f $tmp/prefix/$f ]] || fail "$f not installed"
