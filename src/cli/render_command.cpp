@@ -7,12 +7,12 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/frame_output.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
 #include "output/trajectory_layout.hpp"
 #include "output/trajectory_reader.hpp"
 #include "render/frame_recorder.hpp"
-#include "render/render_size.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 
@@ -34,12 +34,8 @@ int render_command(const RenderCommandOptions& options) {
   const std::filesystem::path file =
       std::filesystem::path(options.run_dir) / trajectory_layout::kFileName;
   const TrajectoryReader reader(file);
-  std::vector<std::string> overrides;
-  if (options.size) {
-    const RenderSize size = parse_render_size(*options.size);
-    overrides.push_back("render.width=" + std::to_string(size.width));
-    overrides.push_back("render.height=" + std::to_string(size.height));
-  }
+  const std::vector<std::string> overrides =
+      options.size ? render_size_overrides(*options.size) : std::vector<std::string>{};
   const WorldSpec spec = load_world_text(reader.world_text(), file.string(), overrides);
   const std::int64_t every = options.every.value_or(reader.every());
   if (every <= 0 || every % reader.every() != 0) {

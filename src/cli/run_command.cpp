@@ -8,7 +8,6 @@
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
 #include "output/trajectory_layout.hpp"
-#include "render/render_size.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
@@ -39,9 +38,8 @@ void add_render_overrides(const RunCommandOptions& options, WorldOptions& world)
   if (options.render_every)
     world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
   if (options.render_size) {
-    const RenderSize size = parse_render_size(*options.render_size);
-    world.overrides.push_back("render.width=" + std::to_string(size.width));
-    world.overrides.push_back("render.height=" + std::to_string(size.height));
+    for (std::string& o : render_size_overrides(*options.render_size))
+      world.overrides.push_back(std::move(o));
   }
   if (options.render_dir) world.overrides.push_back("render.dir=\"" + *options.render_dir + "\"");
   if (options.render_replicate) {
