@@ -16,9 +16,11 @@ struct CliOutcome {
   std::string output;  // stdout and stderr together
 };
 
-// Runs `swarmagg <arguments>` through the shell and waits for it.
-inline CliOutcome run_swarmagg(const std::string& arguments) {
-  const std::string command = std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
+// Runs `swarmagg <arguments>` through the shell and waits for it; `environment` holds
+// assignments for the child only (e.g. "PATH=/x").
+inline CliOutcome run_swarmagg(const std::string& arguments, const std::string& environment = "") {
+  const std::string command =
+      environment + " " + std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
   CliOutcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
