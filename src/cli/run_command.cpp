@@ -33,16 +33,19 @@ struct RunCommandOptions {
 
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
+  auto& typed = world.typed_overrides;
   if (options.render_every)
-    world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
+    typed.push_back(typed_override("render.every", *options.render_every, "--render-every"));
   if (options.render_size) {
     const RenderSize size = parse_render_size(*options.render_size);
-    world.overrides.push_back("render.width=" + std::to_string(size.width));
-    world.overrides.push_back("render.height=" + std::to_string(size.height));
+    typed.push_back(typed_override("render.width", size.width, "--render-size"));
+    typed.push_back(typed_override("render.height", size.height, "--render-size"));
   }
-  if (options.render_dir) world.overrides.push_back("render.dir=\"" + *options.render_dir + "\"");
+  if (options.render_dir)
+    typed.push_back(typed_override("render.dir", *options.render_dir, "--render-dir"));
   if (options.render_replicate) {
-    world.overrides.push_back("render.replicate=" + std::to_string(*options.render_replicate));
+    typed.push_back(
+        typed_override("render.replicate", *options.render_replicate, "--render-replicate"));
   }
 }
 

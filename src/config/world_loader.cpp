@@ -282,7 +282,7 @@ void check_placement(const WorldSpec& spec, bool count_given) {
 }
 
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
-                        const std::vector<std::string>& overrides) {
+                        const std::vector<WorldOverride>& overrides) {
   if (!document.IsDefined() || document.IsNull()) {
     throw InputError(source +
                      ": the world file is empty; expected a mapping of world keys "
@@ -297,9 +297,9 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
   DocumentReader reader(spec, source);
   reader.read_block(document, "");
   bool count_given = reader.seen().count("robots.count") > 0;
-  for (const std::string& assignment : overrides) {
-    count_given = count_given || assignment.rfind("robots.count=", 0) == 0;
-    apply_override(spec, assignment);
+  for (const WorldOverride& override : overrides) {
+    count_given = count_given || override.key == "robots.count";
+    apply_override(spec, override);
   }
   if (!count_given && !spec.robots.placement.empty()) {
     spec.robots.count = static_cast<int>(spec.robots.placement.size());
@@ -316,22 +316,10 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
 
 }  // namespace
 
-void apply_override(WorldSpec& spec, const std::string& assignment) {
-  const auto equals = assignment.find('=');
-  const std::string at = "--set " + assignment;
-  if (equals == std::string::npos || equals == 0) {
-    throw InputError(at + ": expected key.path=value, e.g. --set robots.count=80");
-  }
-  const std::string path = assignment.substr(0, equals);
-  const WorldKey* key = find_world_key(path);
-  if (key == nullptr) unknown_key("--set", path);
-  YAML::Node value;
-  try {
-    value = YAML::Load(assignment.substr(equals + 1));
-  } catch (const YAML::ParserException& e) {
-    throw InputError(at + ": the value is not valid YAML: " + e.msg);
-  }
-  apply_value(spec, *key, value, "--set");
+void apply_override(WorldSpec& spec, const WorldOverride& override) {
+  const WorldKey* key = find_world_key(override.key);
+  if (key == nullptr) unknown_key(override.origin, override.key);
+  apply_value(spec, *key, override.value, override.origin);
 }
 
 void check_world(const WorldSpec& spec) {
@@ -388,13 +376,22 @@ void check_world(const WorldSpec& spec) {
   }
 }
 
-WorldSpec load_world_text(const std::string& text, const std::string& source,
-                          const std::vector<std::string>& overrides) {
+WorldSpec load_world_text_with(const std::string& text, const std::string& source,
+                               const std::vector<WorldOverride>& overrides) {
   return load_document(parse_yaml(text, source), source, overrides);
 }
 
-WorldSpec load_world(const std::string& path, const std::vector<std::string>& overrides) {
-  return load_world_text(read_file(path), path, overrides);
+WorldSpec load_world_text(const std::string& text, const std::string& source,
+                          const std::vector<std::string>& assignments) {
+  return load_world_text_with(text, source, parse_overrides(assignments));
+}
+
+WorldSpec load_world_with(const std::string& path, const std::vector<WorldOverride>& overrides) {
+  return load_world_text_with(read_file(path), path, overrides);
+}
+
+WorldSpec load_world(const std::string& path, const std::vector<std::string>& assignments) {
+  return load_world_with(path, parse_overrides(assignments));
 }
 
 }  // namespace swarmagg

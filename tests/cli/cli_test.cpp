@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "config/world_loader.hpp"
+
 namespace {
 
 using ::testing::HasSubstr;
@@ -72,6 +74,22 @@ TEST(Cli, RunWritesTheOutputFolder) {
   EXPECT_TRUE(std::filesystem::exists(out / "timeseries.csv"));
   EXPECT_TRUE(std::filesystem::exists(out / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(out / "world.resolved.yaml"));
+  std::filesystem::remove_all(out);
+}
+
+// --render-dir reaches render.dir as the typed string it is: a name holding `"` and `\` once
+// came out as YAML escapes (the option was spliced into a `--set` text).
+TEST(Cli, RenderDirKeepsQuotesAndBackslashes) {
+  const auto out = temp_dir("render-dir");
+  const std::filesystem::path frames = out / "fr\"am\\es";
+  const Outcome o = swarmagg(
+      "run worlds/examples/demo.yaml --replicates 1 --set run.duration=0.3 --no-model --quiet "
+      "--render-every 1 --render-size 64x64 --out '" +
+      out.string() + "' --render-dir '" + frames.string() + "'");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(std::filesystem::exists(frames / "frame_000000.png")) << o.output;
+  EXPECT_EQ(swarmagg::load_world((out / "world.resolved.yaml").string()).render.dir,
+            frames.string());
   std::filesystem::remove_all(out);
 }
 
