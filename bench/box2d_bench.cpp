@@ -3,7 +3,7 @@
 // src/engine/box2d/box2d_bench.hpp; pin it to one core and read the ratio:
 //
 //   taskset -c 0 build/bench/bench_box2d [--solid] [N ...]     (default N: 100 1000 10000)
-#include "engine/box2d/box2d_bench.hpp"
+#include "bench/lib/box2d_bench.hpp"
 
 #include <algorithm>
 #include <cstdio>
