@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <thread>
 
 #include "output/atomic_file.hpp"
+#include "plot/run_plots.hpp"
 #include "run/interrupt.hpp"
 #include "run/parallel_for.hpp"
 #include "run/progress_line.hpp"
@@ -26,7 +28,7 @@ double run_work(const SweepRun& run) {
 
 // The outputs are written only once the replicate has finished, so an interrupted run
 // leaves no folder at all; an older unfinished attempt is cleared first.
-void run_into_folder(const SweepRun& run, const std::filesystem::path& folder,
+void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, bool plots,
                      ProgressLine& progress) {
   std::filesystem::remove_all(folder);
   ProgressObserver observer(progress, run.world.robots.count, run.world.steps());
@@ -34,6 +36,11 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder,
   result.replicates.push_back(run_replicate(run.world, 0, &observer));
   result.wall_seconds = result.replicates.front().wall_seconds;
   write_run_folder(run.world, result, folder);
+  if (!plots) return;
+  // A plot gnuplot cannot draw leaves the run complete; `swarmagg plot` can redraw it.
+  for (const std::string& failure : draw_run_plots(folder, folder).failures) {
+    std::cerr << "warning: " + folder.string() + ": " + failure + "\n";
+  }
 }
 
 int thread_count(int requested, std::size_t runs) {
@@ -46,7 +53,7 @@ void run_parallel(const std::vector<SweepRun>& runs, const SweepOptions& options
                   ProgressLine& progress, int threads) {
   auto run_one = [&](std::size_t i) {
     throw_if_interrupted();
-    run_into_folder(runs[i], sweep_run_folder(options.out, runs[i]), progress);
+    run_into_folder(runs[i], sweep_run_folder(options.out, runs[i]), options.plots, progress);
     progress.finished_unit();
   };
   const bool show = options.progress && ::isatty(::fileno(stderr));
