@@ -31,10 +31,10 @@ std::filesystem::path frames_folder(const WorldSpec& spec, const std::filesystem
   return std::filesystem::path("renders") / spec.name;
 }
 
-std::vector<std::string> render_size_overrides(std::string_view size) {
+std::vector<WorldOverride> render_size_overrides(std::string_view size, const std::string& origin) {
   const RenderSize parsed = parse_render_size(size);
-  return {"render.width=" + std::to_string(parsed.width),
-          "render.height=" + std::to_string(parsed.height)};
+  return {typed_override("render.width", parsed.width, origin),
+          typed_override("render.height", parsed.height, origin)};
 }
 
 ObserverFactory frame_observers(const WorldSpec& spec, const std::filesystem::path& folder) {

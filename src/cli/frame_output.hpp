@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "config/world_override.hpp"
 #include "config/world_spec.hpp"
 #include "run/replicate_observer.hpp"
 
@@ -15,8 +16,9 @@ namespace swarmagg::cli {
 std::filesystem::path frames_folder(const WorldSpec& spec, const std::filesystem::path& out,
                                     bool out_given);
 
-// The render.width and render.height overrides a "WxH" size stands for (InputError if bad).
-std::vector<std::string> render_size_overrides(std::string_view size);
+// The render.width and render.height overrides a "WxH" size stands for (InputError if bad),
+// as typed values given by the option `origin`.
+std::vector<WorldOverride> render_size_overrides(std::string_view size, const std::string& origin);
 
 // Observers recording frames into `folder` (none when render.every is 0).
 ObserverFactory frame_observers(const WorldSpec& spec, const std::filesystem::path& folder);

@@ -34,9 +34,9 @@ int render_command(const RenderCommandOptions& options) {
   const std::filesystem::path file =
       std::filesystem::path(options.run_dir) / trajectory_layout::kFileName;
   const TrajectoryReader reader(file);
-  const std::vector<std::string> overrides =
-      options.size ? render_size_overrides(*options.size) : std::vector<std::string>{};
-  const WorldSpec spec = load_world_text(reader.world_text(), file.string(), overrides);
+  const std::vector<WorldOverride> overrides =
+      options.size ? render_size_overrides(*options.size, "--size") : std::vector<WorldOverride>{};
+  const WorldSpec spec = load_world_text_with(reader.world_text(), file.string(), overrides);
   const std::int64_t every = options.every.value_or(reader.every());
   if (every <= 0 || every % reader.every() != 0) {
     throw InputError("--every " + std::to_string(every) + ": expected a positive multiple of " +

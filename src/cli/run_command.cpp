@@ -37,18 +37,21 @@ struct RunCommandOptions {
 
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
+  auto& typed = world.typed_overrides;
   if (options.render_every)
-    world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
+    typed.push_back(typed_override("render.every", *options.render_every, "--render-every"));
   if (options.render_size) {
-    for (std::string& o : render_size_overrides(*options.render_size))
-      world.overrides.push_back(std::move(o));
+    for (WorldOverride& o : render_size_overrides(*options.render_size, "--render-size"))
+      typed.push_back(std::move(o));
   }
-  if (options.render_dir) world.overrides.push_back("render.dir=\"" + *options.render_dir + "\"");
+  if (options.render_dir)
+    typed.push_back(typed_override("render.dir", *options.render_dir, "--render-dir"));
   if (options.render_replicate) {
-    world.overrides.push_back("render.replicate=" + std::to_string(*options.render_replicate));
+    typed.push_back(
+        typed_override("render.replicate", *options.render_replicate, "--render-replicate"));
   }
   if (options.trajectories)
-    world.overrides.push_back("run.trajectories=" + std::to_string(*options.trajectories));
+    typed.push_back(typed_override("run.trajectories", *options.trajectories, "--trajectories"));
 }
 
 void print_summary(const WorldSpec& spec, const RunResult& result,

@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "geometry/arena_geometry.hpp"
+
 namespace swarmagg {
 
-enum class Topology { Torus, Walls };
 enum class ControllerType { Bayindir, Soysal, Collision };
 enum class IsolatedWait { Resume, Stay };
 enum class LeaveLaw { Constant, Inverse, InverseSquare };
@@ -27,6 +28,7 @@ struct ArenaSpec {
   double height = 180.0;
   Topology topology = Topology::Torus;
   double area() const { return width * height; }
+  ArenaGeometry geometry() const { return {width, height, topology}; }
 };
 
 struct PlacedAgent {

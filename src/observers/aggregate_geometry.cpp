@@ -10,7 +10,7 @@ double packing_spacing(const WorldSpec& spec) {
 }
 
 ShapeRules ShapeRules::for_world(const WorldSpec& spec) {
-  return {ArenaGeometry(spec.arena), spec.robots.radius,
+  return {spec.arena.geometry(), spec.robots.radius,
           RimRule::for_spacing(packing_spacing(spec))};
 }
 

@@ -265,7 +265,7 @@ void InvariantChecker::check_counts_grow(const CheckedState& s) const {
 
 void InvariantChecker::check_motion(const CheckedState& s) const {
   if (box2d(s.spec)) return;  // contacts and repulsion may push bodies faster than v
-  const ArenaGeometry geometry(s.spec.arena);
+  const ArenaGeometry geometry = s.spec.arena.geometry();
   const double reach = s.spec.robots.speed * s.spec.engine.dt;
   const double slack = kRounding * (longest_side(s.spec) + reach);
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
@@ -284,7 +284,7 @@ void InvariantChecker::check_contacts(const CheckedState& s) const {
   const double contact = 2.0 * r;
   const double tolerance = box2d(s.spec) ? r : kRounding * longest_side(s.spec);
   const bool join = may_join(s.spec);
-  const ArenaGeometry geometry(s.spec.arena);
+  const ArenaGeometry geometry = s.spec.arena.geometry();
   for (std::size_t i = 0; i < s.swarm.size(); ++i) {
     for (const Neighbour& nb : s.neighbours.of(static_cast<AgentId>(i))) {
       if (nb.distance >= contact) break;  // nearest first

@@ -46,7 +46,7 @@ struct Scene {
   }
 
   void perceive() {
-    const ArenaGeometry geometry(spec.arena);
+    const ArenaGeometry geometry = spec.arena.geometry();
     std::vector<ClosePair> pairs;
     for (std::uint32_t i = 0; i < positions.size(); ++i) {
       for (std::uint32_t j = i + 1; j < positions.size(); ++j) {

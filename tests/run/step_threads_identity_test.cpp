@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "config/paper_density_world.hpp"
+#include "bench/lib/paper_density_world.hpp"
 #include "config/world_loader.hpp"
 #include "run/replicate.hpp"
 

@@ -12,17 +12,15 @@ constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
 
 }  // namespace
 
-// Earliest event first; simultaneous events in the reference scan order of their pairs,
-// then by kind, so the order never depends on how the heap or the pair list is arranged.
+// Earliest event first; simultaneous events by their pair's agent ids (i, then j), then by
+// kind, so the order never depends on how the heap or the pair list is arranged.
 bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
   if (a.time != b.time) return a.time > b.time;
   if (a.pair != b.pair) {
     const CandidatePair& p = pairs[a.pair];
     const CandidatePair& q = pairs[b.pair];
-    if (p.rank != q.rank) return p.rank > q.rank;
-    const std::uint32_t pa = p.a_is_j ? p.j : p.i, qa = q.a_is_j ? q.j : q.i;
-    if (pa != qa) return pa > qa;
-    return (p.a_is_j ? p.i : p.j) > (q.a_is_j ? q.i : q.j);
+    if (p.i != q.i) return p.i > q.i;
+    return p.j > q.j;
   }
   return a.kind > b.kind;
 }

@@ -33,7 +33,7 @@ TEST(KinematicEngine, NeighbourListsMatchBruteForceAndAreSortedByDistance) {
   std::vector<Vec2> positions(300);
   for (Vec2& p : positions) p = {ux(gen), uy(gen)};
   auto engine = make_kinematic_engine(spec, positions);
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   for (std::uint32_t i = 0; i < positions.size(); ++i) {
     std::vector<std::uint32_t> expected;
     for (std::uint32_t j = 0; j < positions.size(); ++j) {
@@ -89,7 +89,7 @@ TEST(KinematicEngine, GuardedMoveHaltsAcrossTheSeam) {
                                             moving({-10.0, 0.0}, mask_of(kGo))};
   const std::vector<Signal> signals{kGo, kGo};
   EXPECT_EQ(engine->step(commands, signals).encounters, 1u);  // 5 apart, closing 2 per step
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   const double gap = arena.distance(engine->positions()[0], engine->positions()[1]);
   EXPECT_LE(gap, 4.0);
   EXPECT_GT(gap, 4.0 - 1e-6);

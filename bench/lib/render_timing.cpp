@@ -1,8 +1,8 @@
-#include "bench/render_timing.hpp"
+#include "bench/lib/render_timing.hpp"
 
 #include <chrono>
 
-#include "bench/kinematic_bench.hpp"
+#include "bench/lib/kinematic_bench.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/replicate.hpp"
 

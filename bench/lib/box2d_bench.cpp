@@ -1,4 +1,4 @@
-#include "engine/box2d/box2d_bench.hpp"
+#include "bench/lib/box2d_bench.hpp"
 
 #include <box2d/box2d.h>
 
@@ -11,6 +11,7 @@
 #include "core/thread_clock.hpp"
 #include "engine/box2d/box2d_engine.hpp"
 #include "engine/box2d/fixture_tags.hpp"
+#include "geometry/pair_finder.hpp"
 
 namespace swarmagg {
 namespace {
@@ -28,38 +29,25 @@ struct Scene {
   std::vector<Vec2> velocities;
 };
 
-// Uniform positions at least 2r apart (rejection on a grid of 2r cells), random headings.
+// Uniform positions at least 2r apart (rejection sampling), random headings.
 Scene make_scene(int n) {
   Scene scene;
   scene.side = std::sqrt(n / kPaperDensity);
   const CounterRng rng(0xB0C5);
-  const double cell = 2.0 * kRadius;
-  const int cells = std::max(1, static_cast<int>(scene.side / cell));
-  std::vector<std::vector<int>> grid(static_cast<std::size_t>(cells) * cells);
-  auto cell_of = [&](double c) { return std::min(cells - 1, static_cast<int>(c / cell)); };
+  const double contact = 2.0 * kRadius;
+  PairFinder placed;
+  placed.reset(ArenaGeometry(scene.side, scene.side, Topology::Torus), contact,
+               static_cast<std::size_t>(n));
   std::uint64_t draw = 0;
   while (static_cast<int>(scene.positions.size()) < n) {
     const Vec2 p{scene.side * rng.uniform(draw, 0, Draw::Placement),
                  scene.side * rng.uniform(draw, 1, Draw::Placement)};
     ++draw;
-    const int cx = cell_of(p.x);
-    const int cy = cell_of(p.y);
     bool free = true;
-    for (int dx = -1; dx <= 1 && free; ++dx) {
-      for (int dy = -1; dy <= 1 && free; ++dy) {
-        const int gx = (cx + dx + cells) % cells;
-        const int gy = (cy + dy + cells) % cells;
-        for (int j : grid[static_cast<std::size_t>(gx) * cells + gy]) {
-          Vec2 d = scene.positions[static_cast<std::size_t>(j)] - p;
-          d.x -= scene.side * std::round(d.x / scene.side);
-          d.y -= scene.side * std::round(d.y / scene.side);
-          if (norm2(d) < cell * cell) free = false;
-        }
-      }
-    }
+    placed.for_each_near(
+        p, [&](std::uint32_t, Vec2 d) { free = free && norm2(d) >= contact * contact; });
     if (!free) continue;
-    grid[static_cast<std::size_t>(cx) * cells + cy].push_back(
-        static_cast<int>(scene.positions.size()));
+    placed.add(p);
     scene.positions.push_back(p);
     const double angle = 6.283185307179586 * rng.uniform(draw, 2, Draw::Heading);
     scene.velocities.push_back(from_angle(angle) * kSpeed);

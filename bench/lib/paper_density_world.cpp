@@ -1,4 +1,4 @@
-#include "config/paper_density_world.hpp"
+#include "bench/lib/paper_density_world.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,10 +1,10 @@
-#include "bench/kinematic_bench.hpp"
+#include "bench/lib/kinematic_bench.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "config/paper_density_world.hpp"
+#include "bench/lib/paper_density_world.hpp"
 #include "core/thread_clock.hpp"
 #include "run/replicate.hpp"
 

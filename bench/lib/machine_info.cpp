@@ -1,4 +1,4 @@
-#include "bench/machine_info.hpp"
+#include "bench/lib/machine_info.hpp"
 
 #include <fstream>
 #include <string>
