@@ -15,8 +15,11 @@ namespace swarmagg {
 
 void advance_expected(const BayindirRates& rates, BayindirState& state);
 
-// The state at each step of `grid` (increasing, from 0), starting from all searching.
+// The state at each step of `grid` (increasing, from 0), starting from all searching. With
+// `start` (the aggregates after the first decision, models/initial_state.hpp) the first step
+// forms exactly those instead of the rates' creations.
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
-                                               const std::vector<std::int64_t>& grid);
+                                               const std::vector<std::int64_t>& grid,
+                                               const std::vector<double>& start = {});
 
 }  // namespace swarmagg

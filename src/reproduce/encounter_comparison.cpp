@@ -5,7 +5,7 @@
 
 #include "models/kinetic_rate.hpp"
 #include "models/sample_statistics.hpp"
-#include "reproduce/csv_table.hpp"
+#include "output/csv_table.hpp"
 
 namespace swarmagg {
 

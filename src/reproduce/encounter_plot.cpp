@@ -1,8 +1,8 @@
 #include "reproduce/encounter_plot.hpp"
 
 #include "output/atomic_file.hpp"
+#include "output/csv_text.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
 
 namespace swarmagg {
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "rates/rate_rows.hpp"
 #include "reproduce/encounter_comparison.hpp"
 #include "reproduce/noa_comparison.hpp"
 #include "reproduce/paper_figures.hpp"
@@ -18,6 +19,7 @@ struct FigureResult {
   std::vector<EncounterPoint> encounters;         // EncountersVsCount / EncountersVsSpeed
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
+  std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
   int reused = 0;                                 // worlds whose run folder was reused
   double wall_seconds = 0.0;
 };

@@ -5,13 +5,14 @@
 #include <stdexcept>
 
 #include "models/sample_statistics.hpp"
-#include "reproduce/csv_table.hpp"
+#include "output/csv_table.hpp"
 #include "reproduce/paper_predictions.hpp"
 
 namespace swarmagg {
 
 const std::vector<std::string>& noa_variants() {
-  static const std::vector<std::string> variants{"original", "collision", kPaperFitVariant};
+  static const std::vector<std::string> variants{"original", "collision", kPaperFitVariant,
+                                                 kMeasuredVariant};
   return variants;
 }
 

@@ -4,8 +4,8 @@
 
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
+#include "output/csv_text.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
 
 namespace swarmagg {
 namespace {
@@ -75,7 +75,9 @@ void plot_noa(const FigureFiles& files, const std::string& title, const NoaCompa
       "  " +
       curves +
       " skip 1 using 1:5 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'collision theory (paper "
-      "fit)'\n";
+      "fit)', \\\n"
+      "  " +
+      curves + " skip 1 using 1:6 with lines lw 2 lc rgb '#2ca02c' title 'measured terms'\n";
   run_gnuplot(files.script(), script);
 }
 

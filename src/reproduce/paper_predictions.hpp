@@ -6,12 +6,17 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
 
 namespace swarmagg {
 
 inline constexpr const char* kPaperFitVariant = "collision-paper";
+// The variant fed with the terms the run measured (models/measured_rates.hpp).
+inline constexpr const char* kMeasuredVariant = "measured";
 
-std::vector<VariantPrediction> paper_predictions(const WorldSpec& world);
+// With `measured` terms, the measured variants too (models/predictions.hpp).
+std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
+                                                 const MeasuredTerms* measured = nullptr);
 
 }  // namespace swarmagg

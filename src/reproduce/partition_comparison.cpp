@@ -3,7 +3,8 @@
 #include <cmath>
 #include <set>
 
-#include "reproduce/csv_table.hpp"
+#include "output/csv_table.hpp"
+#include "reproduce/paper_predictions.hpp"
 
 namespace swarmagg {
 namespace {
@@ -31,7 +32,7 @@ Distribution run_average(const Trajectories& trajectories) {
 }  // namespace
 
 const std::vector<std::string>& partition_variants() {
-  static const std::vector<std::string> variants{"original", "peripheral"};
+  static const std::vector<std::string> variants{"original", "peripheral", kMeasuredVariant};
   return variants;
 }
 

@@ -4,8 +4,8 @@
 #include <set>
 
 #include "output/atomic_file.hpp"
+#include "output/csv_text.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
 
 namespace swarmagg {
 namespace {
@@ -59,7 +59,10 @@ void plot_partitions(const FigureFiles& files, const std::string& title,
             data + " skip 1 " + rows +
             " using 3 lc rgb '#1f77b4' title 'model original', \\\n"
             "  " +
-            data + " skip 1 " + rows + " using 4 lc rgb '#ff7f0e' title 'model peripheral'\n";
+            data + " skip 1 " + rows +
+            " using 4 lc rgb '#ff7f0e' title 'model peripheral', \\\n"
+            "  " +
+            data + " skip 1 " + rows + " using 5 lc rgb '#2ca02c' title 'model measured'\n";
   run_gnuplot(files.script(), script);
 }
 

@@ -5,8 +5,9 @@
 
 #include "config/world_loader.hpp"
 #include "output/atomic_file.hpp"
+#include "output/csv_text.hpp"
+#include "rates/rates_csv.hpp"
 #include "reproduce/claims.hpp"
-#include "reproduce/csv_text.hpp"
 #include "reproduce/encounter_plot.hpp"
 #include "reproduce/noa_plot.hpp"
 #include "reproduce/partition_plot.hpp"
@@ -38,10 +39,12 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
       break;
     case FigureKind::Noa:
       result.noa = compare_noa(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_noa(files, figure.title, *result.noa);
       break;
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_partitions(files, figure.title, *result.partitions);
       break;
   }

@@ -25,6 +25,7 @@ Replicate::Replicate(const WorldSpec& spec, int index)
   swarm_.resize(placement.positions.size());
   swarm_.heading.assign(placement.headings.begin(), placement.headings.end());
   commands_.resize(swarm_.size());
+  growths_by_size_.assign(swarm_.size() + 1, 0);
   update_aggregates();
 }
 
@@ -36,7 +37,8 @@ void Replicate::update_aggregates() {
 }
 
 void Replicate::step() {
-  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_};
+  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_,
+                              growths_by_size_};
   controller_->decide(input, swarm_, rng_, commands_, events_);
   // An agent displays its state: the state array is the signal array.
   static_assert(sizeof(AgentState) == sizeof(Signal));

@@ -4,6 +4,8 @@
 // is advanced one step at a time; observers read it through snapshot().
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "config/world_spec.hpp"
 #include "controllers/controller.hpp"
@@ -37,6 +39,8 @@ class Replicate {
   const SwarmState& swarm() const { return swarm_; }
   const AggregateTracker& aggregates() const { return aggregates_; }
   const EventCounts& events() const { return events_; }
+  // Cumulative growths by the size of the aggregate joined, [m] for m = 0..N.
+  std::span<const std::uint64_t> growths_by_size() const { return growths_by_size_; }
   SwarmSnapshot snapshot() const;
 
  private:
@@ -50,6 +54,7 @@ class Replicate {
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
+  std::vector<std::uint64_t> growths_by_size_;
   AgentArray<MotionCommand> commands_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG

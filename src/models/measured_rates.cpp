@@ -1,0 +1,65 @@
+#include "models/measured_rates.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+int growth_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
+  if (!world.controller.join) return 0;
+  int used = 0;
+  for (const auto& [size, rate] : terms.growth) used += size >= 2 && size < world.robots.count;
+  return used;
+}
+
+}  // namespace
+
+BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerms& terms) {
+  BayindirRates rates = bayindir_rates(world, world.model.creation);
+  const double dt = world.engine.dt;
+  // Expected creations per step among y searchers: rate per pair * dt * y (y - 1) / 2.
+  if (terms.creation) rates.creation = {*terms.creation * dt / 2.0, PairCount::Ordered};
+  if (!rates.forms_aggregates || !world.controller.join) return rates;
+  for (const auto& [size, rate] : terms.growth) {
+    if (size >= 2 && size < rates.agents) rates.growth[static_cast<std::size_t>(size)] = rate * dt;
+  }
+  return rates;
+}
+
+SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& terms) {
+  SoysalRates rates = soysal_rates(world, world.model.leaving);
+  const double dt = world.engine.dt;
+  if (terms.creation) rates.pair_up = *terms.creation * dt;
+  if (!world.controller.join) return rates;
+  for (const auto& [size, rate] : terms.growth) {
+    if (size >= 2 && size < rates.agents) rates.join[static_cast<std::size_t>(size)] = rate * dt;
+  }
+  return rates;
+}
+
+std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const MeasuredTerms& terms) {
+  std::vector<TidyValue> notes = {
+      {"terms:creation_measured", std::nullopt, terms.creation ? 1.0 : 0.0},
+      {"terms:growth_sizes_measured", std::nullopt,
+       static_cast<double>(growth_sizes_used(world, terms))}};
+  if (world.controller.leave) notes.push_back({"terms:leave_from_model", std::nullopt, 1.0});
+  return notes;
+}
+
+std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& terms) {
+  std::string note = "measured variant: creation ";
+  note += terms.creation ? "measured" : "from the model (too few events)";
+  if (world.controller.join) {
+    note += ", growth measured at " + std::to_string(growth_sizes_used(world, terms)) +
+            " aggregate sizes (the model's capture radius elsewhere)";
+  }
+  if (world.controller.leave && world.controller.type != ControllerType::Collision) {
+    note += world.controller.type == ControllerType::Soysal
+                ? ", leaving by the model's own law (model.leaving): leave and escape rates are "
+                  "not measured yet"
+                : ", leaving by the model's own law p min(m, periph(m)): leave and escape rates "
+                  "are not measured yet";
+  }
+  return note;
+}
+
+}  // namespace swarmagg

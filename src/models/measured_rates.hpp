@@ -1,0 +1,32 @@
+#pragma once
+// The `measured` model variants (SPEC 5.4): the same model equations fed with the terms a
+// simulation measured. Bayindir: creation per searcher pair and growth per (searcher,
+// size-m aggregate) pair; Soysal: pair-up P_e(1) and join P_e(i), the same measurements.
+// A term not measured (fewer than the events an estimate needs, or sizes the runs never
+// held) keeps the model's own value: creation from model.creation, growth from SPEC 5.2 /
+// 5.3. Leaving is not measured yet (leave episodes are the compaction issue's observable),
+// so every measured variant leaves by the model's law: Bayindir's p min(m, periph(m)),
+// Soysal's model.leaving variant.
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "models/bayindir_rates.hpp"
+#include "models/measured_terms.hpp"
+#include "models/model_series.hpp"
+#include "models/soysal_rates.hpp"
+
+namespace swarmagg {
+
+BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerms& terms);
+SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& terms);
+
+// Tidy values that say which terms of a measured variant were measured and which came from
+// the model: `terms:creation_measured` (0 or 1), `terms:growth_sizes_measured` (count),
+// `terms:leave_from_model` (1 when the world leaves at all).
+std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const MeasuredTerms& terms);
+
+// The same in words, one sentence, for the command line and rates.json.
+std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& terms);
+
+}  // namespace swarmagg
