@@ -1,16 +1,11 @@
 #include "compare/compare_summary.hpp"
 
-#include <cstdio>
 #include <sstream>
+
+#include "output/format_text.hpp"
 
 namespace swarmagg {
 namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-  return buffer;
-}
 
 double fraction(std::int64_t part, std::int64_t whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
@@ -23,9 +18,9 @@ const char* verdict(double p) {
 void leave_line(std::ostringstream& out, const ArmSummary& arm) {
   const LeaveSplit& l = arm.leave;
   out << "  " << arm.label << ": rim " << l.rim_out << "/" << l.rim_attempts << " got out ("
-      << format("%.3f", fraction(l.rim_out, l.rim_attempts)) << "), inside " << l.inside_out << "/"
-      << l.inside_attempts << " (" << format("%.3f", fraction(l.inside_out, l.inside_attempts))
-      << ")\n";
+      << format_text("%.3f", fraction(l.rim_out, l.rim_attempts)) << "), inside " << l.inside_out
+      << "/" << l.inside_attempts << " ("
+      << format_text("%.3f", fraction(l.inside_out, l.inside_attempts)) << ")\n";
 }
 
 nlohmann::json leave_json(const LeaveSplit& l) {
@@ -61,23 +56,25 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
   out << world_name << ": " << c.a.label << " vs " << c.b.label << ", " << c.a.final_noa.size()
       << " replicates each, same seeds\n";
   out << "mean final NOA: " << c.a.label
-      << format(" %.2f +- %.2f", c.a.noa.mean, c.a.noa.half_width) << ", " << c.b.label
-      << format(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
+      << format_text(" %.2f +- %.2f", c.a.noa.mean, c.a.noa.half_width) << ", " << c.b.label
+      << format_text(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
   out << "difference (" << c.b.label << " - " << c.a.label << ")"
-      << format(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
-      << format(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value) << "\n";
-  out << "KS final NOA:" << format(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
+      << format_text(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
+      << format_text(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value)
+      << "\n";
+  out << "KS final NOA:"
+      << format_text(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
       << verdict(c.ks_noa.p_value) << "\n";
   out << "KS final aggregate sizes (" << c.ks_sizes.n_a << " vs " << c.ks_sizes.n_b
       << " aggregates):"
-      << format(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
+      << format_text(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
       << verdict(c.ks_sizes.p_value) << "\n";
   out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
          "with ties)\n";
   out << "encounters per tu: " << c.a.label
-      << format(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
+      << format_text(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
       << c.b.label
-      << format(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
+      << format_text(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
   if (c.has_leaving) {
     out << "LEAVE attempts that got out (rim = fewer than " << c.rim_below
         << " aggregate members within s; k from hexagonal packing: edge 4, corner 3, interior "
@@ -86,7 +83,7 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
     leave_line(out, c.b);
   }
   out << "verdict: " << (c.differs() ? "the two differ" : "no significant difference") << " at the "
-      << format("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
+      << format_text("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
   return out.str();
 }
 

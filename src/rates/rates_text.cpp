@@ -1,18 +1,8 @@
 #include "rates/rates_text.hpp"
 
-#include <cstdio>
+#include "output/format_text.hpp"
 
 namespace swarmagg {
-
-namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-  return buffer;
-}
-
-}  // namespace
 
 std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
   std::vector<std::string> lines;
@@ -22,12 +12,13 @@ std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
     if (!e.rate) {
       line += "too few events (" + std::to_string(e.events) + ")";
     } else {
-      line += format("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high) + " from " +
+      line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high) + " from " +
               std::to_string(e.events) + " events";
       for (const ModelTerm& m : row.models) {
         if (m.rate <= 0.0) continue;
-        line += "; /" + m.variant +
-                format(" %.3f [%.3f, %.3f]", *e.rate / m.rate, *e.low / m.rate, *e.high / m.rate);
+        line +=
+            "; /" + m.variant +
+            format_text(" %.3f [%.3f, %.3f]", *e.rate / m.rate, *e.low / m.rate, *e.high / m.rate);
       }
     }
     lines.push_back(line);

@@ -100,16 +100,20 @@ const ModelTerm* chosen_term(const WorldSpec& world, const RateRow& row) {
   return row.models.empty() ? nullptr : &row.models.front();
 }
 
-// The measured term whose ratio to the world's model variant is furthest from 1 (in log).
+// The measured term furthest from the world's model variant: first by how far its interval
+// lies from 1 (0 when it holds 1: a wide interval proves nothing), then by |log ratio|.
 std::string most_deviant_term(const WorldSpec& world, const std::vector<RateRow>& rows) {
   const RateRow* worst = nullptr;
-  double worst_distance = -1.0, ratio = 0.0;
+  std::pair<double, double> worst_distance{-1.0, -1.0};
+  double ratio = 0.0;
   const ModelTerm* worst_model = nullptr;
   for (const RateRow& row : rows) {
     const ModelTerm* model = chosen_term(world, row);
     if (!row.estimate.rate || !model || model->rate <= 0.0) continue;
     const double r = *row.estimate.rate / model->rate;
-    const double distance = std::abs(std::log(r));
+    const double outside = std::max({0.0, std::log(*row.estimate.low / model->rate),
+                                     std::log(model->rate / *row.estimate.high)});
+    const std::pair<double, double> distance{outside, std::abs(std::log(r))};
     if (distance > worst_distance) {
       worst = &row;
       worst_distance = distance;
