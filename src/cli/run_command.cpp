@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "plot/run_plots.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
 #include "render/render_size.hpp"
@@ -28,6 +29,7 @@ struct RunCommandOptions {
   bool check = false;
   bool no_model = false;
   bool rates = false;
+  bool no_plots = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
@@ -74,6 +76,22 @@ void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
   }
 }
 
+// Plots are a view of the outputs, not an output the run can fail on: without gnuplot, or
+// when gnuplot fails on one, the run's data stand and stderr says what is missing.
+void draw_plots(const std::filesystem::path& out, bool quiet) {
+  if (const std::string reason = plots_unavailable_reason(); !reason.empty()) {
+    std::cerr << "note: plots skipped: " << reason << "\n";
+    return;
+  }
+  const PlotOutcome outcome = draw_run_plots(out, out);
+  for (const std::string& failure : outcome.failures) std::cerr << "warning: " << failure << "\n";
+  if (quiet || outcome.drawn.empty()) return;
+  std::cout << "plots:";
+  for (const std::filesystem::path& png : outcome.drawn)
+    std::cout << " " << png.filename().string();
+  std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
+}
+
 int run_command(const RunCommandOptions& options) {
   WorldOptions world = options.world;
   add_render_overrides(options, world);
@@ -113,6 +131,7 @@ int run_command(const RunCommandOptions& options) {
       std::cout << measured_variant_note(spec, *measured) << "\n";
   }
   if (!options.quiet) print_summary(spec, result, out);
+  if (!options.no_plots) draw_plots(out, options.quiet);
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
   if (!options.video.empty()) {
@@ -145,6 +164,8 @@ void add_run_command(CLI::App& app, Action& action) {
   command->add_flag("--rates", options->rates,
                     "Also measure every model term (rates.csv, rates.json, plots) and add the "
                     "`measured` model variants to model.csv");
+  command->add_flag("--no-plots", options->no_plots,
+                    "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });

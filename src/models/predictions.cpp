@@ -32,18 +32,24 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
   const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
-    predictions.push_back(
-        {.model = "bayindir",
-         .variant = creation_variant_name(variant),
-         .chosen = variant == world.model.creation,
-         .series = bayindir_expected_series(bayindir_rates(world, variant), grid, start)});
+    const BayindirRates rates = bayindir_rates(world, variant);
+    BayindirState last;
+    predictions.push_back({.model = "bayindir",
+                           .variant = creation_variant_name(variant),
+                           .chosen = variant == world.model.creation,
+                           .series = bayindir_expected_series(rates, grid, start, &last)});
+    if (rates.forms_aggregates)
+      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
   }
   if (measured) {
-    predictions.push_back(
-        {.model = "bayindir",
-         .variant = "measured",
-         .series = bayindir_expected_series(measured_bayindir_rates(world, *measured), grid, start),
-         .extra = measured_term_notes(world, *measured)});
+    const BayindirRates rates = measured_bayindir_rates(world, *measured);
+    BayindirState last;
+    predictions.push_back({.model = "bayindir",
+                           .variant = "measured",
+                           .series = bayindir_expected_series(rates, grid, start, &last),
+                           .extra = measured_term_notes(world, *measured)});
+    if (rates.forms_aggregates)
+      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
   }
   if (world.model.stochastic_replicates <= 0) return predictions;
   for (const CreationVariant variant : kCreationVariants) {

@@ -86,6 +86,18 @@ Eigen::VectorXd first_decision_distribution(const PartitionChain& chain,
   return weights / total;
 }
 
+// by_size[m]: the expected number of aggregates of size m under `distribution`.
+std::vector<double> expected_sizes(const std::vector<Partition>& states,
+                                   const Eigen::RowVectorXd& distribution, int agents) {
+  std::vector<double> by_size(static_cast<std::size_t>(agents) + 1, 0.0);
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    for (const int part : states[i]) {
+      if (part >= 2) by_size[part] += distribution(static_cast<Eigen::Index>(i));
+    }
+  }
+  return by_size;
+}
+
 }  // namespace
 
 std::string leaving_variant_name(LeavingVariant variant) {
@@ -136,6 +148,9 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
                                   distribution(static_cast<Eigen::Index>(i))});
     }
   }
+  add_size_distribution(
+      prediction, grid.back(),
+      expected_sizes(chain.states, distributions.row(distributions.rows() - 1), agents));
   if (stationary) add_stationary(chain, values, *stationary, prediction);
   return prediction;
 }

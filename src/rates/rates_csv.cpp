@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "analysis/csv_table.hpp"
+#include "analysis/csv_text.hpp"
 #include "core/errors.hpp"
-#include "output/csv_table.hpp"
-#include "output/csv_text.hpp"
 
 namespace swarmagg {
 

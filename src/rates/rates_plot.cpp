@@ -3,9 +3,9 @@
 #include <map>
 #include <set>
 
+#include "analysis/csv_text.hpp"
 #include "models/kinetic_rate.hpp"
 #include "output/atomic_file.hpp"
-#include "output/csv_text.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/png_terminal.hpp"
 

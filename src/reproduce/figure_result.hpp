@@ -4,12 +4,12 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/partition_comparison.hpp"
 #include "config/world_spec.hpp"
 #include "rates/rate_rows.hpp"
 #include "reproduce/encounter_comparison.hpp"
 #include "reproduce/noa_comparison.hpp"
 #include "reproduce/paper_figures.hpp"
-#include "reproduce/partition_comparison.hpp"
 
 namespace swarmagg {
 
@@ -20,7 +20,8 @@ struct FigureResult {
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
   std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
-  int reused = 0;                                 // worlds whose run folder was reused
+  std::string plot;  // the figure's PNG, relative to the report's folder ("plots/<id>.png")
+  int reused = 0;    // worlds whose run folder was reused
   double wall_seconds = 0.0;
 };
 

@@ -5,6 +5,7 @@
 // report can show the paper's own improved model next to our kinetic one.
 #include <vector>
 
+#include "analysis/variant_error.hpp"
 #include "config/world_spec.hpp"
 #include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
@@ -12,8 +13,6 @@
 namespace swarmagg {
 
 inline constexpr const char* kPaperFitVariant = "collision-paper";
-// The variant fed with the terms the run measured (models/measured_rates.hpp).
-inline constexpr const char* kMeasuredVariant = "measured";
 
 // With `measured` terms, the measured variants too (models/predictions.hpp).
 std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,

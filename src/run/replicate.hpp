@@ -14,6 +14,7 @@
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
 #include "observers/event_counts.hpp"
+#include "observers/leave_episodes.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {
@@ -41,6 +42,8 @@ class Replicate {
   const EventCounts& events() const { return events_; }
   // Cumulative growths by the size of the aggregate joined, [m] for m = 0..N.
   std::span<const std::uint64_t> growths_by_size() const { return growths_by_size_; }
+  // The LEAVE episodes so far, judged between each decision and the move that follows it.
+  const LeaveEpisodes& leave_episodes() const { return leave_episodes_; }
   SwarmSnapshot snapshot() const;
 
  private:
@@ -55,6 +58,7 @@ class Replicate {
   AggregateTracker aggregates_;
   EventCounts events_;
   std::vector<std::uint64_t> growths_by_size_;
+  LeaveEpisodes leave_episodes_;
   AgentArray<MotionCommand> commands_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG

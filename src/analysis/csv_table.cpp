@@ -1,4 +1,4 @@
-#include "output/csv_table.hpp"
+#include "analysis/csv_table.hpp"
 
 #include <cmath>
 #include <fstream>

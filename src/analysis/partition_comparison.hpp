@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "reproduce/noa_comparison.hpp"
+#include "analysis/variant_error.hpp"
 
 namespace swarmagg {
 
@@ -19,8 +19,9 @@ using Distribution = std::map<std::string, double>;  // partition ("3+1+1") -> p
 const std::vector<std::string>& partition_variants();  // original, peripheral
 
 struct PartitionComparison {
-  Distribution simulation;           // mean time fraction across replicates
-  std::vector<Distribution> models;  // run-averaged, in partition_variants() order
+  Distribution simulation;  // mean time fraction across replicates
+  // run-averaged, in partition_variants() order, then kMeasuredVariant when model.csv has it
+  std::vector<Distribution> models;
   std::vector<Distribution> stationary;
   std::vector<VariantError> errors;  // total-variation distance per variant
 };
@@ -30,6 +31,7 @@ double total_variation(const Distribution& a, const Distribution& b);
 // Mean over replicates of partitions.csv's time fractions.
 Distribution simulated_partitions(const std::filesystem::path& partitions_csv);
 
+// Without model.csv in the folder, models, stationary and errors stay empty.
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder);
 
 }  // namespace swarmagg

@@ -1,10 +1,9 @@
-#include "reproduce/partition_comparison.hpp"
+#include "analysis/partition_comparison.hpp"
 
 #include <cmath>
 #include <set>
 
-#include "output/csv_table.hpp"
-#include "reproduce/paper_predictions.hpp"
+#include "analysis/csv_table.hpp"
 
 namespace swarmagg {
 namespace {
@@ -32,7 +31,7 @@ Distribution run_average(const Trajectories& trajectories) {
 }  // namespace
 
 const std::vector<std::string>& partition_variants() {
-  static const std::vector<std::string> variants{"original", "peripheral", kMeasuredVariant};
+  static const std::vector<std::string> variants{"original", "peripheral"};
   return variants;
 }
 
@@ -64,6 +63,10 @@ Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
 }
 
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder) {
+  PartitionComparison comparison;
+  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
+  // A run without predictions (--no-model, or too many agents for the chain) has only its own.
+  if (!std::filesystem::exists(run_folder / "model.csv")) return comparison;
   const CsvTable model = read_csv(run_folder / "model.csv");
   const std::size_t name = model.column("model"), variant = model.column("variant"),
                     time = model.column("time"), quantity = model.column("quantity"),
@@ -82,9 +85,10 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
           model.number(row, value);
     }
   }
-  PartitionComparison comparison;
-  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
-  for (const std::string& v : partition_variants()) {
+  std::vector<std::string> variants = partition_variants();
+  // A run that measured its rates (run --rates, reproduce) also has the measured variant.
+  if (transient.contains(kMeasuredVariant)) variants.push_back(kMeasuredVariant);
+  for (const std::string& v : variants) {
     comparison.models.push_back(run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);
     comparison.errors.push_back(
