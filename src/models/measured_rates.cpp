@@ -11,6 +11,13 @@ int growth_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
   return used;
 }
 
+int leave_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
+  if (!world.controller.leave) return 0;
+  int used = 0;
+  for (const auto& [size, rate] : terms.attempt) used += size >= 2 && size <= world.robots.count;
+  return used;
+}
+
 }  // namespace
 
 BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerms& terms) {
@@ -18,7 +25,13 @@ BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerm
   const double dt = world.engine.dt;
   // Expected creations per step among y searchers: rate per pair * dt * y (y - 1) / 2.
   if (terms.creation) rates.creation = {*terms.creation * dt / 2.0, PairCount::Ordered};
-  if (!rates.forms_aggregates || !world.controller.join) return rates;
+  if (!rates.forms_aggregates) return rates;
+  if (world.controller.leave) {
+    for (const auto& [size, rate] : terms.attempt) {
+      if (size >= 2 && size <= rates.agents) rates.loss[static_cast<std::size_t>(size)] = rate * dt;
+    }
+  }
+  if (!world.controller.join) return rates;
   for (const auto& [size, rate] : terms.growth) {
     if (size >= 2 && size < rates.agents) rates.growth[static_cast<std::size_t>(size)] = rate * dt;
   }
@@ -29,6 +42,12 @@ SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& t
   SoysalRates rates = soysal_rates(world, world.model.leaving);
   const double dt = world.engine.dt;
   if (terms.creation) rates.pair_up = *terms.creation * dt;
+  if (world.controller.leave) {
+    for (const auto& [size, rate] : terms.attempt) {
+      if (size >= 2 && size <= rates.agents)
+        rates.leave[static_cast<std::size_t>(size)] = rate * dt;
+    }
+  }
   if (!world.controller.join) return rates;
   for (const auto& [size, rate] : terms.growth) {
     if (size >= 2 && size < rates.agents) rates.join[static_cast<std::size_t>(size)] = rate * dt;
@@ -41,7 +60,10 @@ std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const Measure
       {"terms:creation_measured", std::nullopt, terms.creation ? 1.0 : 0.0},
       {"terms:growth_sizes_measured", std::nullopt,
        static_cast<double>(growth_sizes_used(world, terms))}};
-  if (world.controller.leave) notes.push_back({"terms:leave_from_model", std::nullopt, 1.0});
+  if (world.controller.leave) {
+    notes.push_back({"terms:leave_sizes_measured", std::nullopt,
+                     static_cast<double>(leave_sizes_used(world, terms))});
+  }
   return notes;
 }
 
@@ -53,11 +75,10 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
             " aggregate sizes (the model's capture radius elsewhere)";
   }
   if (world.controller.leave && world.controller.type != ControllerType::Collision) {
-    note += world.controller.type == ControllerType::Soysal
-                ? ", leaving by the model's own law (model.leaving): leave and escape rates are "
-                  "not measured yet"
-                : ", leaving by the model's own law p min(m, periph(m)): leave and escape rates "
-                  "are not measured yet";
+    note += ", leaving at the measured LEAVE attempt rate at " +
+            std::to_string(leave_sizes_used(world, terms)) +
+            " aggregate sizes (attempts that do not escape come back as growths; the model's "
+            "leave law elsewhere)";
   }
   return note;
 }

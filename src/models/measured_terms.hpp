@@ -14,10 +14,10 @@ struct MeasuredTerms {
       growth;  // [m] growths (Soysal: joins) per searcher per size-m aggregate per tu
   // [m] mean number of aggregates of size m after the first decision (the placement pairs).
   std::map<int, double> initial;
-  // Leave attempts and escapes per size-m aggregate per tu join here once the compaction
-  // issue's leave episodes are observed (their exposure, sum n_m dt, is already tallied as
-  // RateTally::aggregate_steps); measured_bayindir_rates / measured_soysal_rates would then
-  // replace the model's loss / leave terms by the escape rates.
+  // [m] LEAVE attempts per size-m aggregate per tu. The measured variant loses agents at this
+  // rate, not at the escape rate: an attempt that does not escape comes back as a growth
+  // (join), which the measured growth rate already counts.
+  std::map<int, double> attempt;
 };
 
 }  // namespace swarmagg

@@ -1,5 +1,6 @@
 #include "rates/rate_rows.hpp"
 
+#include "config/leave_law.hpp"
 #include "core/errors.hpp"
 #include "models/bayindir_rates.hpp"
 #include "models/initial_state.hpp"
@@ -115,12 +116,48 @@ void add_initial_rows(const WorldSpec& world, const RateTally& tally, std::vecto
   }
 }
 
+// Leave attempts and escapes per aggregate of size m per tu. Models: attempts m P_l(m) / dt
+// (every member may try: m p for Bayindir); escapes are what each variant loses, Bayindir's
+// p min(m, periph(m)) (2p for pairs), Soysal's L(m) of the variant.
+void add_leave_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
+  const double dt = world.engine.dt;
+  const auto bayindir =
+      is_soysal(world) ? decltype(bayindir_variants(world)){} : bayindir_variants(world);
+  const auto soysal =
+      is_soysal(world) ? soysal_variants(world) : decltype(soysal_variants(world)){};
+  const std::string model = is_soysal(world) ? "soysal" : "bayindir";
+  const double base = is_soysal(world) ? world.controller.p0 : world.controller.p_leave;
+  const LeaveLaw law = is_soysal(world) ? world.controller.leave_law : LeaveLaw::Constant;
+  for (const std::string term : {"attempt", "escape"}) {
+    const std::vector<std::uint64_t>& events = term == "attempt" ? tally.attempts : tally.escapes;
+    for (int m = 2; m <= tally.agents; ++m) {
+      const auto index = static_cast<std::size_t>(m);
+      if (tally.leave_aggregate_steps[index] == 0 && events[index] == 0) continue;
+      RateRow row{.term = term,
+                  .size = m,
+                  .estimate = estimate_rate(
+                      events[index], static_cast<double>(tally.leave_aggregate_steps[index]) * dt)};
+      if (term == "attempt") {
+        for (const std::string& name : variant_names(world))
+          row.models.push_back({model, name, m * leave_probability(law, base, m) / dt});
+      } else {
+        for (const auto& [name, rates] : bayindir)
+          row.models.push_back({"bayindir", name, rates.loss[index] / dt});
+        for (const auto& [name, rates] : soysal)
+          row.models.push_back({"soysal", name, rates.leave[index] / dt});
+      }
+      rows.push_back(row);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally) {
   std::vector<RateRow> rows{creation_row(world, tally)};
   if (world.controller.type == ControllerType::Collision) return rows;
   if (world.controller.join) add_growth_rows(world, tally, rows);
+  if (world.controller.leave) add_leave_rows(world, tally, rows);
   add_initial_rows(world, tally, rows);
   return rows;
 }
@@ -132,6 +169,8 @@ MeasuredTerms measured_terms(const std::vector<RateRow>& rows) {
       terms.creation = row.estimate.rate;
     } else if ((row.term == "growth" || row.term == "join") && row.size && row.estimate.rate) {
       terms.growth[*row.size] = *row.estimate.rate;
+    } else if (row.term == "attempt" && row.size && row.estimate.rate) {
+      terms.attempt[*row.size] = *row.estimate.rate;
     } else if (row.term == "initial" && row.size && row.estimate.exposure > 0.0) {
       terms.initial[*row.size] = static_cast<double>(row.estimate.events) / row.estimate.exposure;
     }

@@ -8,8 +8,11 @@
 //    models: 2 rho_m v / A (SPEC 5.2), Soysal's P_e(m) / dt;
 //  - initial, by size m: aggregates of size m right after the first decision per replicate
 //    (exposure: replicates), against the placement expectation (models/initial_state.hpp).
-// The leave, escape and geometry terms need the leave-episode and geometry observables of
-// the compaction issue; they are not measured here yet.
+//  - attempt / escape, by the size m left: LEAVE attempts (escapes: attempts that ended
+//    with no waiting member of the aggregate left within s) per size-m aggregate per tu;
+//    models: attempts m P_l(m) / dt, escapes the variant's loss (Bayindir p min(m,
+//    periph(m)), Soysal L(m)).
+// The radius and rim terms (aggregate geometry) are not measured here yet.
 #include <optional>
 #include <string>
 #include <vector>

@@ -20,6 +20,9 @@ struct RateTally {
   std::vector<std::uint64_t> aggregate_steps;           // [m] sum of n_m
   // [m] aggregates of size m right after the first decision, summed over replicates.
   std::vector<std::uint64_t> initial_aggregates;
+  // LEAVE episodes by the size m of the aggregate left (observers/leave_episodes.hpp): the
+  // attempts, the escapes and their exposure (aggregates of size m at each decision).
+  std::vector<std::uint64_t> attempts, escapes, leave_aggregate_steps;
 
   explicit RateTally(int agent_count = 0);
   void merge(const RateTally& other);

@@ -49,7 +49,8 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
       {"exposure_steps", tally.steps},
       {"units",
        "rates per tu: creation/pairup per searcher pair, growth/join per (searcher, size-m "
-       "aggregate) pair; initial: aggregates per replicate after the first decision"},
+       "aggregate) pair, attempt/escape per size-m aggregate; initial: aggregates per "
+       "replicate after the first decision"},
       {"searchers", collision ? "every agent (a collision world's agents all keep moving)"
                               : "every agent in no aggregate, as the models count them "
                                 "(LEAVE agents included: the models have no leave timeout)"},
@@ -60,10 +61,8 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
       {"interval", "exact Poisson (Garwood) 95%, given the exposure"},
       {"terms", terms},
       {"not_measured",
-       {{"attempt", "needs the leave-episode observable of the compaction issue"},
-        {"escape", "needs the leave-episode observable of the compaction issue"},
-        {"radius", "needs the aggregate-geometry observable of the compaction issue"},
-        {"rim", "needs the aggregate-geometry observable of the compaction issue"}}},
+       {{"radius", "aggregate geometry is observed (summary.json) but not yet fitted here"},
+        {"rim", "aggregate geometry is observed (summary.json) but not yet fitted here"}}},
       {"geometry_fits", nullptr},
   };
   if (!collision) json["measured_variant"] = measured_variant_note(world, measured_terms(rows));

@@ -22,6 +22,7 @@ std::string optional_text(const std::optional<double>& value) {
 std::string term_label(const std::string& term) {
   if (term == "creation" || term == "pairup") return "per searcher pair per tu";
   if (term == "growth" || term == "join") return "per searcher per aggregate per tu";
+  if (term == "attempt" || term == "escape") return "per aggregate per tu";
   return "aggregates per replicate after the first decision";
 }
 

@@ -1,5 +1,7 @@
 #include "run/rate_collector.hpp"
 
+#include <algorithm>
+
 #include "rates/rate_recorder.hpp"
 #include "run/replicate.hpp"
 
@@ -15,6 +17,7 @@ class RateObserver final : public ReplicateObserver {
         collision_(spec.controller.type == ControllerType::Collision) {}
 
   void observe(const Replicate& replicate) override {
+    replicate_ = &replicate;  // alive until finish(): run_replicate owns it
     const auto sizes = replicate.aggregates().sizes();
     int free = replicate.spec().robots.count;
     if (!collision_) {
@@ -25,10 +28,25 @@ class RateObserver final : public ReplicateObserver {
                       collision_ ? events.encounters : events.creations,
                       replicate.growths_by_size());
   }
-  void finish() override { slot_ = recorder_.finish(); }
+  void finish() override {
+    RateTally tally = recorder_.finish();
+    if (replicate_) add_leave_episodes(replicate_->leave_episodes().tally(), tally);
+    slot_ = std::move(tally);
+  }
 
  private:
+  static void add_leave_episodes(const LeaveTally& leave, RateTally& tally) {
+    auto copy = [](const std::vector<std::int64_t>& from, std::vector<std::uint64_t>& to) {
+      for (std::size_t m = 0; m < std::min(from.size(), to.size()); ++m)
+        to[m] = static_cast<std::uint64_t>(from[m]);
+    };
+    copy(leave.attempts_by_size, tally.attempts);
+    copy(leave.escapes_by_size, tally.escapes);
+    copy(leave.aggregate_steps_by_size, tally.leave_aggregate_steps);
+  }
+
   RateRecorder recorder_;
+  const Replicate* replicate_ = nullptr;
   std::optional<RateTally>& slot_;
   bool collision_;
 };

@@ -47,6 +47,28 @@ TEST(RateCollector, GhostEncountersPerPairMatchKineticTheory) {
   EXPECT_NEAR(rows.front().models.at(1).rate, model, 1e-15);
 }
 
+TEST(RateCollector, LeaveAttemptsPerMemberStepEqualP) {
+  const WorldSpec spec =
+      paper_world("full-0.0025.yaml", {"run.duration=1500", "run.replicates=2", "run.threads=2"});
+  const RateTally tally = measure(spec);
+  // Every member of a size-m aggregate tries with probability p per step: expected attempts
+  // p * sum_m m * (aggregate steps of size m).
+  double expected = 0.0, attempts = 0.0;
+  for (int m = 2; m <= tally.agents; ++m) {
+    const auto index = static_cast<std::size_t>(m);
+    expected +=
+        spec.controller.p_leave * m * static_cast<double>(tally.leave_aggregate_steps[index]);
+    attempts += static_cast<double>(tally.attempts[index]);
+  }
+  ASSERT_GT(expected, 500.0);
+  EXPECT_NEAR(attempts, expected, 4.0 * std::sqrt(expected));
+  // And per size, each row's model value is m p / dt.
+  for (const RateRow& row : measured_rate_rows(spec, tally)) {
+    if (row.term != "attempt") continue;
+    EXPECT_DOUBLE_EQ(row.models.front().rate, *row.size * spec.controller.p_leave / spec.engine.dt);
+  }
+}
+
 // The pairs the first decision forms, over many seeded placements, against the derivation.
 struct FirstDecisionSample {
   std::vector<double> pairs, triples;
@@ -75,8 +97,8 @@ double standard_error(const std::vector<double>& values) {
 TEST(RateCollector, ExpectedPlacementPairsMatchTheMeanOverSeededPlacements) {
   // The 400 agents on 460 x 460 (creation rules), and the same with joining.
   for (const bool join : {false, true}) {
-    WorldSpec spec = paper_world("creation-150.yaml", {"robots.count=400", "arena.width=460",
-                                                      "arena.height=460"});
+    WorldSpec spec = paper_world("creation-150.yaml",
+                                 {"robots.count=400", "arena.width=460", "arena.height=460"});
     spec.controller.join = join;
     const FirstDecisionSample sample = first_decisions(spec, 1500);
     const FirstDecision expected = expected_first_decision(spec);
@@ -94,8 +116,8 @@ TEST(RateCollector, ExpectedPlacementTriplesMatchTheMeanOverSeededPlacements) {
   // Triples are second order, and four-agent clusters (third order, which the expansion
   // leaves out) take from them: at 400 agents on 460 x 460 that is ~0.08 of 0.64, so the
   // check runs where the third order is far below the standard error (200 agents).
-  WorldSpec spec = paper_world("creation-growing-80.yaml", {"robots.count=200", "arena.width=460",
-                                                            "arena.height=460"});
+  WorldSpec spec = paper_world("creation-growing-80.yaml",
+                               {"robots.count=200", "arena.width=460", "arena.height=460"});
   const FirstDecisionSample sample = first_decisions(spec, 3000);
   const FirstDecision expected = expected_first_decision(spec);
   EXPECT_NEAR(sample_mean(sample.triples), expected.triples, 3.0 * standard_error(sample.triples));
