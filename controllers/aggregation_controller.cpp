@@ -89,6 +89,12 @@ void AggregationController::count_leave(std::uint32_t agent, const ControllerInp
   --left;
 }
 
+void AggregationController::count_growth(const ControllerInput& input, int joined_size) {
+  if (input.growths_by_size.empty()) return;
+  const auto last = static_cast<int>(input.growths_by_size.size()) - 1;
+  ++input.growths_by_size[static_cast<std::size_t>(std::clamp(joined_size, 0, last))];
+}
+
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
   if (!rules_.join) return;
@@ -99,6 +105,7 @@ void AggregationController::join_waiting(const ControllerInput& input, SwarmStat
       swarm.state[i] = AgentState::Wait;
       settled_[i] = 1;
       ++events.growths;
+      count_growth(input, input.aggregates.size_of_agent()[nb.id]);
       break;
     }
   }
@@ -134,6 +141,7 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
       settled_[agent] = 1;
       swarm.state[agent] = AgentState::Wait;
       ++events.growths;
+      count_growth(input, 2);
     }
   }
 }

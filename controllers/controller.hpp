@@ -22,6 +22,10 @@ struct ControllerInput {
   const NeighbourLists& neighbours;
   std::span<const std::uint8_t> reflections;  // engine.hpp's Reflection bits
   const AggregateTracker& aggregates;         // of the states the decision starts from
+  // Cumulative growths by the size of the aggregate joined ([m]; a searcher that joins a
+  // pair formed in the same decision counts at m = 2), counted when not empty. Observers
+  // (measured rates) read them; no decision depends on them.
+  std::span<std::uint64_t> growths_by_size = {};
 };
 
 class Controller {

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   add_run_command(app, action);
   add_render_command(app, action);
   add_model_command(app, action);
+  add_rates_command(app, action);
   add_sweep_command(app, action);
   add_merge_command(app, action);
   add_plot_command(app, action);

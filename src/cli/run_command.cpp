@@ -6,12 +6,16 @@
 #include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
 #include "core/errors.hpp"
+#include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
 #include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
+#include "rates/rate_outputs.hpp"
+#include "rates/rates_text.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
+#include "run/rate_collector.hpp"
 #include "run/run_folder.hpp"
 #include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
@@ -25,6 +29,7 @@ struct RunCommandOptions {
   bool quiet = false;
   bool check = false;
   bool no_model = false;
+  bool rates = false;
   bool no_plots = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
@@ -68,9 +73,10 @@ void print_summary(const WorldSpec& spec, const RunResult& result,
 
 // A world the models cannot describe (say, a partition model of too many agents) still
 // keeps its simulation outputs: the run only notes why model.csv is missing.
-void write_predictions(const WorldSpec& spec, const std::filesystem::path& out) {
+void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
+                       const MeasuredTerms* measured) {
   try {
-    write_model_outputs(spec, predict(spec), out);
+    write_model_outputs(spec, predict(spec, measured), out);
   } catch (const InputError& e) {
     std::cerr << "note: no model.csv: " << e.what() << "\n";
   }
@@ -111,6 +117,13 @@ int run_command(const RunCommandOptions& options) {
   run_options.observers =
       both_observers(frame_observers(spec, frames),
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
+  // The measured initial state comes from the rates too, so that key collects them.
+  const bool measure = options.rates || spec.model.initial_state == InitialState::Measured;
+  RateCollector collector(spec);
+  if (measure) {
+    run_options.observers = both_observers(
+        run_options.observers, [&collector](int index) { return collector.observer(index); });
+  }
   const RunResult result = run_world(spec, run_options);
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
@@ -120,7 +133,19 @@ int run_command(const RunCommandOptions& options) {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
   write_run_folder(spec, result, out);
-  if (!options.no_model) write_predictions(spec, out);
+  std::optional<MeasuredTerms> measured;
+  std::vector<RateRow> rows;
+  if (measure) {
+    const RateTally tally = collector.total();
+    rows = options.rates ? write_rate_outputs(spec, tally, out) : measured_rate_rows(spec, tally);
+    measured = measured_terms(rows);
+  }
+  if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);
+  if (!options.quiet && options.rates) {
+    for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
+    if (spec.controller.type != ControllerType::Collision)
+      std::cout << measured_variant_note(spec, *measured) << "\n";
+  }
   if (!options.quiet) print_summary(spec, result, out);
   if (!options.no_plots) draw_plots(out, options.quiet);
   if (spec.render.every > 0 && !options.quiet)
@@ -159,6 +184,9 @@ void add_run_command(CLI::App& app, Action& action) {
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");
+  command->add_flag("--rates", options->rates,
+                    "Also measure every model term (rates.csv, rates.json, plots) and add the "
+                    "`measured` model variants to model.csv");
   command->add_flag("--no-plots", options->no_plots,
                     "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
   command->add_flag("--check", options->check,

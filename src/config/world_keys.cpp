@@ -305,6 +305,11 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(integer_key<int>(
       "model.stochastic_replicates",
       [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
+  keys.push_back(enum_key<InitialState>(
+      "model.initial_state", [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },
+      {{"placement", InitialState::Placement},
+       {"all_searching", InitialState::AllSearching},
+       {"measured", InitialState::Measured}}));
   keys.push_back(integer_key<int>(
       "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
   keys.push_back(integer_key<int>(

@@ -22,6 +22,10 @@ enum class EngineType { Kinematic, Box2D };
 enum class Kappa { Kinetic, Maxwell, Paper };
 enum class CreationVariant { Original, Collision };
 enum class LeavingVariant { Original, Peripheral };
+// Where the models start (SPEC 5.4): the state after the first decision, i.e. the pairs that
+// random placement formed at once (derived from the placement geometry, or measured by a
+// run), or all agents searching as the paper's models did.
+enum class InitialState { Placement, AllSearching, Measured };
 
 struct ArenaSpec {
   double width = 180.0;
@@ -91,6 +95,7 @@ struct ModelSpec {
   LeavingVariant leaving = LeavingVariant::Peripheral;
   bool periphery_cap = true;
   int stochastic_replicates = 10;
+  InitialState initial_state = InitialState::Placement;
 };
 
 struct RenderSpec {

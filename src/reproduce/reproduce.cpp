@@ -7,6 +7,7 @@
 #include "config/world_loader.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"
+#include "rates/rates_csv.hpp"
 #include "reproduce/claims.hpp"
 #include "reproduce/encounter_plot.hpp"
 #include "reproduce/noa_plot.hpp"
@@ -40,10 +41,12 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
       break;
     case FigureKind::Noa:
       result.noa = compare_noa(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_noa(files, figure.title, *result.noa);
       break;
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_partitions(files, figure.title, *result.partitions);
       break;
   }
