@@ -245,9 +245,13 @@ void AggregationController::write_commands(const SwarmState& swarm,
   };
   const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
   const SignalMask search_block = rules_.join ? kWaiting : 0;
+  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
   constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
-  // Moving waiting bodies (compaction) must not crush a leaver they enclose either.
-  const SignalMask wait_block = kWaiting | (rules_.compaction.enabled ? kLeaving : 0);
+  // Moving waiting bodies (compaction) respect every body that is solid to them: they must
+  // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
+  // bodies it blocks, so both sides of a solid pair need the bit).
+  const SignalMask wait_block =
+      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
   // other, so neither compaction nor a body engine's shoving can push one through another.

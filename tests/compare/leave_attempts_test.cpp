@@ -13,7 +13,8 @@ namespace {
 
 // A hexagonal aggregate of seven at spacing 3 (between 2r = 2 and s = 4): the centre
 // (agent 0) has 6 members within s, each rim agent 3 (the centre and its two ring
-// neighbours; the next ring agents are 3 sqrt(3) > s away).
+// neighbours; the next ring agents are 3 sqrt(3) > s away). Compaction is off so that it
+// keeps that spacing.
 WorldSpec hexagon_world(std::uint64_t seed) {
   return load_world_text(R"(
 name: hexagon
@@ -22,7 +23,8 @@ robots:
   count: 7
   placement: [[20, 20, 0], [23, 20, 0], [21.5, 22.598076, 0], [18.5, 22.598076, 0],
               [17, 20, 0], [18.5, 17.401924, 0], [21.5, 17.401924, 0]]
-controller: {type: bayindir, join: true, leave: true, p_leave: 0.001, leave_timeout: 10}
+controller: {type: bayindir, join: true, leave: true, p_leave: 0.001, leave_timeout: 10,
+             compaction: {enabled: false}}
 run: {duration: 200, replicates: 1, seed: )" +
                              std::to_string(seed) + "}\n",
                          "hexagon");

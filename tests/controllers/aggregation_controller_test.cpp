@@ -288,7 +288,8 @@ TEST(Compaction, WaitingMembersPullEachOtherToTheSpacingAtMostAtV) {
   EXPECT_NEAR(norm(f.commands[b].velocity), 1.0, 1e-12);
   EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
   EXPECT_EQ(f.commands[a].halt_on, 0u);
-  EXPECT_EQ(f.commands[a].blocked_by, kWaitMask | kLeaveMask);
+  constexpr SignalMask kApproachMask = mask_of(static_cast<Signal>(AgentState::Approach));
+  EXPECT_EQ(f.commands[a].blocked_by, kWaitMask | kLeaveMask | kGoMask | kApproachMask);
 }
 
 TEST(Compaction, BelowTheToleranceAWaitingAgentStandsExactlyStill) {
