@@ -17,6 +17,7 @@ void add_sweep_command(CLI::App& app, Action& action);
 void add_merge_command(CLI::App& app, Action& action);
 void add_reproduce_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
+void add_plot_command(CLI::App& app, Action& action);
 
 int main(int argc, char** argv);
 

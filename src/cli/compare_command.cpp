@@ -13,7 +13,6 @@ namespace {
 struct CompareCommandOptions {
   WorldOptions world;
   std::string out;
-  int rim_below = kDefaultRimBelow;
   bool quiet = false;
 };
 
@@ -22,11 +21,10 @@ int compare_command(const CompareCommandOptions& options) {
   // Welch's interval needs a spread on both sides.
   if (spec.run.replicates < 2)
     throw InputError("compare needs at least 2 replicates (--replicates)");
-  if (options.rim_below < 1) throw InputError("--rim-below must be at least 1");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
   install_interrupt_handlers();
-  const EngineComparison result = compare_engines(spec, options.rim_below, !options.quiet);
+  const EngineComparison result = compare_engines(spec, !options.quiet);
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   if (!options.quiet) {
     std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";
@@ -46,8 +44,6 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_option("--seed", options->world.seed, "World seed (run.seed)");
   command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
   command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
-  command->add_option("--rim-below", options->rim_below,
-                      "Rim: fewer than K aggregate members within s (default 5)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->callback(
       [options, &action] { action = [options] { return compare_command(*options); }; });

@@ -7,6 +7,7 @@
 #include "cli/world_options.hpp"
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
+#include "plot/run_plots.hpp"
 #include "render/render_size.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
@@ -23,6 +24,7 @@ struct RunCommandOptions {
   bool quiet = false;
   bool check = false;
   bool no_model = false;
+  bool no_plots = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
@@ -68,6 +70,22 @@ void write_predictions(const WorldSpec& spec, const std::filesystem::path& out) 
   }
 }
 
+// Plots are a view of the outputs, not an output the run can fail on: without gnuplot, or
+// when gnuplot fails on one, the run's data stand and stderr says what is missing.
+void draw_plots(const std::filesystem::path& out, bool quiet) {
+  if (const std::string reason = plots_unavailable_reason(); !reason.empty()) {
+    std::cerr << "note: plots skipped: " << reason << "\n";
+    return;
+  }
+  const PlotOutcome outcome = draw_run_plots(out, out);
+  for (const std::string& failure : outcome.failures) std::cerr << "warning: " << failure << "\n";
+  if (quiet || outcome.drawn.empty()) return;
+  std::cout << "plots:";
+  for (const std::filesystem::path& png : outcome.drawn)
+    std::cout << " " << png.filename().string();
+  std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
+}
+
 int run_command(const RunCommandOptions& options) {
   WorldOptions world = options.world;
   add_render_overrides(options, world);
@@ -88,6 +106,7 @@ int run_command(const RunCommandOptions& options) {
   write_run_folder(spec, result, out);
   if (!options.no_model) write_predictions(spec, out);
   if (!options.quiet) print_summary(spec, result, out);
+  if (!options.no_plots) draw_plots(out, options.quiet);
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
   if (!options.video.empty()) {
@@ -117,6 +136,8 @@ void add_run_command(CLI::App& app, Action& action) {
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");
+  command->add_flag("--no-plots", options->no_plots,
+                    "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });

@@ -1,6 +1,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "plot/run_plots.hpp"
+#include "plot/sweep_plots.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/shard.hpp"
 #include "sweep/sweep_listing.hpp"
@@ -18,6 +20,7 @@ struct SweepCommandOptions {
   std::string shard;
   bool list = false;
   bool quiet = false;
+  bool no_plots = false;
 };
 
 void print_report(const SweepPlan& plan, const SweepOptions& options, const SweepReport& report) {
@@ -40,6 +43,10 @@ int sweep_command(const SweepCommandOptions& command) {
     std::cout << sweep_listing(shard_runs(expand_sweep(plan), options.shard), options.out);
     return 0;
   }
+  // Checked once for the whole sweep, so a missing gnuplot is said once, not once a run.
+  const std::string plots_missing = command.no_plots ? "" : plots_unavailable_reason();
+  if (!plots_missing.empty()) std::cerr << "note: plots skipped: " << plots_missing << "\n";
+  options.plots = !command.no_plots && plots_missing.empty();
   install_interrupt_handlers();
   const SweepReport report = run_sweep(plan, options);
   if (!command.quiet) print_report(plan, options, report);
@@ -54,6 +61,14 @@ int sweep_command(const SweepCommandOptions& command) {
   const MergeReport merged = merge_sweep({options.out}, options.out);
   if (!command.quiet)
     std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n";
+  if (!options.plots) return 0;
+  const PlotOutcome plots = draw_sweep_plots(options.out, options.out);
+  for (const std::string& failure : plots.failures) std::cerr << "warning: " << failure << "\n";
+  if (!command.quiet) {
+    std::cout << "plots:";
+    for (const auto& png : plots.drawn) std::cout << " " << png.filename().string();
+    std::cout << "\n";
+  }
   return 0;
 }
 
@@ -73,6 +88,8 @@ void add_sweep_command(CLI::App& app, Action& action) {
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--no-plots", options->no_plots,
+                    "Skip the plots of each run and of the merged sweep (gnuplot)");
   command->callback([options, &action] { action = [options] { return sweep_command(*options); }; });
 }
 

@@ -1,18 +1,8 @@
 #include "compare/arm_comparison.hpp"
 
-namespace swarmagg {
-namespace {
+#include "run/aggregate_summary.hpp"
 
-LeaveSplit split_attempts(const std::vector<std::vector<LeaveAttempt>>& per_replicate) {
-  LeaveSplit split;
-  for (const auto& attempts : per_replicate) {
-    for (const LeaveAttempt& a : attempts) {
-      (a.rim ? split.rim_attempts : split.inside_attempts) += 1;
-      if (a.got_out) (a.rim ? split.rim_out : split.inside_out) += 1;
-    }
-  }
-  return split;
-}
+namespace swarmagg {
 
 bool world_has_leaving(const WorldSpec& spec) {
   if (!spec.controller.leave) return false;
@@ -27,8 +17,6 @@ bool world_has_leaving(const WorldSpec& spec) {
   return false;
 }
 
-}  // namespace
-
 ArmSummary summarize_arm(const ArmResult& arm) {
   ArmSummary s;
   s.label = arm.label;
@@ -41,18 +29,17 @@ ArmSummary summarize_arm(const ArmResult& arm) {
   }
   s.noa = mean_interval(s.final_noa);
   s.encounter_rate = mean_interval(s.encounter_rates);
-  s.leave = split_attempts(arm.leave_attempts);
+  s.leave = pooled_leave(arm.run);
   return s;
 }
 
-Comparison compare_arms(const ArmResult& a, const ArmResult& b, int rim_below) {
+Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   Comparison c;
   c.a = summarize_arm(a);
   c.b = summarize_arm(b);
   c.noa_difference = welch_interval(c.a.final_noa, c.b.final_noa);
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
-  c.rim_below = rim_below;
   c.has_leaving = world_has_leaving(a.spec) || world_has_leaving(b.spec);
   return c;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The statistics of a comparison of two arms (compare/engine_arm.hpp): the difference in
 // mean final NOA with its Welch interval, KS tests on the final NOA and on the pooled final
-// aggregate sizes, the encounter rates, and the LEAVE attempts split by rim and inside.
+// aggregate sizes, the encounter rates, and the LEAVE episodes pooled over the replicates
+// (attempts and escapes split by rim and inside, SPEC 4's rim rule, and by aggregate size).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,17 +10,11 @@
 #include "compare/engine_arm.hpp"
 #include "compare/ks_test.hpp"
 #include "compare/welch_interval.hpp"
+#include "observers/leave_tally.hpp"
 
 namespace swarmagg {
 
 constexpr double kSignificance = 0.05;  // two-sided, per test; 95% intervals
-
-struct LeaveSplit {
-  std::int64_t rim_attempts = 0;
-  std::int64_t rim_out = 0;
-  std::int64_t inside_attempts = 0;
-  std::int64_t inside_out = 0;
-};
 
 struct ArmSummary {
   std::string label;
@@ -28,7 +23,7 @@ struct ArmSummary {
   std::vector<double> encounter_rates;  // per replicate, encounters per tu
   MeanInterval noa;
   MeanInterval encounter_rate;
-  LeaveSplit leave;
+  LeaveTally leave;
 };
 
 struct Comparison {
@@ -37,12 +32,13 @@ struct Comparison {
   WelchResult noa_difference;  // b - a
   KsResult ks_noa;
   KsResult ks_sizes;
-  int rim_below = kDefaultRimBelow;
   bool has_leaving = false;
   bool differs() const;  // any of the three tests significant at kSignificance
 };
 
 ArmSummary summarize_arm(const ArmResult& arm);
-Comparison compare_arms(const ArmResult& a, const ArmResult& b, int rim_below);
+Comparison compare_arms(const ArmResult& a, const ArmResult& b);
+// Whether agents of this world leave aggregates at all.
+bool world_has_leaving(const WorldSpec& spec);
 
 }  // namespace swarmagg

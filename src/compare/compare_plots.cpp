@@ -1,9 +1,12 @@
 #include "compare/compare_plots.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
+#include "controllers/aggregation_rules.hpp"
+#include "models/aggregate_shape.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
 
@@ -60,7 +63,77 @@ std::string final_script(const std::string& world_name, const Comparison& c) {
   return gp.str();
 }
 
+// Sizes whose aggregate time gives fewer than this many expected attempts (m p/dt) are left
+// out of the plot (they stay in the CSV): their rates are noise.
+constexpr double kMinExpectedAttempts = 10.0;
+
+std::string escape_rate_script(const std::string& world_name, const Comparison& c) {
+  const auto points = [](int time_column, int rate_column) {
+    return "($" + std::to_string(time_column) +
+           " * $10 >= " + std::to_string(static_cast<int>(kMinExpectedAttempts)) + " ? $" +
+           std::to_string(rate_column) + " : NaN)";
+  };
+  std::ostringstream gp;
+  gp << "# Escapes per tu per aggregate of size m, pooled over replicates (points: 95% CI,\n"
+     << "# normal approximation to Poisson counts), with the models' two leave laws. Sizes\n"
+     << "# with fewer than " << kMinExpectedAttempts
+     << " expected attempts (aggregate_time x m p/dt) are left out.\n"
+     << "set datafile separator ','\nset terminal pngcairo size 1000,650\n"
+     << "set output 'escape_rate.png'\n"
+     << "set title " << gnuplot_quote(world_name + ": escape rate by aggregate size") << "\n"
+     << "set xlabel 'aggregate size m'\nset ylabel 'escapes per tu per aggregate'\n"
+     << "set key top left\nset xrange [1.5:*]\nset yrange [0:*]\n"
+     << "plot 'escape_rate.csv' skip 1 using ($1-0.1):" << points(3, 4)
+     << ":5 with yerrorbars pt 7 lc rgb '#1f77b4' title " << gnuplot_quote(c.a.label) << ", \\\n"
+     << "     '' skip 1 using ($1+0.1):" << points(7, 8)
+     << ":9 with yerrorbars pt 5 lc rgb '#d62728' title " << gnuplot_quote(c.b.label) << ", \\\n"
+     << "     '' skip 1 using 1:10 with lines lw 2 dt 2 lc rgb '#444444' title 'm p / dt', \\\n"
+     << "     '' skip 1 using 1:11 with lines lw 2 lc rgb '#009e73' title 'periph(m) p / dt'\n";
+  return gp.str();
+}
+
+// An agent's leave probability per step in an aggregate of `size` (Bayindir or Soysal).
+double member_leave_probability(const WorldSpec& spec, int size) {
+  const AggregationRules rules =
+      spec.controller.type == ControllerType::Soysal ? soysal_rules(spec) : bayindir_rules(spec);
+  return leave_probability(rules.leave_rule, size, size - 1);
+}
+
+void write_rate(std::ostringstream& csv, const LeaveTally& leave, int size, double dt) {
+  const double exposure = leave.aggregate_time(size, dt);
+  const auto k = static_cast<std::size_t>(size);
+  const std::int64_t escapes = k < leave.escapes_by_size.size() ? leave.escapes_by_size[k] : 0;
+  csv << ',' << escapes << ',' << exposure;
+  if (exposure <= 0.0) {
+    csv << ",NaN,NaN";
+    return;
+  }
+  const auto e = static_cast<double>(escapes);
+  csv << ',' << e / exposure << ',' << 1.96 * std::sqrt(e) / exposure;
+}
+
 }  // namespace
+
+std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Comparison& c) {
+  std::ostringstream csv;
+  csv << "size";
+  for (const std::string& label : {c.a.label, c.b.label}) {
+    csv << ',' << label << "_escapes," << label << "_aggregate_time," << label << "_rate," << label
+        << "_ci95_half_width";
+  }
+  csv << ",all_members_law,periphery_law\n";
+  const int largest = std::max(c.a.leave.largest_size(), c.b.leave.largest_size());
+  const double dt = a.spec.engine.dt;
+  for (int m = 2; m <= largest; ++m) {
+    if (c.a.leave.aggregate_time(m, dt) <= 0.0 && c.b.leave.aggregate_time(m, dt) <= 0.0) continue;
+    csv << m;
+    write_rate(csv, c.a.leave, m, dt);
+    write_rate(csv, c.b.leave, m, b.spec.engine.dt);
+    const double p_per_tu = member_leave_probability(a.spec, m) / dt;
+    csv << ',' << m * p_per_tu << ',' << capped_periphery_agents(m) * p_per_tu << '\n';
+  }
+  return csv.str();
+}
 
 std::string noa_band_csv(const ArmResult& a, const ArmResult& b) {
   std::ostringstream csv;
@@ -99,6 +172,11 @@ void write_comparison_plots(const std::string& world_name, const ArmResult& a, c
                     histogram_csv("size", c.a.label, c.a.final_sizes, c.b.label, c.b.final_sizes));
   run_gnuplot(out / "noa.gp", noa_script(world_name, a, b));
   run_gnuplot(out / "final.gp", final_script(world_name, c));
+  const ControllerType type = a.spec.controller.type;
+  if (c.has_leaving && (type == ControllerType::Bayindir || type == ControllerType::Soysal)) {
+    write_file_atomic(out / "escape_rate.csv", escape_rate_csv(a, b, c));
+    run_gnuplot(out / "escape_rate.gp", escape_rate_script(world_name, c));
+  }
 }
 
 }  // namespace swarmagg

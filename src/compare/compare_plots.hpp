@@ -4,6 +4,10 @@
 //   noa.csv + noa.gp -> noa.png          NOA over time, mean and 95% CI band of each arm
 //   final_noa.csv, sizes.csv + final.gp -> final.png
 //                                        final NOA and final aggregate sizes, side by side
+//   escape_rate.csv + escape_rate.gp -> escape_rate.png   (Bayindir and Soysal worlds that
+//                                        leave) escapes per tu per aggregate of size m of
+//                                        each arm, with the leave laws m p/dt (every member
+//                                        may leave) and periph(m) p/dt (the periphery only)
 #include <filesystem>
 #include <string>
 
@@ -18,6 +22,12 @@ std::string noa_band_csv(const ArmResult& a, const ArmResult& b);
 std::string histogram_csv(const std::string& value_name, const std::string& label_a,
                           const std::vector<double>& values_a, const std::string& label_b,
                           const std::vector<double>& values_b);
+
+// escape_rate.csv: size, then each arm's escapes, aggregate_time, rate (escapes /
+// aggregate_time) and the rate's 95% half width (NaN where the arm never had an aggregate of
+// that size), then the two laws, with p the per-step leave probability of a member of an
+// aggregate of that size.
+std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Comparison& c);
 
 void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
                             const Comparison& c, const std::filesystem::path& out);

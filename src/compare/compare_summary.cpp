@@ -16,25 +16,28 @@ double fraction(std::int64_t part, std::int64_t whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
 }
 
+constexpr const char* kRimRuleText =
+    "SPEC 4: rim = fewer than 6 fellow members within 1.2 x spacing when the attempt starts";
+
 const char* verdict(double p) {
   return p < kSignificance ? "different" : "no significant difference";
 }
 
 void leave_line(std::ostringstream& out, const ArmSummary& arm) {
-  const LeaveSplit& l = arm.leave;
-  out << "  " << arm.label << ": rim " << l.rim_out << "/" << l.rim_attempts << " got out ("
-      << format("%.3f", fraction(l.rim_out, l.rim_attempts)) << "), inside " << l.inside_out << "/"
-      << l.inside_attempts << " (" << format("%.3f", fraction(l.inside_out, l.inside_attempts))
-      << ")\n";
+  const RimSplit& tried = arm.leave.attempts;
+  const RimSplit& out_of = arm.leave.escapes;
+  out << "  " << arm.label << ": rim " << out_of.rim << "/" << tried.rim << " got out ("
+      << format("%.3f", fraction(out_of.rim, tried.rim)) << "), inside " << out_of.inside << "/"
+      << tried.inside << " (" << format("%.3f", fraction(out_of.inside, tried.inside)) << ")\n";
 }
 
-nlohmann::json leave_json(const LeaveSplit& l) {
-  return {{"rim_attempts", l.rim_attempts},
-          {"rim_got_out", l.rim_out},
-          {"rim_fraction_out", fraction(l.rim_out, l.rim_attempts)},
-          {"inside_attempts", l.inside_attempts},
-          {"inside_got_out", l.inside_out},
-          {"inside_fraction_out", fraction(l.inside_out, l.inside_attempts)}};
+nlohmann::json leave_json(const LeaveTally& l) {
+  return {{"rim_attempts", l.attempts.rim},
+          {"rim_got_out", l.escapes.rim},
+          {"rim_fraction_out", fraction(l.escapes.rim, l.attempts.rim)},
+          {"inside_attempts", l.attempts.inside},
+          {"inside_got_out", l.escapes.inside},
+          {"inside_fraction_out", fraction(l.escapes.inside, l.attempts.inside)}};
 }
 
 nlohmann::json arm_json(const ArmSummary& arm) {
@@ -79,9 +82,7 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
       << c.b.label
       << format(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
   if (c.has_leaving) {
-    out << "LEAVE attempts that got out (rim = fewer than " << c.rim_below
-        << " aggregate members within s; k from hexagonal packing: edge 4, corner 3, interior "
-           "5-6):\n";
+    out << "LEAVE attempts that got out (" << kRimRuleText << "):\n";
     leave_line(out, c.a);
     leave_line(out, c.b);
   }
@@ -103,10 +104,9 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
           {"ks_final_noa", ks_json(c.ks_noa)},
           {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
           {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
-          {"rim_below", c.rim_below},
-          {"rim_rule",
-           "rim: fewer than rim_below members of its own aggregate within s just before leaving; "
-           "got out: perceives no still-waiting former member when the LEAVE timeout ends"},
+          {"rim_rule", std::string(kRimRuleText) +
+                           "; got out: perceives (within s) no still-waiting member of the "
+                           "aggregate it left when its LEAVE timeout ends"},
           {"has_leaving", c.has_leaving},
           {"significance", kSignificance},
           {"differs", c.differs()}};

@@ -1,10 +1,9 @@
 #pragma once
 // One side of a comparison: a world (usually the same world on one engine) run with the
-// run's replicates and seeds, with a LEAVE-attempt observer on every replicate.
+// run's replicates and seeds. Each replicate's outcome carries its LEAVE episodes and final
+// aggregate shapes (run/world_runner.hpp), which the comparison reads.
 #include <string>
-#include <vector>
 
-#include "compare/leave_attempts.hpp"
 #include "config/world_spec.hpp"
 #include "run/world_runner.hpp"
 
@@ -14,10 +13,8 @@ struct ArmResult {
   std::string label;  // e.g. "kinematic"
   WorldSpec spec;
   RunResult run;
-  std::vector<std::vector<LeaveAttempt>> leave_attempts;  // per replicate
 };
 
-ArmResult run_arm(const std::string& label, const WorldSpec& spec, int rim_below,
-                  bool progress = false);
+ArmResult run_arm(const std::string& label, const WorldSpec& spec, bool progress = false);
 
 }  // namespace swarmagg

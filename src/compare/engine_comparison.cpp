@@ -18,11 +18,11 @@ WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
 
 }  // namespace
 
-EngineComparison compare_engines(const WorldSpec& spec, int rim_below, bool progress) {
+EngineComparison compare_engines(const WorldSpec& spec, bool progress) {
   EngineComparison result;
-  result.kinematic = run_arm("kinematic", on_engine(spec, "kinematic"), rim_below, progress);
-  result.box2d = run_arm("box2d", on_engine(spec, "box2d"), rim_below, progress);
-  result.stats = compare_arms(result.kinematic, result.box2d, rim_below);
+  result.kinematic = run_arm("kinematic", on_engine(spec, "kinematic"), progress);
+  result.box2d = run_arm("box2d", on_engine(spec, "box2d"), progress);
+  result.stats = compare_arms(result.kinematic, result.box2d);
   return result;
 }
 

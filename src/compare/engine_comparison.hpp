@@ -3,7 +3,8 @@
 // replicates and seeds (replicate k draws from the generator keyed by (run.seed, k) on
 // either engine), compared, and written to one folder:
 //   summary.txt, compare.json, noa.{csv,gp,png}, final_noa.csv, sizes.csv, final.{gp,png},
-//   and each engine's ordinary run folder in kinematic/ and box2d/.
+//   escape_rate.{csv,gp,png} (worlds with leaving), and each engine's ordinary run folder
+//   in kinematic/ and box2d/.
 #include <filesystem>
 
 #include "compare/arm_comparison.hpp"
@@ -17,8 +18,7 @@ struct EngineComparison {
   Comparison stats;  // a = kinematic, b = box2d
 };
 
-EngineComparison compare_engines(const WorldSpec& spec, int rim_below = kDefaultRimBelow,
-                                 bool progress = false);
+EngineComparison compare_engines(const WorldSpec& spec, bool progress = false);
 
 void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
                           const std::filesystem::path& out);

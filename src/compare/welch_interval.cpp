@@ -7,15 +7,6 @@
 #include "models/sample_statistics.hpp"
 
 namespace swarmagg {
-namespace {
-
-double t_quantile(double dof, double confidence) {
-  const boost::math::students_t t(dof);
-  return boost::math::quantile(t, 0.5 + confidence / 2.0);
-}
-
-}  // namespace
-
 WelchResult welch_interval(const std::vector<double>& a, const std::vector<double>& b,
                            double confidence) {
   if (a.size() < 2 || b.size() < 2)
@@ -36,22 +27,12 @@ WelchResult welch_interval(const std::vector<double>& a, const std::vector<doubl
   w.dof =
       (va + vb) * (va + vb) /
       (va * va / static_cast<double>(a.size() - 1) + vb * vb / static_cast<double>(b.size() - 1));
-  const double half = t_quantile(w.dof, confidence) * se;
+  const double half = student_t_quantile(w.dof, confidence) * se;
   w.low = w.difference - half;
   w.high = w.difference + half;
   const boost::math::students_t t(w.dof);
   w.p_value = 2.0 * boost::math::cdf(boost::math::complement(t, std::abs(w.difference) / se));
   return w;
-}
-
-MeanInterval mean_interval(const std::vector<double>& values, double confidence) {
-  MeanInterval m;
-  if (values.empty()) return m;
-  m.mean = sample_mean(values);
-  if (values.size() < 2) return m;
-  const double n = static_cast<double>(values.size());
-  m.half_width = t_quantile(n - 1.0, confidence) * sample_sd(values) / std::sqrt(n);
-  return m;
 }
 
 }  // namespace swarmagg

@@ -3,6 +3,8 @@
 // with the Student t quantile from Boost.Math.
 #include <vector>
 
+#include "models/sample_statistics.hpp"  // mean_interval, for the one-sample case
+
 namespace swarmagg {
 
 struct WelchResult {
@@ -17,12 +19,5 @@ struct WelchResult {
 
 WelchResult welch_interval(const std::vector<double>& a, const std::vector<double>& b,
                            double confidence = 0.95);
-
-// Mean and half-width of the t confidence interval of one sample's mean (0 for n < 2).
-struct MeanInterval {
-  double mean = 0.0;
-  double half_width = 0.0;
-};
-MeanInterval mean_interval(const std::vector<double>& values, double confidence = 0.95);
 
 }  // namespace swarmagg

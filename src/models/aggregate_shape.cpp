@@ -1,5 +1,6 @@
 #include "models/aggregate_shape.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +17,10 @@ double aggregate_radius(double agent_radius, double size) {
 
 double periphery_agents(double size) {
   return std::numbers::pi * (kPackingScale * std::pow(size, kPackingExponent) - 1.0);
+}
+
+double capped_periphery_agents(double size) {
+  return std::min(size, periphery_agents(size));
 }
 
 }  // namespace swarmagg

@@ -8,5 +8,7 @@ double aggregate_radius(double agent_radius, double size);
 
 // Uncapped: exceeds m for small m (3.25, 4.19, 5.02 for m = 3, 4, 5).
 double periphery_agents(double size);
+// min(m, periphery_agents(m)): a periphery cannot hold more agents than the aggregate has.
+double capped_periphery_agents(double size);
 
 }  // namespace swarmagg

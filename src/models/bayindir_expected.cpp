@@ -33,7 +33,8 @@ void advance_expected(const BayindirRates& rates, BayindirState& state) {
 }
 
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
-                                               const std::vector<std::int64_t>& grid) {
+                                               const std::vector<std::int64_t>& grid,
+                                               BayindirState* last) {
   BayindirState state = BayindirState::all_searching(rates.agents);
   std::vector<ModelRow> rows;
   walk_grid(
@@ -41,6 +42,7 @@ std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
       [&](std::int64_t step) {
         rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
       });
+  if (last) *last = state;
   return rows;
 }
 

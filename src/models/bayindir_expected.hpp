@@ -15,8 +15,10 @@ namespace swarmagg {
 
 void advance_expected(const BayindirRates& rates, BayindirState& state);
 
-// The state at each step of `grid` (increasing, from 0), starting from all searching.
+// The state at each step of `grid` (increasing, from 0), starting from all searching; the
+// state at the last step also goes to `last` when given (its size distribution).
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
-                                               const std::vector<std::int64_t>& grid);
+                                               const std::vector<std::int64_t>& grid,
+                                               BayindirState* last = nullptr);
 
 }  // namespace swarmagg

@@ -29,7 +29,7 @@ std::vector<double> loss_probabilities(const WorldSpec& world) {
   if (!world.controller.leave) return loss;
   const double p = world.controller.p_leave;
   if (n >= 2) loss[2] = 2.0 * p;
-  for (int m = 3; m <= n; ++m) loss[m] = p * std::min<double>(m, periphery_agents(m));
+  for (int m = 3; m <= n; ++m) loss[m] = p * capped_periphery_agents(m);
   return loss;
 }
 

@@ -45,6 +45,12 @@ struct TidyValue {
   double value = 0.0;
 };
 
+// The size distribution a model predicts at the run's last step, as extra values
+// "aggregates:<m>" (expected number of aggregates of size m); sizes expected fewer than
+// kNegligibleAggregates times are left out, so model.csv does not list N - 1 zeros.
+inline constexpr const char* kAggregatesOfSize = "aggregates:";
+inline constexpr double kNegligibleAggregates = 1e-6;
+
 struct VariantPrediction {
   std::string model;        // bayindir | soysal
   std::string variant;      // original | collision | original-stochastic | peripheral ...
@@ -53,5 +59,10 @@ struct VariantPrediction {
   std::vector<ModelRow> series = {};
   std::vector<TidyValue> extra = {};
 };
+
+// Appends the "aggregates:<m>" values at `step`; by_size[m] is the expected number of
+// aggregates of size m (indices 0 and 1 ignored).
+void add_size_distribution(VariantPrediction& prediction, std::int64_t step,
+                           const std::vector<double>& by_size);
 
 }  // namespace swarmagg

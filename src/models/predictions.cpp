@@ -24,11 +24,14 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
   const std::vector<std::int64_t> grid = record_grid(world);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
-    predictions.push_back(
-        {.model = "bayindir",
-         .variant = creation_variant_name(variant),
-         .chosen = variant == world.model.creation,
-         .series = bayindir_expected_series(bayindir_rates(world, variant), grid)});
+    const BayindirRates rates = bayindir_rates(world, variant);
+    BayindirState last;
+    predictions.push_back({.model = "bayindir",
+                           .variant = creation_variant_name(variant),
+                           .chosen = variant == world.model.creation,
+                           .series = bayindir_expected_series(rates, grid, &last)});
+    if (rates.forms_aggregates)
+      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
   }
   if (world.model.stochastic_replicates <= 0) return predictions;
   for (const CreationVariant variant : kCreationVariants) {

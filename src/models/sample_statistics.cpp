@@ -1,6 +1,7 @@
 #include "models/sample_statistics.hpp"
 
 #include <algorithm>
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -27,6 +28,21 @@ double sample_quantile(std::vector<double> values, double q) {
   const auto below = static_cast<std::size_t>(std::floor(position));
   const std::size_t above = std::min(below + 1, values.size() - 1);
   return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
+}
+
+double student_t_quantile(double dof, double confidence) {
+  const boost::math::students_t t(dof);
+  return boost::math::quantile(t, 0.5 + confidence / 2.0);
+}
+
+MeanInterval mean_interval(const std::vector<double>& values, double confidence) {
+  MeanInterval m;
+  if (values.empty()) return m;
+  m.mean = sample_mean(values);
+  if (values.size() < 2) return m;
+  const double n = static_cast<double>(values.size());
+  m.half_width = student_t_quantile(n - 1.0, confidence) * sample_sd(values) / std::sqrt(n);
+  return m;
 }
 
 }  // namespace swarmagg

@@ -50,6 +50,18 @@ void add_stationary(const PartitionChain& chain, const StateObservables& values,
   prediction.extra.push_back({"stationary_largest", std::nullopt, stationary.dot(values.largest)});
 }
 
+// by_size[m]: the expected number of aggregates of size m under `distribution`.
+std::vector<double> expected_sizes(const std::vector<Partition>& states,
+                                   const Eigen::RowVectorXd& distribution, int agents) {
+  std::vector<double> by_size(static_cast<std::size_t>(agents) + 1, 0.0);
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    for (const int part : states[i]) {
+      if (part >= 2) by_size[part] += distribution(static_cast<Eigen::Index>(i));
+    }
+  }
+  return by_size;
+}
+
 }  // namespace
 
 std::string leaving_variant_name(LeavingVariant variant) {
@@ -79,6 +91,9 @@ VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant varia
                                   distribution(static_cast<Eigen::Index>(i))});
     }
   }
+  add_size_distribution(
+      prediction, grid.back(),
+      expected_sizes(chain.states, distributions.row(distributions.rows() - 1), agents));
   if (stationary) add_stationary(chain, values, *stationary, prediction);
   return prediction;
 }

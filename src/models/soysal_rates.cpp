@@ -12,8 +12,7 @@ namespace {
 
 double agents_able_to_leave(const WorldSpec& world, LeavingVariant variant, int size) {
   if (variant == LeavingVariant::Original) return size;
-  const double periphery = periphery_agents(size);
-  return world.model.periphery_cap ? std::min<double>(size, periphery) : periphery;
+  return world.model.periphery_cap ? capped_periphery_agents(size) : periphery_agents(size);
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ class AggregateTracker {
   std::span<const std::int32_t> size_of_agent() const { return size_of_agent_; }
   // Size of every aggregate, by aggregate index.
   std::span<const std::int32_t> sizes() const { return sizes_; }
+  // The agents in an aggregate, in index order.
+  std::span<const std::uint32_t> aggregated_agents() const { return labelled_; }
 
  private:
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);

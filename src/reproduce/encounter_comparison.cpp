@@ -3,9 +3,9 @@
 #include <cmath>
 #include <map>
 
+#include "analysis/csv_table.hpp"
 #include "models/kinetic_rate.hpp"
 #include "models/sample_statistics.hpp"
-#include "reproduce/csv_table.hpp"
 
 namespace swarmagg {
 

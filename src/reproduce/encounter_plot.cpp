@@ -1,8 +1,8 @@
 #include "reproduce/encounter_plot.hpp"
 
+#include "analysis/csv_text.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
 
 namespace swarmagg {
 
@@ -17,7 +17,7 @@ void plot_encounters(const FigureFiles& files, const std::string& title, Encount
   write_file_atomic(files.csv("points"), csv);
   const std::string data = gnuplot_quote(files.csv_name("points"));
   const std::string x = axis == EncounterAxis::Agents ? "1" : "2";
-  std::string script = png_preamble(files.size, files.id + ".png", title);
+  std::string script = png_preamble(files.size, files.png_name(), title);
   script += axis == EncounterAxis::Agents ? "set xlabel 'number of agents N'\n"
                                           : "set xlabel 'speed v (u/tu)'\n";
   script += "set ylabel 'encounters per tu'\nset key top left\nset yrange [0:*]\n";

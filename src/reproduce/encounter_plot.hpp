@@ -3,8 +3,8 @@
 // deviation as error bars, the kinetic prediction and the paper's fitted formula as lines.
 #include <vector>
 
+#include "plot/figure_files.hpp"
 #include "reproduce/encounter_comparison.hpp"
-#include "reproduce/figure_files.hpp"
 
 namespace swarmagg {
 

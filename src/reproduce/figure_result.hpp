@@ -4,11 +4,11 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/partition_comparison.hpp"
 #include "config/world_spec.hpp"
 #include "reproduce/encounter_comparison.hpp"
 #include "reproduce/noa_comparison.hpp"
 #include "reproduce/paper_figures.hpp"
-#include "reproduce/partition_comparison.hpp"
 
 namespace swarmagg {
 
@@ -18,7 +18,8 @@ struct FigureResult {
   std::vector<EncounterPoint> encounters;         // EncountersVsCount / EncountersVsSpeed
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
-  int reused = 0;                                 // worlds whose run folder was reused
+  std::string plot;  // the figure's PNG, relative to the report's folder ("plots/<id>.png")
+  int reused = 0;    // worlds whose run folder was reused
   double wall_seconds = 0.0;
 };
 

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "models/sample_statistics.hpp"
-#include "reproduce/csv_table.hpp"
 #include "reproduce/paper_predictions.hpp"
 
 namespace swarmagg {
@@ -15,27 +14,8 @@ const std::vector<std::string>& noa_variants() {
   return variants;
 }
 
-double NoaSeries::mean_at(std::size_t index) const {
-  return sample_mean(values.at(index));
-}
-
 NoaSeries read_noa_series(const std::filesystem::path& csv) {
-  const CsvTable table = read_csv(csv);
-  const std::size_t step = table.column("step"), time = table.column("time"),
-                    noa = table.column("noa");
-  std::map<std::int64_t, std::pair<double, std::vector<double>>> by_step;
-  for (std::size_t row = 0; row < table.rows.size(); ++row) {
-    auto& entry = by_step[std::llround(table.number(row, step))];
-    entry.first = table.number(row, time);
-    entry.second.push_back(table.number(row, noa));
-  }
-  NoaSeries series;
-  for (auto& [s, entry] : by_step) {
-    series.steps.push_back(s);
-    series.times.push_back(entry.first);
-    series.values.push_back(std::move(entry.second));
-  }
-  return series;
+  return read_step_series(read_csv(csv), "noa");
 }
 
 double noa_rmse(const NoaSeries& simulation, const NoaSeries& model) {

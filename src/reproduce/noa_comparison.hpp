@@ -8,24 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "analysis/step_series.hpp"
+#include "analysis/variant_error.hpp"
+
 namespace swarmagg {
 
 // The expected-value variants compared: Bayindir's original, our kinetic collision variant
 // and the paper's fitted collision variant.
 const std::vector<std::string>& noa_variants();
 
-struct NoaSeries {
-  std::vector<std::int64_t> steps;
-  std::vector<double> times;
-  std::vector<std::vector<double>> values;  // per step, one value per replicate
-
-  double mean_at(std::size_t index) const;
-};
-
-struct VariantError {
-  std::string variant;
-  double error = 0.0;
-};
+using NoaSeries = StepSeries;  // the noa column
 
 struct NoaComparison {
   NoaSeries simulation;

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
+#include "analysis/csv_text.hpp"
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
 
 namespace swarmagg {
 namespace {
@@ -55,7 +55,7 @@ void plot_noa(const FigureFiles& files, const std::string& title, const NoaCompa
   const std::string boxes = gnuplot_quote(files.csv_name("boxes"));
   const std::string curves = gnuplot_quote(files.csv_name("curves"));
   const std::string width = csv_number(box_width(comparison.simulation));
-  std::string script = png_preamble(files.size, files.id + ".png", title);
+  std::string script = png_preamble(files.size, files.png_name(), title);
   script +=
       "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\nset key bottom right box "
       "opaque\n"

@@ -3,7 +3,7 @@
 // box quartiles, bar median) with the model variants' expected NOA as curves: Bayindir's
 // original in blue, the collision-theory variant in orange (kinetic solid, the paper's fit
 // dashed), as the paper colours them.
-#include "reproduce/figure_files.hpp"
+#include "plot/figure_files.hpp"
 #include "reproduce/noa_comparison.hpp"
 
 namespace swarmagg {

@@ -23,11 +23,38 @@ std::string most_likely(const Distribution& d) {
   return best ? best->first + " (" + report_number(best->second) + ")" : "-";
 }
 
+// The row's link to its figure, and the figures themselves under each table, so the report
+// reads on its own in any Markdown viewer.
+std::string plot_link(const FigureResult& r) {
+  return "[Fig " + r.figure.figures + "](" + r.plot + ")";
+}
+
+std::string figure_images(const std::vector<FigureResult>& results,
+                          bool (*shown)(const FigureResult&)) {
+  std::string text;
+  for (const FigureResult& r : results) {
+    if (!shown(r) || r.plot.empty()) continue;
+    text += "### Fig " + r.figure.figures + ": " + r.figure.title + "\n\n![Fig " +
+            r.figure.figures + ": " + r.figure.title + "](" + r.plot + ")\n\n";
+  }
+  return text;
+}
+
+bool is_encounter_figure(const FigureResult& r) {
+  return !r.encounters.empty();
+}
+bool is_noa_figure(const FigureResult& r) {
+  return r.noa.has_value();
+}
+bool is_partition_figure(const FigureResult& r) {
+  return r.partitions.has_value();
+}
+
 std::string encounter_table(const std::vector<FigureResult>& results) {
   std::string text =
       "| Fig | world | N | v | simulated encounters/tu (mean ± sd) | kinetic theory | deviation | "
-      "paper fit | deviation |\n"
-      "|---|---|---|---|---|---|---|---|---|\n";
+      "paper fit | deviation | plot |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const FigureResult& r : results) {
     for (std::size_t i = 0; i < r.encounters.size(); ++i) {
       const EncounterPoint& p = r.encounters[i];
@@ -37,7 +64,8 @@ std::string encounter_table(const std::vector<FigureResult>& results) {
               report_number(p.kinetic) + " | " +
               report_number(100 * (p.simulated - p.kinetic) / p.kinetic) + " % | " +
               report_number(p.paper_fit) + " | " +
-              report_number(100 * (p.simulated - p.paper_fit) / p.paper_fit) + " % |\n";
+              report_number(100 * (p.simulated - p.paper_fit) / p.paper_fit) + " % | " +
+              plot_link(r) + " |\n";
     }
   }
   return text;
@@ -47,7 +75,7 @@ std::string noa_table(const std::vector<FigureResult>& results) {
   std::string text =
       "| Fig | world | N | p | final mean NOA | RMSE original | RMSE collision (kinetic) | RMSE "
       "collision-paper "
-      "| best | paper's improved vs original |\n|---|---|---|---|---|---|---|---|---|---|\n";
+      "| best | paper's improved vs original | plot |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const FigureResult& r : results) {
     if (!r.noa) continue;
     const WorldSpec& w = r.worlds.front();
@@ -61,7 +89,7 @@ std::string noa_table(const std::vector<FigureResult>& results) {
             report_number(variant_error(errors, "original")) + " | " +
             report_number(variant_error(errors, "collision")) + " | " +
             report_number(variant_error(errors, kPaperFitVariant)) + " | " + best_of(errors) +
-            " | " + (improved ? "improved" : "original") + " |\n";
+            " | " + (improved ? "improved" : "original") + " | " + plot_link(r) + " |\n";
   }
   return text;
 }
@@ -70,7 +98,7 @@ std::string partition_table(const std::vector<FigureResult>& results) {
   std::string text =
       "| Fig | world | N | TV original | TV peripheral | better | most likely: simulation | model "
       "original | "
-      "model peripheral |\n|---|---|---|---|---|---|---|---|---|\n";
+      "model peripheral | plot |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const FigureResult& r : results) {
     if (!r.partitions) continue;
     const WorldSpec& w = r.worlds.front();
@@ -79,7 +107,7 @@ std::string partition_table(const std::vector<FigureResult>& results) {
             " | " + report_number(variant_error(c.errors, "original")) + " | " +
             report_number(variant_error(c.errors, "peripheral")) + " | " + best_of(c.errors) +
             " | " + most_likely(c.simulation) + " | " + most_likely(c.models[0]) + " | " +
-            most_likely(c.models[1]) + " |\n";
+            most_likely(c.models[1]) + " | " + plot_link(r) + " |\n";
   }
   return text;
 }
@@ -118,19 +146,20 @@ std::string report_markdown(const ReportContext& context, const std::vector<Figu
       "and `peripheral` "
       "(uncapped "
       "periphery, `periphery_cap: false`, as the paper's 5-agent improvement needs; SPEC 5.3).\n\n";
-  text += "## Collision theory (Figs 7-8)\n\n" + encounter_table(results) + "\n";
+  text += "## Collision theory (Figs 7-8)\n\n" + encounter_table(results) + "\n" +
+          figure_images(results, is_encounter_figure);
   text +=
       "## Bayindir NOA (Figs 9-19)\n\nError: RMSE over the recorded steps between the simulation's "
       "mean NOA "
       "across replicates and the variant's expected NOA.\n\n" +
-      noa_table(results) + "\n";
+      noa_table(results) + "\n" + figure_images(results, is_noa_figure);
   text +=
       "## Soysal partitions (Figs 20-29)\n\nError: total-variation distance between the "
       "simulation's mean "
       "time fraction per partition and the model's partition probabilities averaged over the same "
       "run "
       "length (transient included, as the simulation's fractions are).\n\n" +
-      partition_table(results) + "\n";
+      partition_table(results) + "\n" + figure_images(results, is_partition_figure);
   text += "## Claims of the paper\n\n" + claim_lines(claims);
   return text;
 }

@@ -1,8 +1,9 @@
 #pragma once
 // REPORT.md: one table per kind of experiment with a row per experiment (collision checks
 // per world; NOA RMSE per Bayindir variant; total-variation distance per Soysal variant),
-// the better variant of each row, then one line per claim of the paper with its verdict
-// and numbers. Numbers are printed to 4 significant digits.
+// the better variant of each row and a link to its figure, each table followed by its
+// figures as images (FigureResult::plot), then one line per claim of the paper with its
+// verdict and numbers. Numbers are printed to 4 significant digits.
 #include <string>
 #include <vector>
 

@@ -3,18 +3,20 @@
 #include <chrono>
 #include <cmath>
 
+#include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
 #include "output/atomic_file.hpp"
+#include "plot/partition_plot.hpp"
 #include "reproduce/claims.hpp"
-#include "reproduce/csv_text.hpp"
 #include "reproduce/encounter_plot.hpp"
 #include "reproduce/noa_plot.hpp"
-#include "reproduce/partition_plot.hpp"
 #include "reproduce/report.hpp"
 #include "reproduce/run_cache.hpp"
 
 namespace swarmagg {
 namespace {
+
+constexpr const char* kPlotFolder = "plots";  // under --out, beside REPORT.md
 
 using Clock = std::chrono::steady_clock;
 
@@ -85,8 +87,10 @@ FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure
     result.reused += ensure_run(world, runs / name, run_options) ? 1 : 0;
     result.worlds.push_back(std::move(world));
   }
-  std::filesystem::create_directories(options.out / "plots");
-  compare_and_plot(result, runs, FigureFiles{options.out / "plots", figure.id, options.plot_size});
+  const FigureFiles files{options.out / kPlotFolder, figure.id, options.plot_size, ""};
+  std::filesystem::create_directories(files.folder);
+  compare_and_plot(result, runs, files);
+  result.plot = (std::filesystem::path(kPlotFolder) / files.png_name()).generic_string();
   result.wall_seconds = seconds_since(start);
   return result;
 }

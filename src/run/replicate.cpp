@@ -18,7 +18,9 @@ AggregateLinks links_for(const WorldSpec& spec) {
 Replicate::Replicate(const WorldSpec& spec, int index)
     : spec_(spec),
       index_(index),
-      rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))) {
+      rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))),
+      leave_episodes_(spec.robots.count, spec.robots.detection_radius,
+                      ShapeRules::for_world(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
   engine_ = make_engine(spec, placement.positions);
   controller_ = make_controller(spec);
@@ -38,6 +40,8 @@ void Replicate::update_aggregates() {
 void Replicate::step() {
   const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_};
   controller_->decide(input, swarm_, rng_, commands_, events_);
+  leave_episodes_.observe_decision(aggregates_, engine_->neighbours(), engine_->positions(),
+                                   swarm_.state);
   // An agent displays its state: the state array is the signal array.
   static_assert(sizeof(AgentState) == sizeof(Signal));
   const std::span<const Signal> signals(reinterpret_cast<const Signal*>(swarm_.state.data()),

@@ -12,6 +12,7 @@
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
 #include "observers/event_counts.hpp"
+#include "observers/leave_episodes.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {
@@ -37,6 +38,8 @@ class Replicate {
   const SwarmState& swarm() const { return swarm_; }
   const AggregateTracker& aggregates() const { return aggregates_; }
   const EventCounts& events() const { return events_; }
+  // The LEAVE episodes so far, judged between each decision and the move that follows it.
+  const LeaveEpisodes& leave_episodes() const { return leave_episodes_; }
   SwarmSnapshot snapshot() const;
 
  private:
@@ -50,6 +53,7 @@ class Replicate {
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
+  LeaveEpisodes leave_episodes_;
   AgentArray<MotionCommand> commands_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG

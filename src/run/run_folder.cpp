@@ -8,6 +8,7 @@
 #include "core/rng.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
+#include "run/aggregate_summary.hpp"
 
 namespace swarmagg {
 namespace {
@@ -24,27 +25,29 @@ nlohmann::json spread(const std::vector<double>& values) {
   return {{"mean", mean}, {"sd", sd}, {"min", *low}, {"max", *high}};
 }
 
-nlohmann::json replicate_summary(const ReplicateOutcome& r) {
+nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
   const TimeseriesRow& last = r.rows.back();
-  return {{"replicate", r.index},
-          {"seed", r.seed},
-          {"wall_seconds", r.wall_seconds},
-          {"final",
-           {{"step", last.step},
-            {"time", last.time},
-            {"noa", last.noa},
-            {"searching", last.states.searching},
-            {"waiting", last.states.waiting},
-            {"leaving", last.states.leaving},
-            {"approaching", last.states.approaching},
-            {"largest", last.largest},
-            {"aggregate_sizes", r.final_aggregate_sizes}}},
-          {"events",
-           {{"creations", last.events.creations},
-            {"growths", last.events.growths},
-            {"dissipations", last.events.dissipations},
-            {"shrinks", last.events.shrinks},
-            {"encounters", last.events.encounters}}}};
+  nlohmann::json summary = {{"replicate", r.index},
+                            {"seed", r.seed},
+                            {"wall_seconds", r.wall_seconds},
+                            {"final",
+                             {{"step", last.step},
+                              {"time", last.time},
+                              {"noa", last.noa},
+                              {"searching", last.states.searching},
+                              {"waiting", last.states.waiting},
+                              {"leaving", last.states.leaving},
+                              {"approaching", last.states.approaching},
+                              {"largest", last.largest},
+                              {"aggregate_sizes", r.final_aggregate_sizes}}},
+                            {"events",
+                             {{"creations", last.events.creations},
+                              {"growths", last.events.growths},
+                              {"dissipations", last.events.dissipations},
+                              {"shrinks", last.events.shrinks},
+                              {"encounters", last.events.encounters}}}};
+  add_aggregate_entries(summary, r.leave, r.final_aggregates, dt);
+  return summary;
 }
 
 }  // namespace
@@ -71,12 +74,15 @@ nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result) {
   nlohmann::json replicates = nlohmann::json::array();
   std::vector<double> noa, largest, encounters_per_time;
   for (const ReplicateOutcome& r : result.replicates) {
-    replicates.push_back(replicate_summary(r));
+    replicates.push_back(replicate_summary(r, spec.engine.dt));
     noa.push_back(r.rows.back().noa);
     largest.push_back(r.rows.back().largest);
     encounters_per_time.push_back(static_cast<double>(r.rows.back().events.encounters) /
                                   r.rows.back().time);
   }
+  nlohmann::json pooled = nlohmann::json::object();
+  add_aggregate_entries(pooled, pooled_leave(result), pooled_final_aggregates(result),
+                        spec.engine.dt);
   return {{"swarmagg", SWARMAGG_VERSION},
           {"git", SWARMAGG_GIT_HASH},
           {"world", spec.name},
@@ -91,6 +97,7 @@ nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result) {
           {"final_noa", spread(noa)},
           {"final_largest", spread(largest)},
           {"encounters_per_time", spread(encounters_per_time)},
+          {"pooled", pooled},
           {"replicates", replicates}};
 }
 

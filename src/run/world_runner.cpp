@@ -31,6 +31,13 @@ void record(const Replicate& replicate, ReplicateOutcome& outcome) {
                                      replicate.aggregates(), replicate.events()));
 }
 
+std::vector<AggregateShape> final_shapes(const Replicate& replicate) {
+  AggregateMembers members;
+  members.build(replicate.aggregates());
+  return measure_aggregates(members, replicate.engine().positions(),
+                            ShapeRules::for_world(replicate.spec()));
+}
+
 void report_progress(const WorldSpec& spec, std::int64_t total, Clock::time_point start) {
   const double fraction = static_cast<double>(steps_done_total.load()) / static_cast<double>(total);
   const double elapsed = seconds_since(start);
@@ -80,6 +87,8 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   if (observer) observer->finish();
   const auto sizes = replicate.aggregates().sizes();
   outcome.final_aggregate_sizes.assign(sizes.begin(), sizes.end());
+  outcome.final_aggregates = final_shapes(replicate);
+  outcome.leave = replicate.leave_episodes().tally();
   outcome.partition_steps = partition_tracker.steps_by_partition();
   outcome.wall_seconds = seconds_since(start);
   return outcome;

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "observers/aggregate_geometry.hpp"
+#include "observers/leave_tally.hpp"
 #include "observers/timeseries_row.hpp"
 #include "run/replicate_observer.hpp"
 
@@ -18,6 +20,8 @@ struct ReplicateOutcome {
   std::uint64_t seed = 0;  // the replicate's generator key
   std::vector<TimeseriesRow> rows;
   std::vector<std::int32_t> final_aggregate_sizes;
+  std::vector<AggregateShape> final_aggregates;         // by aggregate index, as the sizes
+  LeaveTally leave;                                     // every LEAVE episode of the run
   std::map<std::string, std::int64_t> partition_steps;  // Soysal worlds
   double wall_seconds = 0.0;
 };

@@ -7,11 +7,13 @@
 #include <chrono>
 #include <exception>
 #include <fstream>
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
 #include "output/atomic_file.hpp"
+#include "plot/run_plots.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
 #include "run/world_runner.hpp"
@@ -28,7 +30,7 @@ double run_work(const SweepRun& run) {
 
 // The outputs are written only once the replicate has finished, so an interrupted run
 // leaves no folder at all; an older unfinished attempt is cleared first.
-void run_into_folder(const SweepRun& run, const std::filesystem::path& folder,
+void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, bool plots,
                      SweepProgress& progress) {
   std::filesystem::remove_all(folder);
   RunProgress observer(progress, run.world.robots.count, run.world.steps());
@@ -36,6 +38,11 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder,
   result.replicates.push_back(run_replicate(run.world, 0, &observer));
   result.wall_seconds = result.replicates.front().wall_seconds;
   write_run_folder(run.world, result, folder);
+  if (!plots) return;
+  // A plot gnuplot cannot draw leaves the run complete; `swarmagg plot` can redraw it.
+  for (const std::string& failure : draw_run_plots(folder, folder).failures) {
+    std::cerr << "warning: " + folder.string() + ": " + failure + "\n";
+  }
 }
 
 int thread_count(int requested, std::size_t runs) {
@@ -46,16 +53,16 @@ int thread_count(int requested, std::size_t runs) {
 
 class RunPool {
  public:
-  RunPool(const std::vector<SweepRun>& runs, const std::filesystem::path& out,
+  RunPool(const std::vector<SweepRun>& runs, const std::filesystem::path& out, bool plots,
           SweepProgress& progress)
-      : runs_(runs), out_(out), progress_(progress) {}
+      : runs_(runs), out_(out), plots_(plots), progress_(progress) {}
 
   void work() {
     ++working_;
     for (std::size_t i = next_++; i < runs_.size(); i = next_++) {
       try {
         throw_if_interrupted();
-        run_into_folder(runs_[i], sweep_run_folder(out_, runs_[i]), progress_);
+        run_into_folder(runs_[i], sweep_run_folder(out_, runs_[i]), plots_, progress_);
         progress_.finished_run();
       } catch (...) {
         std::lock_guard lock(failure_mutex_);
@@ -75,6 +82,7 @@ class RunPool {
  private:
   const std::vector<SweepRun>& runs_;
   const std::filesystem::path& out_;
+  bool plots_;
   SweepProgress& progress_;
   std::atomic<std::size_t> next_{0};
   std::atomic<int> working_{0};
@@ -84,7 +92,7 @@ class RunPool {
 
 void run_parallel(const std::vector<SweepRun>& runs, const SweepOptions& options,
                   SweepProgress& progress, int threads) {
-  RunPool pool(runs, options.out, progress);
+  RunPool pool(runs, options.out, options.plots, progress);
   std::vector<std::thread> workers;
   for (int t = 0; t < threads; ++t) workers.emplace_back([&pool] { pool.work(); });
   const bool show = options.progress && ::isatty(::fileno(stderr));

@@ -19,6 +19,7 @@ struct SweepOptions {
   int threads = 0;  // 0: the machine's cores
   Shard shard;
   bool progress = false;  // a progress line on stderr, if stderr is a terminal
+  bool plots = false;     // draw each run's plots (run_plots.hpp); the caller checks for gnuplot
 };
 
 struct SweepReport {

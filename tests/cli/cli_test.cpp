@@ -4,7 +4,10 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -16,8 +19,9 @@ struct Outcome {
   std::string output;  // stdout and stderr together
 };
 
-Outcome swarmagg(const std::string& arguments) {
-  const std::string command = std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
+Outcome swarmagg(const std::string& arguments, const std::string& environment = "") {
+  const std::string command =
+      environment + " " + std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
   Outcome outcome{-1, {}};
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
@@ -26,6 +30,11 @@ Outcome swarmagg(const std::string& arguments) {
   const int status = pclose(pipe);
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
+}
+
+// The same, with environment assignments (e.g. "PATH=/x") for the child only.
+Outcome swarmagg_with_env(const std::string& environment, const std::string& arguments) {
+  return swarmagg(arguments, environment);
 }
 
 std::filesystem::path temp_dir(const std::string& name) {
@@ -73,6 +82,68 @@ TEST(Cli, RunWritesTheOutputFolder) {
   EXPECT_TRUE(std::filesystem::exists(out / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(out / "world.resolved.yaml"));
   std::filesystem::remove_all(out);
+}
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int occurrences(const std::string& text, const std::string& part) {
+  int count = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+  return count;
+}
+
+constexpr const char* kTinyRun =
+    "run worlds/examples/demo.yaml --replicates 2 --set run.duration=30 --set robots.count=20 ";
+
+TEST(Cli, ARunWithoutGnuplotSucceedsAndSaysOnceThatPlotsWereSkipped) {
+  const auto out = temp_dir("no-gnuplot");
+  // The child's PATH holds no gnuplot (the binary is named by its absolute path).
+  const Outcome o =
+      swarmagg_with_env("PATH=/nonexistent", kTinyRun + std::string("--out ") + out.string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_EQ(occurrences(o.output, "plots skipped"), 1) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("gnuplot is not on PATH"));
+  EXPECT_TRUE(std::filesystem::exists(out / "timeseries.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out / "noa.png"));
+  std::filesystem::remove_all(out);
+}
+
+TEST(Cli, NoPlotsSkipsThemSilently) {
+  const auto out = temp_dir("undrawn");
+  const Outcome o = swarmagg(kTinyRun + std::string("--no-plots --out ") + out.string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_THAT(o.output, ::testing::Not(HasSubstr("plots")));
+  EXPECT_FALSE(std::filesystem::exists(out / "noa.png"));
+  EXPECT_FALSE(std::filesystem::exists(out / "plots"));
+  std::filesystem::remove_all(out);
+}
+
+TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  const auto run = temp_dir("plot-run"), redrawn = temp_dir("plot-redrawn");
+  const Outcome ran = swarmagg(kTinyRun + std::string("--out ") + run.string());
+  ASSERT_EQ(ran.exit_code, 0) << ran.output;
+  const Outcome plotted = swarmagg("plot " + run.string() + " --out " + redrawn.string());
+  ASSERT_EQ(plotted.exit_code, 0) << plotted.output;
+  for (const char* png : {"noa.png", "states.png", "sizes.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(run / png)) << png;
+    EXPECT_TRUE(std::filesystem::exists(redrawn / png)) << png;
+  }
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(run / "plots")) {
+    const auto name = entry.path().filename();
+    EXPECT_EQ(file_text(entry.path()), file_text(redrawn / "plots" / name)) << name;
+    ++files;
+  }
+  EXPECT_GE(files, 6);  // a script and at least one CSV per plot
+  EXPECT_EQ(swarmagg("plot " + temp_dir("plot-nothing").string()).exit_code, 2);
+  std::filesystem::remove_all(run);
+  std::filesystem::remove_all(redrawn);
 }
 
 }  // namespace

@@ -223,7 +223,7 @@ TEST(Interrupt, SigintStopsASweepAndKeepsItsCompletedRuns) {
                           "seed: 1\n";
   const fs::path out = dir / "out";
   const Outcome o = interrupt({SWARMAGG_BINARY, "sweep", sweep.string(), "--threads", "1",
-                               "--quiet", "--out", out.string()},
+                               "--quiet", "--no-plots", "--out", out.string()},
                               SIGINT, std::chrono::milliseconds(1500));
   expect_interrupted(o, 130);
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());

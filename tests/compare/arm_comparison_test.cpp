@@ -28,9 +28,9 @@ run: {duration: 300, replicates: 12, record_every: 50, threads: 2, seed: )" +
 }
 
 TEST(ArmComparison, AWorldAgainstItselfShowsNoSignificantDifference) {
-  const ArmResult a = run_arm("first", small_world(0.005, 11), kDefaultRimBelow);
-  const ArmResult b = run_arm("second", small_world(0.005, 12), kDefaultRimBelow);
-  const Comparison c = compare_arms(a, b, kDefaultRimBelow);
+  const ArmResult a = run_arm("first", small_world(0.005, 11));
+  const ArmResult b = run_arm("second", small_world(0.005, 12));
+  const Comparison c = compare_arms(a, b);
   EXPECT_GT(c.noa_difference.p_value, kSignificance);
   EXPECT_LT(c.noa_difference.low, 0.0);
   EXPECT_GT(c.noa_difference.high, 0.0);
@@ -38,26 +38,26 @@ TEST(ArmComparison, AWorldAgainstItselfShowsNoSignificantDifference) {
   EXPECT_GT(c.ks_sizes.p_value, kSignificance);
   EXPECT_FALSE(c.differs());
   EXPECT_TRUE(c.has_leaving);
-  EXPECT_GT(c.a.leave.rim_attempts + c.a.leave.inside_attempts, 0);
+  EXPECT_GT(c.a.leave.attempts.total(), 0);
   EXPECT_NE(comparison_text("small", c).find("verdict: no significant difference"),
             std::string::npos);
 }
 
 TEST(ArmComparison, NoLeavingAgainstLeavingIsDifferent) {
-  const ArmResult a = run_arm("p=0", small_world(0.0, 11), kDefaultRimBelow);
-  const ArmResult b = run_arm("p=0.005", small_world(0.005, 11), kDefaultRimBelow);
-  const Comparison c = compare_arms(a, b, kDefaultRimBelow);
+  const ArmResult a = run_arm("p=0", small_world(0.0, 11));
+  const ArmResult b = run_arm("p=0.005", small_world(0.005, 11));
+  const Comparison c = compare_arms(a, b);
   EXPECT_LT(c.noa_difference.p_value, kSignificance);
   EXPECT_LT(c.ks_sizes.p_value, kSignificance);
   EXPECT_TRUE(c.differs());
-  EXPECT_EQ(c.a.leave.rim_attempts + c.a.leave.inside_attempts, 0);
+  EXPECT_EQ(c.a.leave.attempts.total(), 0);
   const nlohmann::json json = comparison_json("small", c);
   EXPECT_TRUE(json["differs"].get<bool>());
   EXPECT_EQ(json["a"]["final_noa"].size(), 12u);
 }
 
 TEST(ArmComparison, EncounterRatesArePerTimeUnit) {
-  const ArmResult a = run_arm("a", small_world(0.005, 3), kDefaultRimBelow);
+  const ArmResult a = run_arm("a", small_world(0.005, 3));
   const ArmSummary s = summarize_arm(a);
   ASSERT_EQ(s.encounter_rates.size(), 12u);
   const TimeseriesRow& last = a.run.replicates[0].rows.back();

@@ -1,8 +1,10 @@
 #include "compare/engine_comparison.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
@@ -42,7 +44,8 @@ TEST(EngineComparison, WritesTheFolder) {
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   for (const char* name :
        {"summary.txt", "compare.json", "noa.csv", "noa.gp", "noa.png", "final_noa.csv", "sizes.csv",
-        "final.gp", "final.png", "kinematic/timeseries.csv", "box2d/timeseries.csv"}) {
+        "final.gp", "final.png", "escape_rate.csv", "escape_rate.gp", "escape_rate.png",
+        "kinematic/timeseries.csv", "box2d/timeseries.csv"}) {
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
   }
   std::filesystem::remove_all(out);
@@ -50,6 +53,38 @@ TEST(EngineComparison, WritesTheFolder) {
 
 TEST(ComparePlots, HistogramCountsEachValueOfEachArm) {
   EXPECT_EQ(histogram_csv("size", "a", {2, 2, 3}, "b", {3, 5}), "size,a,b\n2,2,0\n3,1,1\n5,0,1\n");
+}
+
+// Hand-made tallies: size 2 seen by both arms, size 10 by the second only. Laws with
+// p = 0.001 per step, dt = 0.1: m p/dt = 0.02 and 0.1; periph(2) is capped at 2, periph(10)
+// = pi (1.2 10^0.48 - 1) = 8.24.
+TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
+  WorldSpec spec = tiny_world();
+  spec.controller.p_leave = 0.001;
+  const ArmResult a{"a", spec, {}};
+  const ArmResult b{"b", spec, {}};
+  Comparison c;
+  c.a.label = "a";
+  c.b.label = "b";
+  for (LeaveTally* t : {&c.a.leave, &c.b.leave}) t->resize(16);
+  c.a.leave.aggregate_steps_by_size[2] = 1000;  // 100 tu
+  c.a.leave.escapes_by_size[2] = 4;
+  c.b.leave.aggregate_steps_by_size[2] = 2000;
+  c.b.leave.escapes_by_size[2] = 1;
+  c.b.leave.aggregate_steps_by_size[10] = 500;  // 50 tu
+  c.b.leave.escapes_by_size[10] = 9;
+  const std::string csv = escape_rate_csv(a, b, c);
+  std::istringstream lines(csv);
+  std::string header, two, ten, none;
+  std::getline(lines, header);
+  std::getline(lines, two);
+  std::getline(lines, ten);
+  EXPECT_FALSE(std::getline(lines, none));
+  EXPECT_EQ(header,
+            "size,a_escapes,a_aggregate_time,a_rate,a_ci95_half_width,b_escapes,b_aggregate_time,"
+            "b_rate,b_ci95_half_width,all_members_law,periphery_law");
+  EXPECT_EQ(two, "2,4,100,0.04,0.0392,1,200,0.005,0.0098,0.02,0.02");
+  EXPECT_THAT(ten, ::testing::StartsWith("10,0,0,NaN,NaN,9,50,0.18,0.1176,0.1,0.0824"));
 }
 
 }  // namespace

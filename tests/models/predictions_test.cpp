@@ -44,6 +44,31 @@ TEST(Predictions, SoysalWorldsGetBothLeavingVariants) {
   EXPECT_NE(summary.find("most likely partition"), std::string::npos) << summary;
 }
 
+// The size distribution at the last step accounts for every agent: the aggregated ones
+// (sum of m n_m) plus the free ones the last row predicts.
+double agents_in_size_distribution(const VariantPrediction& prediction) {
+  double aggregated = 0.0;
+  for (const TidyValue& value : prediction.extra) {
+    if (!value.quantity.starts_with(kAggregatesOfSize)) continue;
+    EXPECT_EQ(value.step, prediction.series.back().step) << value.quantity;
+    aggregated +=
+        std::stod(value.quantity.substr(std::string(kAggregatesOfSize).size())) * value.value;
+  }
+  return aggregated + *prediction.series.back().searching;
+}
+
+TEST(Predictions, ExpectedVariantsGiveTheirSizeDistributionAtTheLastStep) {
+  WorldSpec bayindir = testing::bayindir_world(120, 5e-4, true, true);
+  bayindir.run.duration = 200.0;
+  bayindir.model.stochastic_replicates = 0;
+  for (const VariantPrediction& p : predict(bayindir))
+    EXPECT_NEAR(agents_in_size_distribution(p), 120.0, 1e-2) << p.variant;
+  WorldSpec soysal = testing::soysal_world(5, 150.0);
+  soysal.run.duration = 1e5;
+  for (const VariantPrediction& p : predict(soysal))
+    EXPECT_NEAR(agents_in_size_distribution(p), 5.0, 1e-6) << p.variant;
+}
+
 TEST(Predictions, CollisionWorldsPredictEncounters) {
   WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
   world.controller.type = ControllerType::Collision;

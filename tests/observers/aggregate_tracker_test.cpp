@@ -2,39 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/arena_geometry.hpp"
+#include "observers/observer_scene.hpp"
 #include "observers/partition_tracker.hpp"
 
 namespace swarmagg {
 namespace {
 
-struct Scene {
-  ArenaGeometry arena{100.0, 100.0, Topology::Torus};
-  std::vector<Vec2> positions;
-  SwarmState swarm;
-  NeighbourLists neighbours;
-  AggregateTracker tracker;
-
-  std::uint32_t add(double x, double y, AgentState state = AgentState::Wait) {
-    positions.push_back({x, y});
-    swarm.state.push_back(state);
-    swarm.heading.push_back({1, 0});
-    swarm.leave_time_left.push_back(0);
-    swarm.partner.push_back(kNoPartner);
-    return static_cast<std::uint32_t>(positions.size() - 1);
-  }
-  void update(AggregateLinks links = AggregateLinks::Proximity) {
-    neighbours.reset(positions.size());
-    for (std::uint32_t i = 0; i < positions.size(); ++i) {
-      for (std::uint32_t j = 0; j < positions.size(); ++j) {
-        const Vec2 d = arena.displacement(positions[i], positions[j]);
-        if (i != j && norm(d) <= 6.0) neighbours.push({j, d, norm(d)});
-      }
-      neighbours.close_agent(i);
-    }
-    tracker.update(neighbours, swarm, 4.0, links);
-  }
-};
+using testing::Scene;
 
 TEST(AggregateTracker, JoinsAChainAcrossTheSeamIntoOneAggregate) {
   Scene s;

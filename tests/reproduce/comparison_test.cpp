@@ -4,7 +4,7 @@
 #include <set>
 
 #include "reproduce/paper_figures.hpp"
-#include "reproduce/partition_comparison.hpp"
+#include "analysis/partition_comparison.hpp"
 
 namespace swarmagg {
 namespace {

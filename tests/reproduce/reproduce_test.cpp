@@ -136,6 +136,24 @@ TEST_F(ReproduceTest, ReportHasARowPerExperimentAndALinePerClaim) {
   EXPECT_EQ(std::count(summary_.begin(), summary_.end(), '\n'), 4);
 }
 
+TEST_F(ReproduceTest, EveryImageInTheReportIsAFileBesideIt) {
+  const std::string report = read_text(first_->report);
+  int images = 0;
+  for (auto at = report.find("!["); at != std::string::npos; at = report.find("![", at + 1)) {
+    const auto open = report.find("](", at), close = report.find(')', open);
+    ASSERT_NE(close, std::string::npos);
+    const std::string link = report.substr(open + 2, close - open - 2);
+    EXPECT_TRUE(link.starts_with("plots/")) << link;
+    EXPECT_TRUE(png_size(first_->report.parent_path() / link).has_value()) << link;
+    ++images;
+  }
+  EXPECT_EQ(images, 4);  // one per figure of reduced_options
+  for (const FigureResult& r : first_->figures) {
+    // The figure's table rows link to it too.
+    EXPECT_NE(report.find("](plots/" + r.figure.id + ".png)"), std::string::npos) << r.figure.id;
+  }
+}
+
 TEST_F(ReproduceTest, ReportedRmseMatchesTheCsvsItWasComputedFrom) {
   const auto run = out_ / "runs" / "creation-50";
   const auto simulation = noa_by_step(run / "timeseries.csv");

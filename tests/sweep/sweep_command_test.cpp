@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <thread>
 
 #include "sweep_testing.hpp"
@@ -85,7 +86,7 @@ class SweepCommandTest : public testing::SweepTest {
   // Starts the slow sweep, sends `signal` once its first run is complete, returns the exit code.
   int kill_in_the_middle(const std::string& out, int signal) {
     const pid_t pid = start({"sweep", sweep_file(kSlowSweep), "--out", (dir_ / out).string(),
-                             "--threads", "2", "--quiet"});
+                             "--threads", "2", "--quiet", "--no-plots"});
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (count_files(out, "world.resolved.yaml") == 0 &&
            std::chrono::steady_clock::now() < deadline) {
@@ -96,7 +97,9 @@ class SweepCommandTest : public testing::SweepTest {
   }
 
   void expect_merged_like_an_uninterrupted_sweep(const std::string& out) {
-    ASSERT_EQ(swarmagg({"sweep", sweep_file(kSlowSweep), "--out", (dir_ / out).string()}), 0)
+    ASSERT_EQ(
+        swarmagg({"sweep", sweep_file(kSlowSweep), "--out", (dir_ / out).string(), "--no-plots"}),
+        0)
         << output();
     EXPECT_THAT(output(), HasSubstr("already complete"));
     const std::filesystem::path& reference = uninterrupted_reference();
@@ -109,7 +112,9 @@ class SweepCommandTest : public testing::SweepTest {
   const std::filesystem::path& uninterrupted_reference() {
     if (reference_.empty()) {
       const std::filesystem::path dir = dir_ / "reference";
-      EXPECT_EQ(swarmagg({"sweep", sweep_file(kSlowSweep), "--out", dir.string(), "--quiet"}), 0);
+      EXPECT_EQ(swarmagg({"sweep", sweep_file(kSlowSweep), "--out", dir.string(), "--quiet",
+                          "--no-plots"}),
+                0);
       reference_ = std::filesystem::temp_directory_path() /
                    ("swarmagg-sweep-reference-" + std::to_string(::getpid()));
       std::filesystem::create_directories(reference_);
@@ -151,14 +156,27 @@ TEST_F(SweepCommandTest, ASweepKilledOutrightResumesToTheSameResult) {
   expect_merged_like_an_uninterrupted_sweep("out");
 }
 
+TEST_F(SweepCommandTest, EachRunAndTheMergedSweepGetTheirPlots) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  const std::string sweep =
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  robots.count: [10, 20]\nreplicates: 1\n");
+  ASSERT_EQ(swarmagg({"sweep", sweep, "--out", (dir_ / "out").string()}), 0) << output();
+  EXPECT_EQ(count_files("out", "noa.png"), 2);
+  EXPECT_EQ(count_files("out", "noa.gp"), 2);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "final-noa-vs-robots.count.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "plots" / "final-noa-vs-robots.count.gp"));
+}
+
 TEST_F(SweepCommandTest, ShardsThenMergeMatchTheUnshardedSweep) {
   const std::string sweep = sweep_file(testing::kGridSweep);
-  ASSERT_EQ(swarmagg({"sweep", sweep, "--out", (dir_ / "full").string()}), 0) << output();
+  ASSERT_EQ(swarmagg({"sweep", sweep, "--out", (dir_ / "full").string(), "--no-plots"}), 0)
+      << output();
   EXPECT_THAT(output(), HasSubstr("merged 12 runs"));
   std::vector<std::string> merge = {"merge"};
   for (const char* shard : {"1/3", "2/3", "3/3"}) {
     const std::string out = (dir_ / ("shard-" + std::string(1, shard[0]))).string();
-    ASSERT_EQ(swarmagg({"sweep", sweep, "--shard", shard, "--out", out}), 0) << output();
+    ASSERT_EQ(swarmagg({"sweep", sweep, "--shard", shard, "--out", out, "--no-plots"}), 0)
+        << output();
     EXPECT_THAT(output(), HasSubstr("(shard " + std::string(shard) + "): 4 runs"));
     merge.push_back(out);
   }

@@ -1,9 +1,9 @@
-#include "reproduce/partition_comparison.hpp"
+#include "analysis/partition_comparison.hpp"
 
 #include <cmath>
 #include <set>
 
-#include "reproduce/csv_table.hpp"
+#include "analysis/csv_table.hpp"
 
 namespace swarmagg {
 namespace {
@@ -63,6 +63,10 @@ Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
 }
 
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder) {
+  PartitionComparison comparison;
+  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
+  // A run without predictions (--no-model, or too many agents for the chain) has only its own.
+  if (!std::filesystem::exists(run_folder / "model.csv")) return comparison;
   const CsvTable model = read_csv(run_folder / "model.csv");
   const std::size_t name = model.column("model"), variant = model.column("variant"),
                     time = model.column("time"), quantity = model.column("quantity"),
@@ -81,8 +85,6 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
           model.number(row, value);
     }
   }
-  PartitionComparison comparison;
-  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
   for (const std::string& v : partition_variants()) {
     comparison.models.push_back(run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);

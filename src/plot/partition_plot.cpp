@@ -1,11 +1,12 @@
-#include "reproduce/partition_plot.hpp"
+#include "plot/partition_plot.hpp"
 
 #include <algorithm>
 #include <set>
 
+#include "analysis/csv_text.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
-#include "reproduce/csv_text.hpp"
+#include "plot/variant_colours.hpp"
 
 namespace swarmagg {
 namespace {
@@ -48,18 +49,18 @@ void plot_partitions(const FigureFiles& files, const std::string& title,
   write_file_atomic(files.csv("bars"), csv);
   const std::string data = gnuplot_quote(files.csv_name("bars"));
   const std::string rows = "every ::0::" + std::to_string(kPartitionBars - 1);
-  std::string script = png_preamble(files.size, files.id + ".png", title);
+  std::string script = png_preamble(files.size, files.png_name(), title);
   script +=
       "set ylabel 'fraction of time'\nset xlabel 'partition'\nset key top right\n"
       "set style data histograms\nset style histogram clustered gap 1\n"
       "set style fill solid 0.8 border -1\nset xtics rotate by -45 noenhanced\nset yrange [0:*]\n";
-  script += "plot " + data + " skip 1 " + rows +
-            " using 2:xtic(1) lc 'black' title 'simulation', \\\n"
-            "  " +
-            data + " skip 1 " + rows +
-            " using 3 lc rgb '#1f77b4' title 'model original', \\\n"
-            "  " +
-            data + " skip 1 " + rows + " using 4 lc rgb '#ff7f0e' title 'model peripheral'\n";
+  script += "plot " + data + " skip 1 " + rows + " using 2:xtic(1) lc 'black' title 'simulation'";
+  for (std::size_t k = 0; k < comparison.errors.size(); ++k) {
+    script += ", \\\n  " + data + " skip 1 " + rows + " using " + std::to_string(k + 3) +
+              " lc rgb " + gnuplot_quote(variant_colour(k)) + " title " +
+              gnuplot_quote("model " + comparison.errors[k].variant);
+  }
+  script += "\n";
   run_gnuplot(files.script(), script);
 }
 

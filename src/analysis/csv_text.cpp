@@ -1,4 +1,4 @@
-#include "reproduce/csv_text.hpp"
+#include "analysis/csv_text.hpp"
 
 #include <charconv>
 #include <cmath>

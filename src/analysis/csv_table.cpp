@@ -1,4 +1,4 @@
-#include "reproduce/csv_table.hpp"
+#include "analysis/csv_table.hpp"
 
 #include <cmath>
 #include <fstream>

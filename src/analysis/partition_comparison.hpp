@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "reproduce/noa_comparison.hpp"
+#include "analysis/variant_error.hpp"
 
 namespace swarmagg {
 
@@ -30,6 +30,7 @@ double total_variation(const Distribution& a, const Distribution& b);
 // Mean over replicates of partitions.csv's time fractions.
 Distribution simulated_partitions(const std::filesystem::path& partitions_csv);
 
+// Without model.csv in the folder, models, stationary and errors stay empty.
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder);
 
 }  // namespace swarmagg

@@ -1,0 +1,47 @@
+#include "analysis/run_files.hpp"
+
+#include <fstream>
+
+#include "config/world_loader.hpp"
+#include "core/errors.hpp"
+
+namespace swarmagg {
+namespace {
+
+nlohmann::json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot read the run's summary");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string() + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+RunFiles read_run_files(const std::filesystem::path& folder) {
+  const auto resolved = folder / "world.resolved.yaml";
+  if (!std::filesystem::exists(resolved)) {
+    throw InputError(folder.string() +
+                     ": holds no complete run (no world.resolved.yaml, which a run writes last)");
+  }
+  RunFiles run;
+  run.folder = folder;
+  run.world = load_world(resolved.string());
+  run.timeseries = read_csv(folder / "timeseries.csv");
+  run.summary = read_json(folder / "summary.json");
+  if (std::filesystem::exists(folder / "model.csv")) run.model = read_csv(folder / "model.csv");
+  run.has_partitions = std::filesystem::exists(folder / "partitions.csv");
+  return run;
+}
+
+std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run) {
+  std::vector<std::vector<int>> sizes;
+  for (const auto& replicate : run.summary.at("replicates")) {
+    sizes.push_back(replicate.at("final").at("aggregate_sizes").get<std::vector<int>>());
+  }
+  return sizes;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,30 @@
+#pragma once
+// A finished run folder read back (SPEC 7), so plots are drawn from the files a user can
+// open, the same whether the run has just finished or ran long ago: the resolved world,
+// timeseries.csv, summary.json and, when present, model.csv and partitions.csv.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "analysis/csv_table.hpp"
+#include "config/world_spec.hpp"
+
+namespace swarmagg {
+
+struct RunFiles {
+  std::filesystem::path folder;
+  WorldSpec world;
+  CsvTable timeseries;
+  nlohmann::json summary;
+  std::optional<CsvTable> model;  // model.csv, absent with --no-model
+  bool has_partitions = false;    // partitions.csv (Soysal worlds)
+};
+
+// Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
+// is written last) or a file is unreadable.
+RunFiles read_run_files(const std::filesystem::path& folder);
+
+// Each replicate's final aggregate sizes from summary.json, in replicate order.
+std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run);
+
+}  // namespace swarmagg

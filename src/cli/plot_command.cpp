@@ -1,0 +1,51 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "plot/run_plots.hpp"
+#include "plot/sweep_plots.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+struct PlotCommandOptions {
+  std::string folder;
+  std::string out;
+  bool quiet = false;
+};
+
+// A merged sweep folder (sweep_summary.csv) gets the sweep's plots; any other folder must
+// hold a finished run.
+int plot_command(const PlotCommandOptions& options) {
+  const std::filesystem::path folder(options.folder);
+  const std::filesystem::path out =
+      options.out.empty() ? folder : std::filesystem::path(options.out);
+  const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
+  const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
+  for (const std::string& failure : outcome.failures) std::cerr << "swarmagg: " << failure << "\n";
+  if (!options.quiet) {
+    std::cout << "drew " << outcome.drawn.size() << " plot(s) into " << out.string() << "/:";
+    for (const std::filesystem::path& png : outcome.drawn)
+      std::cout << " " << png.filename().string();
+    std::cout << " (scripts and CSVs in " << (out / kPlotsFolder).string() << "/)\n";
+  }
+  return outcome.failures.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+void add_plot_command(CLI::App& app, Action& action) {
+  auto options = std::make_shared<PlotCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "plot", "Redraw the plots of a finished run or merged sweep from its files (no simulation)");
+  command
+      ->add_option("folder", options->folder,
+                   "A run folder (world.resolved.yaml, timeseries.csv, ...) or a merged sweep "
+                   "folder (sweep_summary.csv)")
+      ->required();
+  command->add_option("--out", options->out,
+                      "Where the PNGs go (scripts and CSVs in <out>/plots/; default: the folder)");
+  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->callback([options, &action] { action = [options] { return plot_command(*options); }; });
+}
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,64 @@
+// noa.png: see run_plot.hpp.
+#include "analysis/csv_text.hpp"
+#include "analysis/model_table.hpp"
+#include "analysis/step_series.hpp"
+#include "models/sample_statistics.hpp"
+#include "output/atomic_file.hpp"
+#include "plot/gnuplot.hpp"
+#include "plot/model_curve_lines.hpp"
+#include "plot/run_plot.hpp"
+
+namespace swarmagg {
+namespace {
+
+// time, mean, ci_low, ci_high, then replicate_<k> per replicate when there are few.
+std::string simulation_csv(const StepSeries& noa, bool with_replicates) {
+  const std::size_t replicates = noa.values.front().size();
+  std::string text = "time,mean,ci_low,ci_high";
+  for (std::size_t k = 0; with_replicates && k < replicates; ++k)
+    text += ",replicate_" + std::to_string(k);
+  text += "\n";
+  for (std::size_t i = 0; i < noa.steps.size(); ++i) {
+    const MeanInterval m = mean_interval(noa.values[i]);
+    text += csv_number(noa.times[i]) + "," + csv_number(m.mean) + "," +
+            csv_number(m.mean - m.half_width) + "," + csv_number(m.mean + m.half_width);
+    for (std::size_t k = 0; with_replicates && k < replicates; ++k)
+      text += "," + csv_number(noa.values[i][k]);
+    text += "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
+  const StepSeries noa = read_step_series(run.timeseries, "noa");
+  const std::size_t replicates = noa.values.front().size();
+  const bool thin_lines = replicates > 1 && replicates <= kThinLineReplicates;
+  write_file_atomic(files.csv(""), simulation_csv(noa, thin_lines));
+  const std::string data = gnuplot_quote(files.csv_name(""));
+  std::string script = png_preamble(files.size, files.png_name(),
+                                    run.world.name + ": number of aggregates, " +
+                                        std::to_string(run.world.robots.count) + " agents");
+  script += std::string(kKeyAbovePlot) +
+            "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\n"
+            "set yrange [0:*]\n"
+            "set style fill transparent solid 0.3 noborder\n";
+  script += "plot " + data + " skip 1 using 1:3:4 with filledcurves lc rgb '#7f7f7f' title " +
+            gnuplot_quote("95% CI of the mean");
+  if (thin_lines) {
+    script += ", \\\n  for [k=5:" + std::to_string(4 + replicates) + "] " + data +
+              " skip 1 using 1:k with lines lw 0.6 lc rgb '#b0b0b0' title (k == 5 ? "
+              "'replicates' : '')";
+  }
+  script += ", \\\n  " + data + " skip 1 using 1:2 with lines lw 2.5 lc 'black' title " +
+            gnuplot_quote("simulation mean (" + std::to_string(replicates) + " replicate" +
+                          (replicates == 1 ? "" : "s") + ")");
+  if (run.model) {
+    script += model_curve_lines(model_curves(*run.model, "noa"), files, "model");
+  }
+  script += "\n";
+  run_gnuplot(files.script(), script);
+}
+
+}  // namespace swarmagg

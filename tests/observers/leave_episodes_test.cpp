@@ -1,0 +1,130 @@
+#include "observers/leave_episodes.hpp"
+
+#include <gtest/gtest.h>
+
+#include "observers/observer_scene.hpp"
+
+namespace swarmagg {
+namespace {
+
+using testing::Scene;
+
+// One step as a replicate runs it: perception and aggregates of the states the decision
+// starts from, then the decided states, then the observation.
+struct Stepper {
+  Scene scene;
+  LeaveEpisodes episodes{64, Scene::kDetectionRadius,
+                         ShapeRules{scene.arena, 1.0, RimRule::for_spacing(2.0)}};
+
+  template <typename Decide>
+  void step(Decide decide) {
+    scene.update();
+    decide(scene.swarm.state);
+    episodes.observe_decision(scene.tracker, scene.neighbours, scene.positions, scene.swarm.state);
+  }
+};
+
+// A 7-hexagon at 2r: the centre (0) is inside, the ring (1..6) is rim (SPEC 4).
+TEST(LeaveEpisodes, SplitsAttemptsByRimAndInside) {
+  Stepper s;
+  const AgentId centre = s.scene.add_hexagon(50.0, 50.0, 1, 2.0);
+  const AgentId ring = centre + 1;
+  s.step([&](auto& state) {
+    state[centre] = AgentState::Leave;
+    state[ring] = AgentState::Leave;
+  });
+  const LeaveTally& t = s.episodes.tally();
+  EXPECT_EQ(t.attempts.inside, 1);
+  EXPECT_EQ(t.attempts.rim, 1);
+  EXPECT_EQ(t.attempts.total(), 2);
+  EXPECT_EQ(t.attempts_by_size[7], 2);
+  EXPECT_EQ(t.aggregate_steps_by_size[7], 1);
+  EXPECT_EQ(s.episodes.open_attempts(), 2u);
+  EXPECT_EQ(t.escapes.total(), 0);
+}
+
+// The centre stays surrounded by its waiting fellows: no escape. The ring agent walked
+// away and ends beside a waiting agent of another aggregate: still an escape, since only
+// the members of the aggregate it left count.
+TEST(LeaveEpisodes, AnEscapeIsJudgedOnTheAggregateItLeft) {
+  Stepper s;
+  const AgentId centre = s.scene.add_hexagon(50.0, 50.0, 1, 2.0);
+  const AgentId ring = centre + 1;  // at (48, 50)
+  const AgentId other_a = s.scene.add(70.0, 50.0);
+  s.scene.add(72.0, 50.0);
+  s.step([&](auto& state) {
+    state[centre] = AgentState::Leave;
+    state[ring] = AgentState::Leave;
+  });
+  s.scene.positions[ring] = {67.0, 50.0};  // 3 from the other pair, 15 from its own
+  s.step([](auto&) {});                    // still leaving
+  EXPECT_EQ(s.episodes.tally().escapes.total(), 0);
+  s.step([&](auto& state) {  // timeouts: LEAVE -> GO
+    state[centre] = AgentState::Go;
+    state[ring] = AgentState::Go;
+  });
+  const LeaveTally& t = s.episodes.tally();
+  EXPECT_EQ(t.escapes.rim, 1);
+  EXPECT_EQ(t.escapes.inside, 0);
+  EXPECT_EQ(t.escapes_by_size[7], 1);
+  EXPECT_EQ(t.aggregate_steps_by_size[7], 1);  // then 5 (the ring without agent 1) twice
+  EXPECT_EQ(t.aggregate_steps_by_size[5], 2);
+  EXPECT_EQ(t.aggregate_steps_by_size[2], 3);  // the other pair, every step
+  EXPECT_EQ(s.episodes.open_attempts(), 0u);
+  EXPECT_EQ(s.scene.swarm.state[other_a], AgentState::Wait);
+}
+
+// Former members that are no longer waiting do not hold the leaver: a pair whose partner
+// left first dissolves, so the second leaver got out even though it stands beside it.
+TEST(LeaveEpisodes, FormerMembersThatStoppedWaitingDoNotCount) {
+  Stepper s;
+  const AgentId a = s.scene.add(20.0, 20.0);
+  const AgentId b = s.scene.add(22.0, 20.0);
+  s.step([&](auto& state) { state[a] = AgentState::Leave; });
+  s.step([&](auto& state) { state[b] = AgentState::Go; });  // alone: resumes
+  s.step([&](auto& state) { state[a] = AgentState::Go; });  // timeout beside b (GO)
+  EXPECT_EQ(s.episodes.tally().attempts.total(), 1);
+  EXPECT_EQ(s.episodes.tally().escapes.rim, 1);
+}
+
+// A lone waiting agent (isolated_wait: stay) has no aggregate to leave.
+TEST(LeaveEpisodes, ALoneWaitingAgentMakesNoAttempt) {
+  Stepper s;
+  const AgentId lone = s.scene.add(20.0, 20.0);
+  s.step([&](auto& state) { state[lone] = AgentState::Leave; });
+  EXPECT_EQ(s.episodes.tally().attempts.total(), 0);
+  EXPECT_EQ(s.episodes.open_attempts(), 0u);
+}
+
+// Many overlapping episodes: the remembered members are compacted as attempts end, and each
+// attempt still judges against its own aggregate. Two 19-packs; each step one ring-2 agent
+// of each leaves (rim), and the attempts of two steps before end where they started, within
+// s of the inner seven, who never leave: no escape, except one leaver of the first pack
+// moved beside the second pack's centre, whose members it never belonged to.
+TEST(LeaveEpisodes, ManyOverlappingAttemptsKeepTheirOwnMembers) {
+  Stepper s;
+  const AgentId first = s.scene.add_hexagon(20.0, 20.0, 2, 2.0);
+  const AgentId second = s.scene.add_hexagon(70.0, 70.0, 2, 2.0);
+  const AgentId moved = first + 7 + 3;
+  for (int k = 0; k < 12; ++k) {
+    const AgentId a = first + 7 + static_cast<AgentId>(k);
+    const AgentId b = second + 7 + static_cast<AgentId>(k);
+    if (k == 5) s.scene.positions[moved] = {70.0, 73.0};  // 3 from the second centre
+    s.step([&](auto& state) {
+      state[a] = state[b] = AgentState::Leave;
+      if (k >= 2) state[a - 2] = state[b - 2] = AgentState::Go;
+    });
+  }
+  const LeaveTally& t = s.episodes.tally();
+  EXPECT_EQ(t.attempts.rim, 24);
+  EXPECT_EQ(t.attempts.inside, 0);
+  EXPECT_EQ(s.episodes.open_attempts(), 4u);
+  EXPECT_EQ(t.escapes.rim, 1);
+  EXPECT_EQ(t.escapes.inside, 0);
+  // Step k starts from packs of 19 - k waiting members.
+  for (int m = 8; m <= 19; ++m) EXPECT_EQ(t.attempts_by_size[m], 2) << m;
+  EXPECT_EQ(t.escapes_by_size[19 - 3], 1);
+}
+
+}  // namespace
+}  // namespace swarmagg

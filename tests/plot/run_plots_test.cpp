@@ -1,0 +1,158 @@
+// The plots of a run folder and of a merged sweep, drawn from tiny worlds' real outputs.
+#include "plot/run_plots.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "analysis/csv_table.hpp"
+#include "config/world_loader.hpp"
+#include "core/errors.hpp"
+#include "models/predictions.hpp"
+#include "plot/gnuplot.hpp"
+#include "plot/sweep_plots.hpp"
+#include "png_pixels.hpp"
+#include "run/model_outputs.hpp"
+#include "run/run_folder.hpp"
+#include "run/world_runner.hpp"
+
+namespace swarmagg {
+namespace {
+
+constexpr PlotSize kSize{640, 400};
+
+std::filesystem::path run_into(const std::string& world, const std::vector<std::string>& overrides,
+                               const std::filesystem::path& out) {
+  const WorldSpec spec =
+      load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/" + world, overrides);
+  write_run_folder(spec, run_world(spec, RunOptions{}), out);
+  write_model_outputs(spec, predict(spec), out);
+  return out;
+}
+
+std::vector<std::string> names_of(const PlotOutcome& outcome) {
+  std::vector<std::string> names;
+  for (const auto& png : outcome.drawn) names.push_back(png.filename().string());
+  return names;
+}
+
+class RunPlotsTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!gnuplot_available()) return;
+    root_ = std::filesystem::temp_directory_path() /
+            ("swarmagg_run_plots_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(root_);
+    bayindir_ = run_into(
+        "examples/demo.yaml",
+        {"robots.count=30", "run.duration=80", "run.replicates=3", "model.stochastic_replicates=2"},
+        root_ / "bayindir");
+    soysal_ = run_into("paper/soysal-5-constant.yaml",
+                       {"run.duration=2000", "controller.p0=0.002", "run.replicates=2"},
+                       root_ / "soysal");
+  }
+  static void TearDownTestSuite() { std::filesystem::remove_all(root_); }
+  void SetUp() override {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  }
+  static inline std::filesystem::path root_, bayindir_, soysal_;
+};
+
+void expect_plot_shows_data(const std::filesystem::path& png) {
+  const testing::RgbImage image = testing::read_rgb_png(png);
+  ASSERT_EQ(image.width, kSize.width) << png;
+  ASSERT_EQ(image.height, kSize.height) << png;
+  EXPECT_GT(testing::distinct_colours(image), 2u) << png;
+  const testing::Frame frame = testing::plot_frame(image);
+  ASSERT_LT(frame.left + 100, frame.right) << png;
+  ASSERT_LT(frame.top + 100, frame.bottom) << png;
+  EXPECT_GT(testing::coloured_pixels_inside(image, frame), 150) << png;
+}
+
+TEST_F(RunPlotsTest, ABayindirRunGetsNoaStatesAndSizesWithTheirScriptsAndCsvs) {
+  const PlotOutcome outcome = draw_run_plots(bayindir_, bayindir_, kSize);
+  EXPECT_TRUE(outcome.failures.empty()) << outcome.failures.front();
+  EXPECT_EQ(names_of(outcome), (std::vector<std::string>{"noa.png", "states.png", "sizes.png"}));
+  for (const auto& png : outcome.drawn) {
+    EXPECT_EQ(png.parent_path(), bayindir_);
+    expect_plot_shows_data(png);
+    const auto stem = png.stem().string();
+    EXPECT_TRUE(std::filesystem::exists(bayindir_ / "plots" / (stem + ".gp"))) << stem;
+    EXPECT_TRUE(std::filesystem::exists(bayindir_ / "plots" / (stem + ".csv"))) << stem;
+  }
+}
+
+TEST_F(RunPlotsTest, ASoysalRunAlsoGetsItsPartitions) {
+  const PlotOutcome outcome = draw_run_plots(soysal_, root_ / "soysal-plots", kSize);
+  EXPECT_TRUE(outcome.failures.empty()) << outcome.failures.front();
+  EXPECT_EQ(names_of(outcome),
+            (std::vector<std::string>{"noa.png", "states.png", "sizes.png", "partitions.png"}));
+  for (const auto& png : outcome.drawn) expect_plot_shows_data(png);
+  // The partition bars hold the simulation and both model variants.
+  const CsvTable bars = read_csv(root_ / "soysal-plots" / "plots" / "partitions-bars.csv");
+  EXPECT_EQ(bars.header, (std::vector<std::string>{"partition", "simulation", "model_original",
+                                                   "model_peripheral"}));
+}
+
+TEST_F(RunPlotsTest, NoaCsvHoldsTheReplicatesTheirMeanAndABandAroundIt) {
+  draw_run_plots(bayindir_, root_ / "noa-check", kSize);
+  const CsvTable noa = read_csv(root_ / "noa-check" / "plots" / "noa.csv");
+  ASSERT_EQ(noa.header.size(), 4u + 3u);  // time, mean, ci_low, ci_high, 3 replicates
+  const CsvTable timeseries = read_csv(bayindir_ / "timeseries.csv");
+  ASSERT_EQ(noa.rows.size() * 3, timeseries.rows.size());
+  for (std::size_t row = 0; row < noa.rows.size(); ++row) {
+    const double mean = noa.number(row, 1);
+    EXPECT_NEAR(mean, (noa.number(row, 4) + noa.number(row, 5) + noa.number(row, 6)) / 3, 1e-9);
+    EXPECT_LE(noa.number(row, 2), mean);
+    EXPECT_GE(noa.number(row, 3), mean);
+    // Replicate 1's value is its own timeseries row at that step.
+    EXPECT_EQ(noa.number(row, 5), timeseries.number(noa.rows.size() + row, 3));
+  }
+}
+
+TEST_F(RunPlotsTest, SizesCsvAddsUpToTheFinalNoa) {
+  draw_run_plots(bayindir_, root_ / "sizes-check", kSize);
+  const CsvTable sizes = read_csv(root_ / "sizes-check" / "plots" / "sizes.csv");
+  double aggregates = 0.0;
+  for (std::size_t row = 0; row < sizes.rows.size(); ++row) aggregates += sizes.number(row, 1);
+  std::ifstream summary(bayindir_ / "summary.json");
+  std::stringstream text;
+  text << summary.rdbuf();
+  const std::string json = text.str();
+  const auto at = json.find("\"final_noa\"");
+  const auto mean = json.find("\"mean\":", at);
+  EXPECT_NEAR(aggregates, std::stod(json.substr(mean + 7)), 1e-9);
+  // The model's expected sizes are drawn beside them.
+  EXPECT_TRUE(std::filesystem::exists(root_ / "sizes-check" / "plots" / "sizes-model.csv"));
+}
+
+TEST_F(RunPlotsTest, ASweepSummaryGivesFinalNoaAgainstEachParameterWithIntervals) {
+  const auto sweep = root_ / "sweep";
+  std::filesystem::create_directories(sweep);
+  std::ofstream(sweep / "sweep_summary.csv")
+      << "robots.count,controller.p_leave,observable,replicates,mean,sd,min,q25,median,q75,max\n"
+         "30,0.001,noa,4,4,2,1,3,4,5,7\n30,0.001,largest,4,5,1,4,4,5,6,6\n"
+         "30,0.005,noa,4,2,2,0,1,2,3,4\n60,0.001,noa,4,9,2,7,8,9,10,11\n"
+         "60,0.005,noa,4,6,2,4,5,6,7,8\n";
+  const PlotOutcome outcome = draw_sweep_plots(sweep, sweep, kSize);
+  EXPECT_EQ(names_of(outcome), (std::vector<std::string>{"final-noa-vs-robots.count.png",
+                                                         "final-noa-vs-controller.p_leave.png"}));
+  for (const auto& png : outcome.drawn) expect_plot_shows_data(png);
+  const CsvTable by_count = read_csv(sweep / "plots" / "final-noa-vs-robots.count.csv");
+  ASSERT_EQ(by_count.rows.size(), 2u);
+  // mean 4, sd 2, 4 replicates: half-width t(0.975, 3) * 2 / 2 = 3.182.
+  EXPECT_NEAR(by_count.number(0, 1), 4.0, 1e-12);
+  EXPECT_NEAR(by_count.number(0, 2), 4.0 - 3.18245, 1e-4);
+  EXPECT_NEAR(by_count.number(0, 3), 4.0 + 3.18245, 1e-4);
+}
+
+TEST_F(RunPlotsTest, AFolderWithoutARunIsBadInput) {
+  EXPECT_THROW(draw_run_plots(root_ / "nothing-here", root_ / "nothing-here"), InputError);
+  EXPECT_THROW(draw_sweep_plots(root_ / "nothing-here", root_ / "nothing-here"), InputError);
+}
+
+}  // namespace
+}  // namespace swarmagg
