@@ -5,6 +5,17 @@
 #include <cmath>
 
 namespace swarmagg {
+namespace {
+
+// A leaver counts as enclosed when the vectors to the agents it perceives (s = 2 spacing)
+// sum to less than this fraction of their lengths. In hexagonal packs at spacing 2r the
+// fraction is 0.50 on a straight rim and 0.66 to 0.72 on the rim of a 19-pack, against 0 at
+// the centre, 0.23 one row inside a straight rim and 0.37 one ring inside a 19-pack's rim.
+// Whether an agent counts as enclosed changes only its heading: the bodies around it decide
+// whether it gets out.
+constexpr double kEnclosedFraction = 0.4;
+
+}  // namespace
 
 bool AggregationController::searching(std::uint32_t agent) const {
   return previous_[agent] == AgentState::Go || previous_[agent] == AgentState::Approach;
@@ -41,7 +52,7 @@ void AggregationController::update_leaving(std::uint32_t agent, const Controller
                                            SwarmState& swarm, const CounterRng& rng) {
   swarm.leave_time_left[agent] -= rules_.dt;
   if (swarm.leave_time_left[agent] > 1e-9) {
-    swarm.heading[agent] = escape_direction(agent, input, swarm.heading[agent]);
+    if (const auto away = escape_direction(agent, input)) swarm.heading[agent] = *away;
     return;
   }
   swarm.state[agent] = AgentState::Go;
@@ -74,7 +85,11 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   swarm.state[agent] = AgentState::Leave;
   swarm.partner[agent] = kNoPartner;
   swarm.leave_time_left[agent] = rules_.leave_timeout;
-  swarm.heading[agent] = escape_direction(agent, input, swarm.heading[agent]);
+  if (const auto away = escape_direction(agent, input)) {
+    swarm.heading[agent] = *away;
+  } else if (rules_.compaction.enabled) {
+    swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
+  }
 }
 
 // Members of one aggregate leaving in the same step are counted one after another: an
@@ -173,15 +188,56 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
   }
 }
 
-Vec2 AggregationController::escape_direction(std::uint32_t agent, const ControllerInput& input,
-                                             Vec2 fallback) const {
+// Away from the agents it perceives. Deep in a packed aggregate (compaction) the vectors to
+// them cancel and their sum points nowhere in particular: the agent is enclosed
+// (kEnclosedFraction): no direction is returned, and the agent keeps its heading, which at
+// the start of the episode is drawn uniformly at random (SPEC 3). Nothing here asks where the agent
+// stands: the bodies around it stop it or let it through. Without compaction only an exactly zero
+// sum counts.
+std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
+                                                            const ControllerInput& input) const {
   Vec2 towards;
+  double lengths = 0.0;
   for (const Neighbour& nb : input.neighbours.of(agent)) {
     if (nb.distance > rules_.detection_radius) break;
     towards += nb.offset;
+    lengths += nb.distance;
   }
   const double length = norm(towards);
-  return length > 1e-12 ? towards * (-1.0 / length) : fallback;
+  const double enclosed = rules_.compaction.enabled ? kEnclosedFraction * lengths : 0.0;
+  if (length > 1e-12 && length > enclosed) return towards * (-1.0 / length);
+  return std::nullopt;
+}
+
+// SPEC 3's spring force from the waiting members of the agent's aggregate it perceives
+// (under join: false its partner only), turned into a velocity of at most v; exactly zero
+// when the net force is below the tolerance.
+Vec2 AggregationController::compaction_velocity(std::uint32_t agent, const ControllerInput& input,
+                                                const SwarmState& swarm) const {
+  const CompactionRule& c = rules_.compaction;
+  const std::int32_t* aggregate = input.aggregates.aggregate_of().data();
+  const std::int32_t own = aggregate[agent];
+  const std::int32_t partner = swarm.partner[agent];
+  Vec2 force;
+  for (const Neighbour& nb : input.neighbours.of(agent)) {
+    if (nb.distance > rules_.detection_radius) break;
+    const bool member = rules_.join ? own >= 0 && aggregate[nb.id] == own
+                                    : static_cast<std::int32_t>(nb.id) == partner;
+    if (!member || previous_[nb.id] != AgentState::Wait || nb.distance <= 0.0) continue;
+    force += nb.offset * ((nb.distance - c.spacing) / nb.distance);
+  }
+  const double magnitude = norm(force);
+  if (magnitude < c.tolerance || magnitude <= 0.0) return {};
+  return force * (std::min(rules_.speed, c.gain * magnitude) / magnitude);
+}
+
+// Overwrites the standing command of each agent that waited and goes on waiting.
+void AggregationController::compact(const ControllerInput& input, const SwarmState& swarm,
+                                    std::span<MotionCommand> commands) const {
+  for (const std::uint32_t i : waiters_) {
+    if (swarm.state[i] != AgentState::Wait) continue;
+    commands[i].velocity = compaction_velocity(i, input, swarm);
+  }
 }
 
 // The command of each state, looked up rather than branched on: states of neighbouring
@@ -197,12 +253,19 @@ void AggregationController::write_commands(const SwarmState& swarm,
   };
   const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
   const SignalMask search_block = rules_.join ? kWaiting : 0;
+  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
+  constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
+  // Moving waiting bodies (compaction) respect every body that is solid to them: they must
+  // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
+  // bodies it blocks, so both sides of a solid pair need the bit).
+  const SignalMask wait_block =
+      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
-  // other, so a body engine cannot shove one through another and loosen the aggregate
-  // (kinematic waiting agents never move anyway).
+  // other, so neither compaction nor a body engine's shoving can push one through another.
+  // Waiting agents stand here; compact() gives those that close up their velocity.
   const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
-                                                {0, 0, kWaiting, 0},
+                                                {0, 0, wait_block, 0},
                                                 {kMoves, 0, kWaiting, kWaiting},
                                                 {kMoves, search_halt, search_block, 0}};
   static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
@@ -283,6 +346,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);
+  if (rules_.compaction.enabled) compact(input, swarm, commands);
 }
 
 }  // namespace swarmagg

@@ -13,6 +13,15 @@ struct LeaveRule {
   LeaveSize size_source = LeaveSize::Aggregate;
 };
 
+// SPEC 3 "Compaction": a waiting agent moves under F = sum_j (d_ij - spacing) u_ij from the
+// waiting members of its aggregate it perceives, at min(v, gain |F|), standing below tolerance.
+struct CompactionRule {
+  bool enabled = false;
+  double spacing = 2.0;     // u
+  double gain = 1.0;        // per tu
+  double tolerance = 0.05;  // u
+};
+
 struct AggregationRules {
   bool join = true;   // searching agents may join waiting agents
   bool leave = true;  // waiting agents may leave
@@ -24,6 +33,7 @@ struct AggregationRules {
   double detection_radius = 4.0;
   std::optional<double> approach_radius;  // Soysal's APPROACH state
   double tumble = 0.0;                    // heading redraw probability per step while GO
+  CompactionRule compaction;
 };
 
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives

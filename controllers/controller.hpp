@@ -40,9 +40,10 @@ class Controller {
 std::unique_ptr<Controller> make_controller(const WorldSpec& spec);
 
 // A uniformly random unit heading for `agent` at `step`.
-inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32_t agent) {
+inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32_t agent,
+                           Draw purpose = Draw::Heading) {
   constexpr double kTwoPi = 6.283185307179586;
-  return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, Draw::Heading));
+  return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, purpose));
 }
 
 // Mirrors headings the walls reflected during the last step.

@@ -152,6 +152,18 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   return {std::move(path), expected, read, write};
 }
 
+// A positive length whose default follows another key (written back resolved).
+WorldKey optional_length_key(std::string path, Access<std::optional<double>> access,
+                             std::function<double(const WorldSpec&)> resolved) {
+  auto read = [access](WorldSpec& w, const YAML::Node& node) {
+    const double v = read_real(node, kPositive.expected);
+    if (!(v > 0.0)) throw KeyValueError{kPositive.expected};
+    access(w) = v;
+  };
+  auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
+  return {std::move(path), kPositive.expected, read, write};
+}
+
 WorldKey name_key() {
   const std::string expected = "a name of letters, digits, '-', '_' or '.'";
   auto read = [expected](WorldSpec& w, const YAML::Node& node) {
@@ -260,6 +272,18 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(real_key(
       "controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; },
       kProbability));
+  keys.push_back(bool_key("controller.compaction.enabled",
+                          [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }));
+  keys.push_back(optional_length_key(
+      "controller.compaction.spacing",
+      [](WorldSpec& w) -> std::optional<double>& { return w.controller.compaction.spacing; },
+      [](const WorldSpec& w) { return w.compaction_spacing(); }));
+  keys.push_back(real_key(
+      "controller.compaction.gain",
+      [](WorldSpec& w) -> double& { return w.controller.compaction.gain; }, kPositive));
+  keys.push_back(real_key(
+      "controller.compaction.tolerance",
+      [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative));
   keys.push_back(
       enum_key<EngineType>("engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
                            {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
@@ -350,8 +374,9 @@ const WorldKey* find_world_key(const std::string& path) {
 }
 
 const std::vector<std::string>& world_blocks() {
-  static const std::vector<std::string> blocks = {"arena",        "robots", "controller", "engine",
-                                                  "engine.box2d", "run",    "model",      "render"};
+  static const std::vector<std::string> blocks = {
+      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d",
+      "run",   "model",  "render"};
   return blocks;
 }
 

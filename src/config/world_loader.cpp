@@ -328,6 +328,15 @@ void check_world(const WorldSpec& spec) {
     impossible(spec, "controller.approach_radius",
                "must exceed robots.detection_radius (" + format_number(s) + ")");
   }
+  // Compaction pulls only members an agent perceives: a spacing at or beyond s would pull
+  // every perceived member in and push none out, so the aggregate could never settle.
+  if (spec.controller.compaction.enabled && spec.compaction_spacing() >= s) {
+    impossible(spec, "controller.compaction.spacing",
+               "is " + format_number(spec.compaction_spacing()) +
+                   (spec.controller.compaction.spacing ? "" : " (2 robots.radius)") +
+                   " but must be below robots.detection_radius (" + format_number(s) +
+                   "); set it, or controller.compaction.enabled: false");
+  }
   // Compared before rounding: steps() cannot represent a count beyond 2^63.
   if (spec.run.duration / spec.engine.dt > 1e12) {
     impossible(spec, "run.duration", "needs more than 10^12 steps of engine.dt");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,14 @@ struct RobotsSpec {
   bool random_placement() const { return placement.empty(); }
 };
 
+// SPEC 3 "Compaction": waiting agents close up their aggregate under a spring force.
+struct CompactionSpec {
+  bool enabled = true;
+  std::optional<double> spacing;  // u, centre to centre; unset: 2 robots.radius (touching)
+  double gain = 1.0;              // per tu: speed per unit of net spring force, capped at v
+  double tolerance = 0.05;        // u: a net force below it leaves the agent standing
+};
+
 struct ControllerSpec {
   ControllerType type = ControllerType::Bayindir;
   double p_leave = 0.0;         // bayindir: per step
@@ -64,6 +73,7 @@ struct ControllerSpec {
   LeaveSize leave_size = LeaveSize::Aggregate;
   CollisionMode collision_mode = CollisionMode::Ghost;
   double tumble = 0.0;  // collision: heading redraw probability per step
+  CompactionSpec compaction;
 };
 
 struct Box2DSpec {
@@ -117,6 +127,10 @@ struct WorldSpec {
   ModelSpec model;
   RenderSpec render;
 
+  // The distance compaction closes waiting members up to (2r unless the world sets it).
+  double compaction_spacing() const {
+    return controller.compaction.spacing.value_or(2.0 * robots.radius);
+  }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }
   // The largest radius any sensor of this world's controller reads.

@@ -6,7 +6,7 @@
 namespace swarmagg {
 
 double packing_spacing(const WorldSpec& spec) {
-  return 2.0 * spec.robots.radius;
+  return spec.compaction_spacing();
 }
 
 ShapeRules ShapeRules::for_world(const WorldSpec& spec) {

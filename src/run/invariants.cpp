@@ -179,13 +179,21 @@ void check_events(const CheckedState& s, int waiting) {
     violated(s, "events counted that the rules rule out" + show());
 }
 
+// Waiting agents move only to close up their aggregate (SPEC 3 "Compaction"); the collision
+// check's pairs never do (controllers/aggregation_rules.cpp).
+bool compacts(const WorldSpec& spec) {
+  return spec.controller.compaction.enabled && spec.controller.type != ControllerType::Collision;
+}
+
 // Solid to each other during the step (SPEC 2; controllers' blocked_by masks).
 bool solid(AgentState a, AgentState b, bool join) {
   const auto blocked = [join](AgentState mover) {
     return mover == AgentState::Leave ||
            (join && (mover == AgentState::Go || mover == AgentState::Approach));
   };
-  return (a == AgentState::Wait && blocked(b)) || (b == AgentState::Wait && blocked(a));
+  const bool both_wait = a == AgentState::Wait && b == AgentState::Wait;
+  return both_wait || (a == AgentState::Wait && blocked(b)) ||
+         (b == AgentState::Wait && blocked(a));
 }
 
 }  // namespace
@@ -270,7 +278,7 @@ void InvariantChecker::check_motion(const CheckedState& s) const {
   const double slack = kRounding * (longest_side(s.spec) + reach);
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
     const double moved = geometry.distance(positions_[i], s.positions[i]);
-    const double limit = s.swarm.state[i] == AgentState::Wait ? 0.0 : reach;
+    const double limit = s.swarm.state[i] == AgentState::Wait && !compacts(s.spec) ? 0.0 : reach;
     if (moved > limit + slack) {
       violated(s, agent(s, i) + " moved " + format_number(moved) + " from " + point(positions_[i]) +
                       " to " + point(s.positions[i]) + " in one step; at most " +

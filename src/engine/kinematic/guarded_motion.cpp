@@ -103,6 +103,9 @@ void GuardedMotion::reset(std::size_t agents, double dt) {
     head_.assign(agents, 0u);
     head_stamp_.assign(agents, 0u);
     stamp_ = 0;
+    // Every agent halts at most once a step: room for all, so that a swarm whose halts
+    // keep growing (waiting agents pressing into packed aggregates) never reallocates.
+    halted_.reserve(agents);
   } else {
     for (const std::uint32_t agent : halted_) stop_time_[agent] = dt;
   }
@@ -123,6 +126,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     stamp_ = 0;
   }
   heap_.clear();
+  // Each pair schedules at most two events at the start and two more per halt of either
+  // agent; room for twice the pairs up front keeps the heap from growing step by step as
+  // aggregates densify.
+  if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
   for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
 
   std::uint64_t encounters = 0;

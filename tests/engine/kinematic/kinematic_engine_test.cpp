@@ -118,6 +118,36 @@ TEST(KinematicEngine, BlockedBodyStopsAtContactAndMayStillMoveAway) {
   EXPECT_NEAR(engine->positions()[0].x, 47.0, 1e-9);
 }
 
+// Compaction's moves (SPEC 3): two waiting bodies closing in on each other, each blocked by
+// the other, stop together at contact.
+TEST(KinematicEngine, TwoBlockedBodiesMovingTogetherStopAtContact) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{48.25, 50.0}, {51.75, 50.0}});
+  const std::vector<Signal> signals{kWait, kWait};
+  const std::vector<MotionCommand> closing{moving({10.0, 0.0}, 0, mask_of(kWait)),
+                                           moving({-10.0, 0.0}, 0, mask_of(kWait))};
+  engine->step(closing, signals);
+  EXPECT_NEAR(engine->positions()[0].x, 49.0, 1e-9);
+  EXPECT_NEAR(engine->positions()[1].x, 51.0, 1e-9);
+}
+
+// Bodies already touching and pressed towards each other do not move at all (they halt at
+// the start of the step), while one pushed sideways along the other slides.
+TEST(KinematicEngine, TouchingBlockedBodiesPressedTogetherHaltAtOnce) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  const std::vector<Vec2> start{{49.0, 50.0}, {51.0, 50.0}, {60.0, 50.0}, {62.0, 50.0}};
+  auto engine = make_kinematic_engine(spec, start);
+  const std::vector<Signal> signals{kWait, kWait, kWait, kWait};
+  const SignalMask solid = mask_of(kWait);
+  const std::vector<MotionCommand> pressed{
+      moving({0.5, 0.1}, 0, solid), moving({-0.5, 0.0}, 0, solid),  // into each other
+      moving({0.0, 1.0}, 0, solid), moving({}, 0, solid)};          // along the other
+  for (int k = 0; k < 10; ++k) engine->step(pressed, signals);
+  EXPECT_EQ(engine->positions()[0], start[0]);
+  EXPECT_EQ(engine->positions()[1], start[1]);
+  EXPECT_NEAR(engine->positions()[2].y, 51.0, 1e-9);
+}
+
 TEST(KinematicEngine, AHaltedAgentDoesNotMeetWhatLayBeyondItsStop) {
   WorldSpec spec = arena_world(100.0, 100.0);
   spec.robots.speed = 100.0;
