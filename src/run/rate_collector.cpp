@@ -51,23 +51,6 @@ class RateObserver final : public ReplicateObserver {
   bool collision_;
 };
 
-class ObserverPair final : public ReplicateObserver {
- public:
-  ObserverPair(std::unique_ptr<ReplicateObserver> a, std::unique_ptr<ReplicateObserver> b)
-      : a_(std::move(a)), b_(std::move(b)) {}
-  void observe(const Replicate& replicate) override {
-    a_->observe(replicate);
-    b_->observe(replicate);
-  }
-  void finish() override {
-    a_->finish();
-    b_->finish();
-  }
-
- private:
-  std::unique_ptr<ReplicateObserver> a_, b_;
-};
-
 }  // namespace
 
 RateCollector::RateCollector(const WorldSpec& spec)
@@ -83,18 +66,6 @@ RateTally RateCollector::total() const {
     if (tally) total.merge(*tally);
   }
   return total;
-}
-
-ObserverFactory both_observers(ObserverFactory first, ObserverFactory second) {
-  if (!first) return second;
-  if (!second) return first;
-  return [first, second](int index) -> std::unique_ptr<ReplicateObserver> {
-    auto a = first(index);
-    auto b = second(index);
-    if (!a) return b;
-    if (!b) return a;
-    return std::make_unique<ObserverPair>(std::move(a), std::move(b));
-  };
 }
 
 }  // namespace swarmagg

@@ -3,28 +3,6 @@
 #include <utility>
 
 namespace swarmagg {
-namespace {
-
-class ObserverPair final : public ReplicateObserver {
- public:
-  ObserverPair(std::unique_ptr<ReplicateObserver> first, std::unique_ptr<ReplicateObserver> second)
-      : first_(std::move(first)), second_(std::move(second)) {}
-
-  void observe(const Replicate& replicate) override {
-    first_->observe(replicate);
-    second_->observe(replicate);
-  }
-  void finish() override {
-    first_->finish();
-    second_->finish();
-  }
-
- private:
-  std::unique_ptr<ReplicateObserver> first_;
-  std::unique_ptr<ReplicateObserver> second_;
-};
-
-}  // namespace
 
 ObserverFactory both_observers(ObserverFactory first, ObserverFactory second) {
   if (!first) return second;
@@ -35,7 +13,10 @@ ObserverFactory both_observers(ObserverFactory first, ObserverFactory second) {
     auto b = second(index);
     if (!a) return b;
     if (!b) return a;
-    return std::make_unique<ObserverPair>(std::move(a), std::move(b));
+    auto group = std::make_unique<ObserverGroup>();
+    group->add(std::move(a));
+    group->add(std::move(b));
+    return group;
   };
 }
 

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace swarmagg {
@@ -38,12 +39,25 @@ TEST(ParallelFor, PassesOnTheFirstErrorAndStartsNoFurtherTask) {
 }
 
 TEST(ParallelFor, CallsTheWaitingCallbackOnTheCallingThreadUntilDone) {
+  // The tasks hold until the callback has run, so it must run while they are under way
+  // (otherwise fast tasks could end before the caller first looks, and the test would flake).
   std::atomic<bool> done{false};
-  int waits = 0;
+  std::atomic<int> waits{0};
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> on_caller{true};
   parallel_for(
-      2, 2, [&](std::size_t) { done = true; }, [&] { ++waits; });
+      2, 2,
+      [&](std::size_t) {
+        while (waits.load() == 0) std::this_thread::yield();
+        done = true;
+      },
+      [&] {
+        if (std::this_thread::get_id() != caller) on_caller = false;
+        ++waits;
+      });
   EXPECT_TRUE(done.load());
-  EXPECT_GE(waits, 1);
+  EXPECT_GE(waits.load(), 1);
+  EXPECT_TRUE(on_caller.load());
 }
 
 }  // namespace
