@@ -3,7 +3,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SWARMAGG := $(BUILD_DIR)/swarmagg
 
-.PHONY: deps configure build demo test bench microbench clean fuzz test-sanitize
+.PHONY: deps configure build install demo test test-slurm bench microbench clean fuzz test-sanitize
 
 deps:
 	@scripts/install-deps.sh
@@ -14,11 +14,21 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# bin/swarmagg, share/doc/swarmagg (README, docs) and share/swarmagg (worlds, examples).
+PREFIX ?= /usr/local
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
 demo: build
 	@scripts/demo.sh $(SWARMAGG)
 
 test: build
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# A single-node Slurm on localhost runs the example sweep through examples/slurm/submit.sh
+# (tests/cluster/slurm_sweep_test.sh; needs root for munged and slurmd).
+test-slurm: build
+	@tests/cluster/slurm_sweep_test.sh $(BUILD_DIR)
 
 # The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer (Debug, so
 # every replicate also checks its invariants, at -O1 to keep it fast enough).

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "config/paper_density_world.hpp"
+#include "bench/lib/paper_density_world.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_spec.hpp"
 #include "run/replicate.hpp"

@@ -1,9 +1,9 @@
 // Box2D engine throughput against a bare Box2D loop over the same bodies, in the same run
 // (issue 3: our overhead should stay within 1.5x). Method in
-// src/engine/box2d/box2d_bench.hpp; pin it to one core and read the ratio:
+// bench/lib/box2d_bench.hpp; pin it to one core and read the ratio:
 //
 //   taskset -c 0 build/bench/bench_box2d [--solid] [N ...]     (default N: 100 1000 10000)
-#include "engine/box2d/box2d_bench.hpp"
+#include "bench/lib/box2d_bench.hpp"
 
 #include <algorithm>
 #include <cstdio>

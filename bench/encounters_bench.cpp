@@ -31,7 +31,7 @@ struct StepInput {
     StepThreads threads;
     const double v = spec.robots.speed;
     search.find(
-        ArenaGeometry(spec.arena), r.engine().positions(),
+        spec.arena.geometry(), r.engine().positions(),
         {spec.sensing_radius(), spec.robots.detection_radius + 2.0 * v * spec.engine.dt, false},
         threads);
     SwarmState swarm = r.swarm();

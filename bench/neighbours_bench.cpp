@@ -1,7 +1,7 @@
-// The neighbour structures of the kinematic engine, per step: the reference uniform grid
-// (rebuilt by counting sort, then scanned for pairs), the sorted strips (re-sorted from the
-// previous order, then scanned) and the whole search the engine runs (strips, the pair
-// convention, candidates within v-dependent reach and perceived pairs within s). Positions
+// The neighbour structures, per step: the arena's pair finder (geometry/pair_finder.hpp,
+// rebuilt and scanned; the engine's fallback for small worlds), the sorted strips (re-sorted
+// from the previous order, then scanned) and the whole search the engine runs (strips,
+// candidates within v-dependent reach and perceived pairs within s). Positions
 // alternate between two states one step apart, so each update sees one step's movement.
 //
 //   build/bench/bench_neighbours [--benchmark_filter=Strips]
@@ -10,7 +10,7 @@
 #include "bench_inputs.hpp"
 #include "engine/kinematic/neighbour_search.hpp"
 #include "engine/kinematic/sorted_strips.hpp"
-#include "engine/kinematic/uniform_grid.hpp"
+#include "geometry/pair_finder.hpp"
 
 namespace swarmagg::bench {
 namespace {
@@ -24,7 +24,7 @@ struct GhostPositions {
   ArenaGeometry arena;
   std::vector<Vec2> now, next;
 
-  explicit GhostPositions(int n) : world(n, "collision", 0), arena(world.spec.arena) {
+  explicit GhostPositions(int n) : world(n, "collision", 0), arena(world.spec.arena.geometry()) {
     const auto p = world.replicate->engine().positions();
     now.assign(p.begin(), p.end());
     next = moved_one_step(world);
@@ -34,30 +34,33 @@ struct GhostPositions {
   }
 };
 
-void BM_UniformGridRebuild(benchmark::State& state) {
+void BM_PairFinderRebuild(benchmark::State& state) {
   const GhostPositions input(static_cast<int>(state.range(0)));
-  UniformGrid grid;
+  PairFinder finder;
   std::int64_t k = 0;
-  for (auto _ : state) grid.rebuild(input.arena, kPairReach, input.at(k++));
+  for (auto _ : state) {
+    finder.reset(input.arena, kPairReach, input.now.size());
+    for (const Vec2& p : input.at(k++)) finder.add(p);
+  }
   count_items(state, input.now.size());
 }
-BENCHMARK(BM_UniformGridRebuild)->Apply(agent_counts);
+BENCHMARK(BM_PairFinderRebuild)->Apply(agent_counts);
 
-void BM_UniformGridPairs(benchmark::State& state) {
+void BM_PairFinderPairs(benchmark::State& state) {
   const GhostPositions input(static_cast<int>(state.range(0)));
-  UniformGrid grid;
-  grid.rebuild(input.arena, kPairReach, input.now);
+  PairFinder finder;
+  finder.reset(input.arena, kPairReach, input.now.size());
+  for (const Vec2& p : input.now) finder.add(p);
   std::size_t pairs = 0;
   for (auto _ : state) {
     pairs = 0;
-    grid.for_each_close_pair(kPairReach,
-                             [&](std::uint32_t, std::uint32_t, Vec2, double) { ++pairs; });
+    finder.for_each_pair([&](std::uint32_t, std::uint32_t, Vec2) { ++pairs; });
     benchmark::DoNotOptimize(pairs);
   }
   state.counters["pairs"] = static_cast<double>(pairs);
   count_items(state, input.now.size());
 }
-BENCHMARK(BM_UniformGridPairs)->Apply(agent_counts);
+BENCHMARK(BM_PairFinderPairs)->Apply(agent_counts);
 
 void BM_SortedStripsUpdate(benchmark::State& state) {
   const GhostPositions input(static_cast<int>(state.range(0)));

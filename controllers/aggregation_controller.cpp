@@ -41,7 +41,7 @@ void AggregationController::update_leaving(std::uint32_t agent, const Controller
                                            SwarmState& swarm, const CounterRng& rng) {
   swarm.leave_time_left[agent] -= rules_.dt;
   if (swarm.leave_time_left[agent] > 1e-9) {
-    swarm.heading[agent] = escape_direction(agent, input, swarm.heading[agent]);
+    if (const auto away = escape_direction(agent, input)) swarm.heading[agent] = *away;
     return;
   }
   swarm.state[agent] = AgentState::Go;
@@ -74,7 +74,11 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   swarm.state[agent] = AgentState::Leave;
   swarm.partner[agent] = kNoPartner;
   swarm.leave_time_left[agent] = rules_.leave_timeout;
-  swarm.heading[agent] = escape_direction(agent, input, swarm.heading[agent]);
+  if (const auto away = escape_direction(agent, input)) {
+    swarm.heading[agent] = *away;
+  } else if (rules_.compaction.enabled) {
+    swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
+  }
 }
 
 // Members of one aggregate leaving in the same step are counted one after another: an
@@ -99,6 +103,7 @@ void AggregationController::join_waiting(const ControllerInput& input, SwarmStat
       swarm.state[i] = AgentState::Wait;
       settled_[i] = 1;
       ++events.growths;
+      count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
       break;
     }
   }
@@ -134,6 +139,7 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
       settled_[agent] = 1;
       swarm.state[agent] = AgentState::Wait;
       ++events.growths;
+      count_growth_by_size(input.growths_by_size, 2);
     }
   }
 }
@@ -165,9 +171,41 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
   }
 }
 
-Vec2 AggregationController::escape_direction(std::uint32_t agent, const ControllerInput& input,
-                                             Vec2 fallback) const {
-  return heading_away(input.neighbours.of(agent), rules_.detection_radius, fallback);
+// Away from the agents it perceives. Deep in a packed aggregate (compaction) the agent is
+// enclosed: no direction is returned, and the agent keeps its heading, which at the start of
+// the episode is drawn uniformly at random (SPEC 3). Nothing here asks where the agent
+// stands: the bodies around it stop it or let it through.
+std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
+                                                            const ControllerInput& input) const {
+  return heading_away(input.neighbours.of(agent), rules_.detection_radius,
+                      enclosed_fraction(rules_.compaction));
+}
+
+// SPEC 3's spring force from the waiting members of the agent's aggregate it perceives
+// (under join: false its partner only).
+Vec2 AggregationController::compaction_velocity(std::uint32_t agent, const ControllerInput& input,
+                                                const SwarmState& swarm) const {
+  const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
+  const std::int32_t own = aggregate[agent];
+  const std::int32_t partner = swarm.partner[agent];
+  const AgentState* previous = previous_.data();
+  const bool join = rules_.join;
+  return swarmagg::compaction_velocity(rules_.compaction, input.neighbours.of(agent),
+                                       rules_.detection_radius, rules_.speed, [=](AgentId id) {
+                                         const bool member =
+                                             join ? own >= 0 && aggregate[id] == own
+                                                  : static_cast<std::int32_t>(id) == partner;
+                                         return member && previous[id] == AgentState::Wait;
+                                       });
+}
+
+// Overwrites the standing command of each agent that waited and goes on waiting.
+void AggregationController::compact(const ControllerInput& input, const SwarmState& swarm,
+                                    std::span<MotionCommand> commands) const {
+  for (const std::uint32_t i : waiters_) {
+    if (swarm.state[i] != AgentState::Wait) continue;
+    commands[i].velocity = compaction_velocity(i, input, swarm);
+  }
 }
 
 // The command of each state, looked up rather than branched on: states of neighbouring
@@ -183,12 +221,19 @@ void AggregationController::write_commands(const SwarmState& swarm,
   };
   const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
   const SignalMask search_block = rules_.join ? kWaiting : 0;
+  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
+  constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
+  // Moving waiting bodies (compaction) respect every body that is solid to them: they must
+  // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
+  // bodies it blocks, so both sides of a solid pair need the bit).
+  const SignalMask wait_block =
+      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
-  // other, so a body engine cannot shove one through another and loosen the aggregate
-  // (kinematic waiting agents never move anyway).
+  // other, so neither compaction nor a body engine's shoving can push one through another.
+  // Waiting agents stand here; compact() gives those that close up their velocity.
   const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
-                                                {0, 0, kWaiting, 0},
+                                                {0, 0, wait_block, 0},
                                                 {kMoves, 0, kWaiting, kWaiting},
                                                 {kMoves, search_halt, search_block, 0}};
   static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
@@ -269,6 +314,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);
+  if (rules_.compaction.enabled) compact(input, swarm, commands);
 }
 
 }  // namespace swarmagg

@@ -6,8 +6,11 @@
 //  - searching agents (GO, APPROACH) within s of a waiting agent join it (if allowed); the
 //    rest pair up with the nearest other searching agent (greedy by distance, so pairs are
 //    mutual); with joining allowed, a searcher whose neighbour paired joins that pair;
-//  - Soysal's searchers head for the nearest non-leaving agent within s_a (APPROACH).
+//  - Soysal's searchers head for the nearest non-leaving agent within s_a (APPROACH);
+//  - with compaction, agents that go on waiting move under the spring force of the waiting
+//    members of their aggregate they perceive (SPEC 3), solid to waiting and leaving bodies.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "controllers/aggregation_rules.hpp"
@@ -50,8 +53,12 @@ class AggregationController final : public Controller {
   void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);
-  Vec2 escape_direction(std::uint32_t agent, const ControllerInput& input, Vec2 fallback) const;
+  std::optional<Vec2> escape_direction(std::uint32_t agent, const ControllerInput& input) const;
+  Vec2 compaction_velocity(std::uint32_t agent, const ControllerInput& input,
+                           const SwarmState& swarm) const;
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
+  void compact(const ControllerInput& input, const SwarmState& swarm,
+               std::span<MotionCommand> commands) const;
   void list_by_state(std::size_t n);
   void list_unsettled();
 

@@ -14,6 +14,7 @@ AggregationRules common_rules(const WorldSpec& spec) {
   rules.speed = spec.robots.speed;
   rules.dt = spec.engine.dt;
   rules.detection_radius = spec.robots.detection_radius;
+  rules.compaction = compaction_rule(spec);
   return rules;
 }
 
@@ -43,6 +44,9 @@ AggregationRules collision_paper_rules(const WorldSpec& spec) {
   rules.leave = true;
   rules.leave_rule = {LeaveLaw::Constant, 1.0, LeaveSize::Aggregate};
   rules.tumble = spec.controller.tumble;
+  // Its pairs wait for a single step before leaving, and it checks kinetic theory on moving
+  // agents, not aggregates: compaction would only nudge each pair once.
+  rules.compaction.enabled = false;
   return rules;
 }
 

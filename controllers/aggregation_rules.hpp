@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "config/world_spec.hpp"
+#include "controllers/compaction.hpp"
 
 namespace swarmagg {
 
@@ -24,6 +25,7 @@ struct AggregationRules {
   double detection_radius = 4.0;
   std::optional<double> approach_radius;  // Soysal's APPROACH state
   double tumble = 0.0;                    // heading redraw probability per step while GO
+  CompactionRule compaction;
 };
 
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives

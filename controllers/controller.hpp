@@ -5,6 +5,7 @@
 // an engine.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "config/world_spec.hpp"
@@ -29,14 +30,18 @@ class Controller {
 std::unique_ptr<Controller> make_controller(const WorldSpec& spec);
 
 // A uniformly random unit heading for `agent` at `step`.
-inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32_t agent) {
+inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32_t agent,
+                           Draw purpose = Draw::Heading) {
   constexpr double kTwoPi = 6.283185307179586;
-  return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, Draw::Heading));
+  return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, purpose));
 }
 
 // The unit vector away from the agents within `radius` among `neighbours` (nearest first):
-// opposite the sum of the offsets to them, or `fallback` when they cancel out.
-Vec2 heading_away(std::span<const Neighbour> neighbours, double radius, Vec2 fallback);
+// opposite the sum of the offsets to them. None when they cancel out: when the sum is zero,
+// or shorter than `enclosed_fraction` of the summed distances (an agent deep in a packed
+// aggregate, whose sum points nowhere in particular; controllers/compaction.hpp).
+std::optional<Vec2> heading_away(std::span<const Neighbour> neighbours, double radius,
+                                 double enclosed_fraction);
 
 // Mirrors headings the walls reflected during the last step.
 void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm);

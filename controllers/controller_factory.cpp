@@ -10,14 +10,18 @@ void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm)
   }
 }
 
-Vec2 heading_away(std::span<const Neighbour> neighbours, double radius, Vec2 fallback) {
+std::optional<Vec2> heading_away(std::span<const Neighbour> neighbours, double radius,
+                                 double enclosed_fraction) {
   Vec2 towards;
+  double lengths = 0.0;
   for (const Neighbour& nb : neighbours) {
     if (nb.distance > radius) break;
     towards += nb.offset;
+    lengths += nb.distance;
   }
   const double length = norm(towards);
-  return length > 1e-12 ? towards * (-1.0 / length) : fallback;
+  if (length > 1e-12 && length > enclosed_fraction * lengths) return towards * (-1.0 / length);
+  return std::nullopt;
 }
 
 }  // namespace swarmagg

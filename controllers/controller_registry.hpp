@@ -17,6 +17,10 @@ struct ControllerRegistration {
   ControllerCatalogEntry world;
   std::unique_ptr<Controller> (*make)(const WorldSpec&) = nullptr;
   ControllerRules (*rules)(const WorldSpec&) = nullptr;
+  // The per-step leave probability of a member of an aggregate of `size` agents that
+  // perceives the other members (compare's escape-rate curves); nullptr when leaving does
+  // not follow from the aggregate's size.
+  double (*leave_probability_at_size)(const WorldSpec&, int size) = nullptr;
 };
 
 const std::vector<ControllerRegistration>& controller_registrations();

@@ -18,6 +18,7 @@ ControllerRules rules(const WorldSpec& spec) {
   r.leaves = spec.controller.leave;
   r.leaving_happens = spec.controller.leave && spec.controller.p_leave > 0.0;
   r.partners_only = !spec.controller.join;
+  r.compacts = bayindir_rules(spec).compaction.enabled;
   r.model = ModelFamily::Bayindir;
   return r;
 }
@@ -31,6 +32,9 @@ ControllerRegistration bayindir_registration() {
     return std::make_unique<AggregationController>(bayindir_rules(spec));
   };
   r.rules = rules;
+  r.leave_probability_at_size = [](const WorldSpec& spec, int size) {
+    return leave_probability(bayindir_rules(spec).leave_rule, size, size - 1);
+  };
   return r;
 }
 

@@ -31,8 +31,8 @@ void CockroachController::leave(std::uint32_t agent, const ControllerInput& inpu
                                 SwarmState& swarm) {
   swarm.state[agent] = AgentState::Leave;
   swarm.leave_time_left[agent] = parameters_.leave_timeout;
-  swarm.heading[agent] =
-      heading_away(input.neighbours.of(agent), parameters_.detection_radius, swarm.heading[agent]);
+  if (const auto away = heading_away(input.neighbours.of(agent), parameters_.detection_radius, 0.0))
+    swarm.heading[agent] = *away;
 }
 
 // Members of one aggregate leaving in the same step are counted one after another, as in
@@ -95,8 +95,9 @@ void CockroachController::decide(const ControllerInput& input, SwarmState& swarm
       case AgentState::Leave:
         swarm.leave_time_left[i] -= parameters_.dt;
         if (swarm.leave_time_left[i] > 1e-9) {
-          swarm.heading[i] =
-              heading_away(input.neighbours.of(i), parameters_.detection_radius, swarm.heading[i]);
+          if (const auto away =
+                  heading_away(input.neighbours.of(i), parameters_.detection_radius, 0.0))
+            swarm.heading[i] = *away;
         } else {
           swarm.state[i] = AgentState::Go;
           swarm.heading[i] = random_heading(rng, input.step, i);
@@ -128,8 +129,9 @@ void CockroachController::decide(const ControllerInput& input, SwarmState& swarm
           ++events.growths;
         } else {
           // Walks on: away from the waiting agents it met, so it does not push into them.
-          swarm.heading[i] =
-              heading_away(input.neighbours.of(i), parameters_.detection_radius, swarm.heading[i]);
+          if (const auto away =
+                  heading_away(input.neighbours.of(i), parameters_.detection_radius, 0.0))
+            swarm.heading[i] = *away;
         }
         break;
       }

@@ -33,6 +33,7 @@ ControllerRules rules(const WorldSpec& spec) {
   r.leaves = true;
   r.leaving_happens = true;
   r.partners_only = true;
+  r.compacts = collision_paper_rules(spec).compaction.enabled;
   return r;
 }
 

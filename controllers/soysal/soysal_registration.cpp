@@ -28,6 +28,7 @@ ControllerRules rules(const WorldSpec& spec) {
   r.leaves = spec.controller.leave;
   r.leaving_happens = spec.controller.leave && spec.controller.p0 > 0.0;
   r.partners_only = !spec.controller.join;
+  r.compacts = soysal_rules(spec).compaction.enabled;
   r.records_partitions = true;
   r.model = ModelFamily::Soysal;
   return r;
@@ -42,6 +43,9 @@ ControllerRegistration soysal_registration() {
     return std::make_unique<AggregationController>(soysal_rules(spec));
   };
   r.rules = rules;
+  r.leave_probability_at_size = [](const WorldSpec& spec, int size) {
+    return leave_probability(soysal_rules(spec).leave_rule, size, size - 1);
+  };
   return r;
 }
 

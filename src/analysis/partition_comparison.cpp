@@ -85,7 +85,10 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
           model.number(row, value);
     }
   }
-  for (const std::string& v : partition_variants()) {
+  std::vector<std::string> variants = partition_variants();
+  // A run that measured its rates (run --rates, reproduce) also has the measured variant.
+  if (transient.contains(kMeasuredVariant)) variants.push_back(kMeasuredVariant);
+  for (const std::string& v : variants) {
     comparison.models.push_back(run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);
     comparison.errors.push_back(

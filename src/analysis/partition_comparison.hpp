@@ -19,8 +19,9 @@ using Distribution = std::map<std::string, double>;  // partition ("3+1+1") -> p
 const std::vector<std::string>& partition_variants();  // original, peripheral
 
 struct PartitionComparison {
-  Distribution simulation;           // mean time fraction across replicates
-  std::vector<Distribution> models;  // run-averaged, in partition_variants() order
+  Distribution simulation;  // mean time fraction across replicates
+  // run-averaged, in partition_variants() order, then kMeasuredVariant when model.csv has it
+  std::vector<Distribution> models;
   std::vector<Distribution> stationary;
   std::vector<VariantError> errors;  // total-variation distance per variant
 };

@@ -5,6 +5,10 @@
 
 namespace swarmagg {
 
+// The model variant fed with a run's measured terms (models/measured_rates.hpp); judged
+// beside the paper's variants, never counted as one of them.
+inline constexpr const char* kMeasuredVariant = "measured";
+
 struct VariantError {
   std::string variant;
   double error = 0.0;

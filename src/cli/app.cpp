@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "run/interrupt.hpp"
+#include "swarmagg_version.hpp"
 
 namespace swarmagg::cli {
 
@@ -13,7 +14,9 @@ int main(int argc, char** argv) {
   Action action;
   // One line per subcommand (keep this list in the order of `swarmagg --help`).
   add_run_command(app, action);
+  add_render_command(app, action);
   add_model_command(app, action);
+  add_rates_command(app, action);
   add_sweep_command(app, action);
   add_merge_command(app, action);
   add_plot_command(app, action);

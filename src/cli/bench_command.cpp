@@ -3,11 +3,11 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "bench/kinematic_bench.hpp"
-#include "bench/machine_info.hpp"
-#include "bench/render_timing.hpp"
+#include "bench/lib/box2d_bench.hpp"
+#include "bench/lib/kinematic_bench.hpp"
+#include "bench/lib/machine_info.hpp"
+#include "bench/lib/render_timing.hpp"
 #include "cli/commands.hpp"
-#include "engine/box2d/box2d_bench.hpp"
 
 namespace swarmagg::cli {
 namespace {

@@ -10,7 +10,9 @@ namespace swarmagg::cli {
 using Action = std::function<int()>;
 
 void add_run_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
 void add_model_command(CLI::App& app, Action& action);
+void add_rates_command(CLI::App& app, Action& action);
 void add_validate_command(CLI::App& app, Action& action);
 void add_bench_command(CLI::App& app, Action& action);
 void add_sweep_command(CLI::App& app, Action& action);

@@ -1,6 +1,7 @@
 #include "cli/frame_output.hpp"
 
 #include "render/frame_recorder.hpp"
+#include "render/render_size.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg::cli {
@@ -28,6 +29,12 @@ std::filesystem::path frames_folder(const WorldSpec& spec, const std::filesystem
   if (!spec.render.dir.empty()) return spec.render.dir;
   if (out_given) return out / "frames";
   return std::filesystem::path("renders") / spec.name;
+}
+
+std::vector<WorldOverride> render_size_overrides(std::string_view size, const std::string& origin) {
+  const RenderSize parsed = parse_render_size(size);
+  return {typed_override("render.width", parsed.width, origin),
+          typed_override("render.height", parsed.height, origin)};
 }
 
 ObserverFactory frame_observers(const WorldSpec& spec, const std::filesystem::path& folder) {

@@ -2,10 +2,13 @@
 // written beside a run of the same world so that the two plot together.
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
+#include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "rates/rates_csv.hpp"
 #include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
 
@@ -15,6 +18,7 @@ namespace {
 struct ModelCommandOptions {
   WorldOptions world;
   std::string out;
+  std::string rates;
   bool quiet = false;
 };
 
@@ -23,11 +27,14 @@ int model_command(const ModelCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<VariantPrediction> predictions = predict(spec);
+  std::optional<MeasuredTerms> measured;
+  if (!options.rates.empty()) measured = measured_terms(read_rates_csv(options.rates));
+  const std::vector<VariantPrediction> predictions = predict(spec, measured ? &*measured : nullptr);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   write_model_outputs(spec, predictions, out);
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
+  if (measured) std::cerr << "note: " << measured_variant_note(spec, *measured) << "\n";
   for (const VariantPrediction& prediction : predictions) {
     std::cout << prediction_summary(prediction) << "\n";
   }
@@ -46,6 +53,9 @@ void add_model_command(CLI::App& app, Action& action) {
   command->add_option(
       "--out", options->out,
       "Output folder for model.csv and model-timeseries/ (default runs/<world name>)");
+  command->add_option("--rates", options->rates,
+                      "Measured terms (rates.csv of `swarmagg rates` or `run --rates`): adds the "
+                      "`measured` variants and the measured initial state");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->callback([options, &action] { action = [options] { return model_command(*options); }; });
 }

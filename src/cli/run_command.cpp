@@ -5,14 +5,20 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
+#include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
-#include "render/render_size.hpp"
+#include "rates/rate_outputs.hpp"
+#include "rates/rates_text.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
+#include "run/rate_collector.hpp"
 #include "run/run_folder.hpp"
+#include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
 
 namespace swarmagg::cli {
@@ -24,28 +30,34 @@ struct RunCommandOptions {
   bool quiet = false;
   bool check = false;
   bool no_model = false;
+  bool rates = false;
   bool no_plots = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
   std::optional<int> render_replicate;
+  std::optional<int> trajectories;
   std::string video;
   double fps = 25.0;
 };
 
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
+  auto& typed = world.typed_overrides;
   if (options.render_every)
-    world.overrides.push_back("render.every=" + std::to_string(*options.render_every));
+    typed.push_back(typed_override("render.every", *options.render_every, "--render-every"));
   if (options.render_size) {
-    const RenderSize size = parse_render_size(*options.render_size);
-    world.overrides.push_back("render.width=" + std::to_string(size.width));
-    world.overrides.push_back("render.height=" + std::to_string(size.height));
+    for (WorldOverride& o : render_size_overrides(*options.render_size, "--render-size"))
+      typed.push_back(std::move(o));
   }
-  if (options.render_dir) world.overrides.push_back("render.dir=\"" + *options.render_dir + "\"");
+  if (options.render_dir)
+    typed.push_back(typed_override("render.dir", *options.render_dir, "--render-dir"));
   if (options.render_replicate) {
-    world.overrides.push_back("render.replicate=" + std::to_string(*options.render_replicate));
+    typed.push_back(
+        typed_override("render.replicate", *options.render_replicate, "--render-replicate"));
   }
+  if (options.trajectories)
+    typed.push_back(typed_override("run.trajectories", *options.trajectories, "--trajectories"));
 }
 
 void print_summary(const WorldSpec& spec, const RunResult& result,
@@ -62,9 +74,10 @@ void print_summary(const WorldSpec& spec, const RunResult& result,
 
 // A world the models cannot describe (say, a partition model of too many agents) still
 // keeps its simulation outputs: the run only notes why model.csv is missing.
-void write_predictions(const WorldSpec& spec, const std::filesystem::path& out) {
+void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
+                       const MeasuredTerms* measured) {
   try {
-    write_model_outputs(spec, predict(spec), out);
+    write_model_outputs(spec, predict(spec, measured), out);
   } catch (const InputError& e) {
     std::cerr << "note: no model.csv: " << e.what() << "\n";
   }
@@ -101,14 +114,47 @@ int run_command(const RunCommandOptions& options) {
   RunOptions run_options;
   run_options.progress = !options.quiet;
   run_options.check = options.check;
-  run_options.observers = frame_observers(spec, frames);
+  const auto trajectories = trajectory_writer(spec, out);
+  run_options.observers =
+      both_observers(frame_observers(spec, frames),
+                     trajectory_observers(trajectories.get(), spec.run.trajectories));
+  // The measured initial state comes from the rates too, so that key collects them.
+  const bool measure = options.rates || spec.model.initial_state == InitialState::Measured;
+  RateCollector collector(spec);
+  if (measure) {
+    run_options.observers = both_observers(
+        run_options.observers, [&collector](int index) { return collector.observer(index); });
+  }
   const RunResult result = run_world(spec, run_options);
+  // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
+  // that stored trajectories would not belong to this one.
+  if (trajectories) {
+    trajectories->commit();
+  } else {
+    std::filesystem::remove(out / trajectory_layout::kFileName);
+  }
   write_run_folder(spec, result, out);
-  if (!options.no_model) write_predictions(spec, out);
+  std::optional<MeasuredTerms> measured;
+  std::vector<RateRow> rows;
+  if (measure) {
+    const RateTally tally = collector.total();
+    rows = options.rates ? write_rate_outputs(spec, tally, out) : measured_rate_rows(spec, tally);
+    measured = measured_terms(rows);
+  }
+  if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);
+  if (!options.quiet && options.rates) {
+    for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
+    if (controller_rules(spec).model != ModelFamily::Encounters)
+      std::cout << measured_variant_note(spec, *measured) << "\n";
+  }
   if (!options.quiet) print_summary(spec, result, out);
   if (!options.no_plots) draw_plots(out, options.quiet);
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
+  if (trajectories && !options.quiet) {
+    std::cout << "trajectories every " << spec.run.trajectories << " steps in "
+              << trajectories->target().string() << "\n";
+  }
   if (!options.video.empty()) {
     assemble_video(frames, options.video, options.fps);
     if (!options.quiet) std::cout << "video " << options.video << "\n";
@@ -130,12 +176,18 @@ void add_run_command(CLI::App& app, Action& action) {
                       "Frame folder (default renders/<world name>, or <out>/frames with --out)");
   command->add_option("--render-replicate", options->render_replicate,
                       "Which replicate to render (default 0)");
+  command->add_option("--trajectories", options->trajectories,
+                      "Store every agent's state every K steps in <out>/trajectories.h5 "
+                      "(run.trajectories; 0 = off)");
   command->add_option("--video", options->video,
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");
+  command->add_flag("--rates", options->rates,
+                    "Also measure every model term (rates.csv, rates.json, plots) and add the "
+                    "`measured` model variants to model.csv");
   command->add_flag("--no-plots", options->no_plots,
                     "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
   command->add_flag("--check", options->check,

@@ -16,12 +16,13 @@ void WorldOptions::add_to(CLI::App& command, bool run_options) {
 }
 
 WorldSpec WorldOptions::load() const {
-  std::vector<std::string> all = overrides;
-  if (engine) all.push_back("engine.type=" + *engine);
-  if (replicates) all.push_back("run.replicates=" + std::to_string(*replicates));
-  if (seed) all.push_back("run.seed=" + std::to_string(*seed));
-  if (threads) all.push_back("run.threads=" + std::to_string(*threads));
-  return load_world(path, all);
+  std::vector<WorldOverride> all = parse_overrides(overrides);
+  if (engine) all.push_back(typed_override("engine.type", *engine, "--engine"));
+  if (replicates) all.push_back(typed_override("run.replicates", *replicates, "--replicates"));
+  if (seed) all.push_back(typed_override("run.seed", *seed, "--seed"));
+  if (threads) all.push_back(typed_override("run.threads", *threads, "--threads"));
+  all.insert(all.end(), typed_overrides.begin(), typed_overrides.end());
+  return load_world_with(path, all);
 }
 
 }  // namespace swarmagg::cli

@@ -6,13 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "config/world_override.hpp"
 #include "config/world_spec.hpp"
 
 namespace swarmagg::cli {
 
 struct WorldOptions {
   std::string path;
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides;          // --set key.path=value
+  std::vector<WorldOverride> typed_overrides;  // from typed options, applied after --set
   std::optional<std::string> engine;
   std::optional<int> replicates;
   std::optional<std::uint64_t> seed;

@@ -1,16 +1,11 @@
 #include "compare/compare_summary.hpp"
 
-#include <cstdio>
 #include <sstream>
+
+#include "output/format_text.hpp"
 
 namespace swarmagg {
 namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-  return buffer;
-}
 
 double fraction(std::int64_t part, std::int64_t whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
@@ -27,8 +22,9 @@ void leave_line(std::ostringstream& out, const ArmSummary& arm) {
   const RimSplit& tried = arm.leave.attempts;
   const RimSplit& out_of = arm.leave.escapes;
   out << "  " << arm.label << ": rim " << out_of.rim << "/" << tried.rim << " got out ("
-      << format("%.3f", fraction(out_of.rim, tried.rim)) << "), inside " << out_of.inside << "/"
-      << tried.inside << " (" << format("%.3f", fraction(out_of.inside, tried.inside)) << ")\n";
+      << format_text("%.3f", fraction(out_of.rim, tried.rim)) << "), inside " << out_of.inside
+      << "/" << tried.inside << " (" << format_text("%.3f", fraction(out_of.inside, tried.inside))
+      << ")\n";
 }
 
 nlohmann::json leave_json(const LeaveTally& l) {
@@ -64,30 +60,32 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
   out << world_name << ": " << c.a.label << " vs " << c.b.label << ", " << c.a.final_noa.size()
       << " replicates each, same seeds\n";
   out << "mean final NOA: " << c.a.label
-      << format(" %.2f +- %.2f", c.a.noa.mean, c.a.noa.half_width) << ", " << c.b.label
-      << format(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
+      << format_text(" %.2f +- %.2f", c.a.noa.mean, c.a.noa.half_width) << ", " << c.b.label
+      << format_text(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
   out << "difference (" << c.b.label << " - " << c.a.label << ")"
-      << format(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
-      << format(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value) << "\n";
-  out << "KS final NOA:" << format(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
+      << format_text(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
+      << format_text(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value)
+      << "\n";
+  out << "KS final NOA:"
+      << format_text(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
       << verdict(c.ks_noa.p_value) << "\n";
   out << "KS final aggregate sizes (" << c.ks_sizes.n_a << " vs " << c.ks_sizes.n_b
       << " aggregates):"
-      << format(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
+      << format_text(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
       << verdict(c.ks_sizes.p_value) << "\n";
   out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
          "with ties)\n";
   out << "encounters per tu: " << c.a.label
-      << format(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
+      << format_text(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
       << c.b.label
-      << format(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
+      << format_text(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
   if (c.has_leaving) {
     out << "LEAVE attempts that got out (" << kRimRuleText << "):\n";
     leave_line(out, c.a);
     leave_line(out, c.b);
   }
   out << "verdict: " << (c.differs() ? "the two differ" : "no significant difference") << " at the "
-      << format("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
+      << format_text("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
   return out.str();
 }
 

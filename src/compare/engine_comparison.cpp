@@ -9,10 +9,10 @@
 namespace swarmagg {
 namespace {
 
-// Through the override path, so the engine switch is checked like `--set engine.type=...`.
+// Through the key table, so the engine switch is checked like `--set engine.type=...`.
 WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
   WorldSpec copy = spec;
-  apply_override(copy, "engine.type=" + engine);
+  apply_override(copy, typed_override("engine.type", engine, "compare"));
   return copy;
 }
 

@@ -154,6 +154,18 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   return {std::move(path), expected, read, write, {}, {}};
 }
 
+// A positive length whose default follows another key (written back resolved).
+WorldKey optional_length_key(std::string path, Access<std::optional<double>> access,
+                             std::function<double(const WorldSpec&)> resolved) {
+  auto read = [access](WorldSpec& w, const YAML::Node& node) {
+    const double v = read_real(node, kPositive.expected);
+    if (!(v > 0.0)) throw KeyValueError{kPositive.expected};
+    access(w) = v;
+  };
+  auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
+  return {std::move(path), kPositive.expected, read, write, {}, {}};
+}
+
 WorldKey name_key() {
   const std::string expected = "a name of letters, digits, '-', '_' or '.'";
   auto read = [expected](WorldSpec& w, const YAML::Node& node) {
@@ -278,6 +290,18 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(real_key(
       "controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; },
       kProbability));
+  keys.push_back(bool_key("controller.compaction.enabled",
+                          [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }));
+  keys.push_back(optional_length_key(
+      "controller.compaction.spacing",
+      [](WorldSpec& w) -> std::optional<double>& { return w.controller.compaction.spacing; },
+      [](const WorldSpec& w) { return w.compaction_spacing(); }));
+  keys.push_back(real_key(
+      "controller.compaction.gain",
+      [](WorldSpec& w) -> double& { return w.controller.compaction.gain; }, kPositive));
+  keys.push_back(real_key(
+      "controller.compaction.tolerance",
+      [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative));
   // Each registered controller's own keys follow the shared controller keys.
   for (const ControllerCatalogEntry& entry : controller_catalog()) {
     keys.insert(keys.end(), entry.keys.begin(), entry.keys.end());
@@ -311,6 +335,8 @@ std::vector<WorldKey> build_keys() {
       "run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
   keys.push_back(integer_key<int>(
       "run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
+  keys.push_back(integer_key<int>(
+      "run.trajectories", [](WorldSpec& w) -> int& { return w.run.trajectories; }, 0, kMaxInt));
   keys.push_back(enum_key<Kappa>(
       "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
       {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));
@@ -325,6 +351,11 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(integer_key<int>(
       "model.stochastic_replicates",
       [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
+  keys.push_back(enum_key<InitialState>(
+      "model.initial_state", [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },
+      {{"placement", InitialState::Placement},
+       {"all_searching", InitialState::AllSearching},
+       {"measured", InitialState::Measured}}));
   keys.push_back(integer_key<int>(
       "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
   keys.push_back(integer_key<int>(
@@ -399,8 +430,9 @@ const WorldKey* find_world_key(const std::string& path) {
 }
 
 const std::vector<std::string>& world_blocks() {
-  static const std::vector<std::string> blocks = {"arena",        "robots", "controller", "engine",
-                                                  "engine.box2d", "run",    "model",      "render"};
+  static const std::vector<std::string> blocks = {
+      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d",
+      "run",   "model",  "render"};
   return blocks;
 }
 

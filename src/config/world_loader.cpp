@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "config/did_you_mean.hpp"
 #include "config/world_keys.hpp"
 #include "core/errors.hpp"
+#include "geometry/pair_finder.hpp"
 
 namespace swarmagg {
 namespace {
@@ -201,62 +203,29 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
-// The minimum-image distance between two placed agents (both inside the arena).
-double placed_distance(const WorldSpec& spec, const PlacedAgent& a, const PlacedAgent& b) {
-  double dx = std::fabs(a.x - b.x);
-  double dy = std::fabs(a.y - b.y);
-  if (spec.arena.topology == Topology::Torus) {
-    dx = std::min(dx, spec.arena.width - dx);
-    dy = std::min(dy, spec.arena.height - dy);
-  }
-  return std::hypot(dx, dy);
-}
-
-// Bodies must not overlap at the start (SPEC 1), as random placement guarantees. Agents are
-// bucketed into cells at least 2r wide, so each is compared only with its 3x3 block of cells.
+// Bodies must not overlap at the start (SPEC 1), as random placement guarantees. The pair
+// named is the first in id order, whatever order the pair finder meets them in.
 void check_no_overlap(const WorldSpec& spec) {
   const auto& placed = spec.robots.placement;
   const double contact = 2.0 * spec.robots.radius;
-  const bool torus = spec.arena.topology == Topology::Torus;
-  // Capped: cells wider than 2r cost comparisons, never a missed pair.
-  const auto cells_along = [contact](double length) {
-    return static_cast<std::int64_t>(std::clamp(std::floor(length / contact), 1.0, 1048576.0));
+  PairFinder bodies;
+  bodies.reset(spec.arena.geometry(), contact, placed.size());
+  for (const PlacedAgent& a : placed) bodies.add({a.x, a.y});
+  struct Overlap {
+    std::uint32_t i, j;
+    double distance;
   };
-  const std::int64_t nx = cells_along(spec.arena.width);
-  const std::int64_t ny = cells_along(spec.arena.height);
-  const auto cell = [&](double v, double length, std::int64_t n) {
-    return std::min(n - 1, static_cast<std::int64_t>(v / length * static_cast<double>(n)));
-  };
-  std::vector<std::pair<std::int64_t, std::size_t>> keyed;  // (cell, agent), sorted by cell
-  for (std::size_t i = 0; i < placed.size(); ++i) {
-    keyed.push_back(
-        {cell(placed[i].y, spec.arena.height, ny) * nx + cell(placed[i].x, spec.arena.width, nx),
-         i});
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (const auto& [key, i] : keyed) {
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        std::int64_t cx = key % nx + dx;
-        std::int64_t cy = key / nx + dy;
-        if (!torus && (cx < 0 || cx >= nx || cy < 0 || cy >= ny)) continue;
-        cx = (cx + nx) % nx;
-        cy = (cy + ny) % ny;
-        const auto first = std::lower_bound(keyed.begin(), keyed.end(),
-                                            std::pair<std::int64_t, std::size_t>{cy * nx + cx, 0});
-        for (auto it = first; it != keyed.end() && it->first == cy * nx + cx; ++it) {
-          const std::size_t j = it->second;
-          if (j <= i) continue;  // each pair once
-          const double d = placed_distance(spec, placed[i], placed[j]);
-          if (d >= contact) continue;
-          throw InputError(spec.source + ": robots.placement: agents " + std::to_string(i) +
-                           " and " + std::to_string(j) + " overlap: their centres are " +
-                           format_number(d) +
-                           " apart, bodies need 2 robots.radius = " + format_number(contact));
-        }
-      }
-    }
-  }
+  std::optional<Overlap> first;
+  bodies.for_each_pair([&](std::uint32_t i, std::uint32_t j, Vec2 d) {
+    const double distance = norm(d);
+    if (distance >= contact) return;  // touching is allowed
+    if (!first || std::pair(i, j) < std::pair(first->i, first->j)) first = Overlap{i, j, distance};
+  });
+  if (!first) return;
+  throw InputError(spec.source + ": robots.placement: agents " + std::to_string(first->i) +
+                   " and " + std::to_string(first->j) + " overlap: their centres are " +
+                   format_number(first->distance) +
+                   " apart, bodies need 2 robots.radius = " + format_number(contact));
 }
 
 void check_placement(const WorldSpec& spec, bool count_given) {
@@ -283,7 +252,7 @@ void check_placement(const WorldSpec& spec, bool count_given) {
 }
 
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
-                        const std::vector<std::string>& overrides) {
+                        const std::vector<WorldOverride>& overrides) {
   if (!document.IsDefined() || document.IsNull()) {
     throw InputError(source +
                      ": the world file is empty; expected a mapping of world keys "
@@ -298,9 +267,9 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
   DocumentReader reader(spec, source);
   reader.read_block(document, "");
   bool count_given = reader.seen().count("robots.count") > 0;
-  for (const std::string& assignment : overrides) {
-    count_given = count_given || assignment.rfind("robots.count=", 0) == 0;
-    apply_override(spec, assignment);
+  for (const WorldOverride& override : overrides) {
+    count_given = count_given || override.key == "robots.count";
+    apply_override(spec, override);
   }
   if (!count_given && !spec.robots.placement.empty()) {
     spec.robots.count = static_cast<int>(spec.robots.placement.size());
@@ -317,22 +286,10 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
 
 }  // namespace
 
-void apply_override(WorldSpec& spec, const std::string& assignment) {
-  const auto equals = assignment.find('=');
-  const std::string at = "--set " + assignment;
-  if (equals == std::string::npos || equals == 0) {
-    throw InputError(at + ": expected key.path=value, e.g. --set robots.count=80");
-  }
-  const std::string path = assignment.substr(0, equals);
-  const WorldKey* key = find_world_key(path);
-  if (key == nullptr) unknown_key("--set", path);
-  YAML::Node value;
-  try {
-    value = YAML::Load(assignment.substr(equals + 1));
-  } catch (const YAML::ParserException& e) {
-    throw InputError(at + ": the value is not valid YAML: " + e.msg);
-  }
-  apply_value(spec, *key, value, "--set");
+void apply_override(WorldSpec& spec, const WorldOverride& override) {
+  const WorldKey* key = find_world_key(override.key);
+  if (key == nullptr) unknown_key(override.origin, override.key);
+  apply_value(spec, *key, override.value, override.origin);
 }
 
 void check_world(const WorldSpec& spec) {
@@ -374,6 +331,15 @@ void check_world(const WorldSpec& spec) {
       impossible(spec, problem->key, problem->why);
     }
   }
+  // Compaction pulls only members an agent perceives: a spacing at or beyond s would pull
+  // every perceived member in and push none out, so the aggregate could never settle.
+  if (spec.controller.compaction.enabled && spec.compaction_spacing() >= s) {
+    impossible(spec, "controller.compaction.spacing",
+               "is " + format_number(spec.compaction_spacing()) +
+                   (spec.controller.compaction.spacing ? "" : " (2 robots.radius)") +
+                   " but must be below robots.detection_radius (" + format_number(s) +
+                   "); set it, or controller.compaction.enabled: false");
+  }
   // Compared before rounding: steps() cannot represent a count beyond 2^63.
   if (spec.run.duration / spec.engine.dt > 1e12) {
     impossible(spec, "run.duration", "needs more than 10^12 steps of engine.dt");
@@ -391,13 +357,22 @@ void check_world(const WorldSpec& spec) {
   }
 }
 
-WorldSpec load_world_text(const std::string& text, const std::string& source,
-                          const std::vector<std::string>& overrides) {
+WorldSpec load_world_text_with(const std::string& text, const std::string& source,
+                               const std::vector<WorldOverride>& overrides) {
   return load_document(parse_yaml(text, source), source, overrides);
 }
 
-WorldSpec load_world(const std::string& path, const std::vector<std::string>& overrides) {
-  return load_world_text(read_file(path), path, overrides);
+WorldSpec load_world_text(const std::string& text, const std::string& source,
+                          const std::vector<std::string>& assignments) {
+  return load_world_text_with(text, source, parse_overrides(assignments));
+}
+
+WorldSpec load_world_with(const std::string& path, const std::vector<WorldOverride>& overrides) {
+  return load_world_text_with(read_file(path), path, overrides);
+}
+
+WorldSpec load_world(const std::string& path, const std::vector<std::string>& assignments) {
+  return load_world_with(path, parse_overrides(assignments));
 }
 
 }  // namespace swarmagg

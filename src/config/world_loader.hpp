@@ -5,16 +5,21 @@
 #include <string>
 #include <vector>
 
+#include "config/world_override.hpp"
 #include "config/world_spec.hpp"
 
 namespace swarmagg {
 
-WorldSpec load_world(const std::string& path, const std::vector<std::string>& overrides = {});
+WorldSpec load_world_with(const std::string& path, const std::vector<WorldOverride>& overrides);
+// The same with `--set` assignments (`key.path=value`, the value read as YAML).
+WorldSpec load_world(const std::string& path, const std::vector<std::string>& assignments = {});
 // The same from YAML text; `source` names it in messages.
+WorldSpec load_world_text_with(const std::string& text, const std::string& source,
+                               const std::vector<WorldOverride>& overrides);
 WorldSpec load_world_text(const std::string& text, const std::string& source,
-                          const std::vector<std::string>& overrides = {});
-// Applies one `key.path=value` override to an already loaded world (then re-checks it).
-void apply_override(WorldSpec& spec, const std::string& assignment);
+                          const std::vector<std::string>& assignments = {});
+// Applies one override to an already loaded world; the caller re-checks it (check_world).
+void apply_override(WorldSpec& spec, const WorldOverride& override);
 // Cross-key checks (s >= 2r, agents fit, dt > 0, ...); throws InputError.
 void check_world(const WorldSpec& spec);
 

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "geometry/arena_geometry.hpp"
+
 namespace swarmagg {
 
-enum class Topology { Torus, Walls };
 enum class IsolatedWait { Resume, Stay };
 enum class LeaveLaw { Constant, Inverse, InverseSquare };
 enum class LeaveSize { Aggregate, Neighbours };
@@ -20,12 +22,17 @@ enum class EngineType { Kinematic, Box2D };
 enum class Kappa { Kinetic, Maxwell, Paper };
 enum class CreationVariant { Original, Collision };
 enum class LeavingVariant { Original, Peripheral };
+// Where the models start (SPEC 5.4): the state after the first decision, i.e. the pairs that
+// random placement formed at once (derived from the placement geometry, or measured by a
+// run), or all agents searching as the paper's models did.
+enum class InitialState { Placement, AllSearching, Measured };
 
 struct ArenaSpec {
   double width = 180.0;
   double height = 180.0;
   Topology topology = Topology::Torus;
   double area() const { return width * height; }
+  ArenaGeometry geometry() const { return {width, height, topology}; }
 };
 
 struct PlacedAgent {
@@ -44,6 +51,14 @@ struct RobotsSpec {
   bool random_placement() const { return placement.empty(); }
 };
 
+// SPEC 3 "Compaction": waiting agents close up their aggregate under a spring force.
+struct CompactionSpec {
+  bool enabled = true;
+  std::optional<double> spacing;  // u, centre to centre; unset: 2 robots.radius (touching)
+  double gain = 1.0;              // per tu: speed per unit of net spring force, capped at v
+  double tolerance = 0.05;        // u: a net force below it leaves the agent standing
+};
+
 struct ControllerSpec {
   std::string type = "bayindir";  // a registered controller (config/controller_catalog.hpp)
   double p_leave = 0.0;           // bayindir: per step
@@ -57,6 +72,7 @@ struct ControllerSpec {
   LeaveSize leave_size = LeaveSize::Aggregate;
   CollisionMode collision_mode = CollisionMode::Ghost;
   double tumble = 0.0;  // collision: heading redraw probability per step
+  CompactionSpec compaction;
   // The keys of controllers registered with their own keys (controller.<name> -> values), so a
   // new controller adds no field here. Absent: the key's default.
   std::map<std::string, std::vector<double>> parameters;
@@ -82,6 +98,7 @@ struct RunSpec {
   std::uint64_t seed = 1;
   int record_every = 10;  // steps between recorded rows
   int threads = 0;        // 0: as many as the machine has
+  int trajectories = 0;   // steps between rows of trajectories.h5; 0: no trajectory file
 };
 
 struct ModelSpec {
@@ -90,6 +107,7 @@ struct ModelSpec {
   LeavingVariant leaving = LeavingVariant::Peripheral;
   bool periphery_cap = true;
   int stochastic_replicates = 10;
+  InitialState initial_state = InitialState::Placement;
 };
 
 struct RenderSpec {
@@ -111,6 +129,10 @@ struct WorldSpec {
   ModelSpec model;
   RenderSpec render;
 
+  // The distance compaction closes waiting members up to (2r unless the world sets it).
+  double compaction_spacing() const {
+    return controller.compaction.spacing.value_or(2.0 * robots.radius);
+  }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }
   // The largest radius any sensor of this world's controller reads (the controller says).

@@ -28,6 +28,9 @@ struct ControllerRules {
   bool leaving_happens = false;
   // Agents aggregate at all (false: nothing but encounters is ever counted).
   bool aggregates = true;
+  // Waiting agents move to close up their aggregate (SPEC 3 "Compaction"); without it they
+  // stand still.
+  bool compacts = false;
   // Only partners (the two agents that formed a pair) are linked into aggregates.
   bool partners_only = false;
   // Partition occupancy is an output (partitions.csv).

@@ -1,6 +1,8 @@
 #pragma once
 // Cumulative aggregation events of one replicate (SPEC 4).
+#include <algorithm>
 #include <cstdint>
+#include <span>
 
 namespace swarmagg {
 
@@ -11,5 +13,13 @@ struct EventCounts {
   std::uint64_t shrinks = 0;       // an aggregate of three or more lost an agent
   std::uint64_t encounters = 0;    // first contacts within s of any pair
 };
+
+// Counts one growth of an aggregate of `joined_size` agents in `growths_by_size` ([m], the
+// last entry for larger m); nothing when it is empty (nobody reads them).
+inline void count_growth_by_size(std::span<std::uint64_t> growths_by_size, int joined_size) {
+  if (growths_by_size.empty()) return;
+  const auto last = static_cast<int>(growths_by_size.size()) - 1;
+  ++growths_by_size[static_cast<std::size_t>(std::clamp(joined_size, 0, last))];
+}
 
 }  // namespace swarmagg

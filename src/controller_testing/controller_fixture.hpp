@@ -36,7 +36,7 @@ struct ControllerFixture {
   }
 
   void perceive() {
-    const ArenaGeometry arena(spec.arena);
+    const ArenaGeometry arena = spec.arena.geometry();
     neighbours.reset(positions.size());
     for (std::uint32_t i = 0; i < positions.size(); ++i) {
       for (std::uint32_t j = 0; j < positions.size(); ++j) {

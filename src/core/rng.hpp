@@ -22,6 +22,7 @@ enum class Draw : std::uint32_t {
   Tumble = 3,
   Placement = 4,
   Model = 5,
+  EnclosedLeave = 6,  // the heading of a leaver with neighbours on all sides
 };
 
 class CounterRng {

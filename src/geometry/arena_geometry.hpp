@@ -1,19 +1,19 @@
 #pragma once
-// Distances and wrapping in the arena. On a torus every displacement is the minimum image
-// (the shortest of the periodic copies); with walls it is the plain difference.
+// Distances and wrapping in the arena: the one home of the torus's minimum image. On a torus
+// every displacement is the shortest of the periodic copies; with walls it is the plain
+// difference. Below config (whose ArenaSpec makes one), engines, observers and render.
 #include <cmath>
 
-#include "config/world_spec.hpp"
 #include "core/vec2.hpp"
 
 namespace swarmagg {
+
+enum class Topology { Torus, Walls };
 
 class ArenaGeometry {
  public:
   ArenaGeometry(double width, double height, Topology topology)
       : width_(width), height_(height), torus_(topology == Topology::Torus) {}
-  explicit ArenaGeometry(const ArenaSpec& arena)
-      : ArenaGeometry(arena.width, arena.height, arena.topology) {}
 
   double width() const { return width_; }
   double height() const { return height_; }

@@ -34,11 +34,19 @@ void advance_expected(const BayindirRates& rates, BayindirState& state) {
 
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
+                                               const std::vector<double>& start,
                                                BayindirState* last) {
   BayindirState state = BayindirState::all_searching(rates.agents);
   std::vector<ModelRow> rows;
   walk_grid(
-      grid, [&](std::int64_t) { advance_expected(rates, state); },
+      grid,
+      [&](std::int64_t step) {
+        if (step == 0 && !start.empty() && rates.forms_aggregates) {
+          state = BayindirState::after_first_decision(rates.agents, start);
+        } else {
+          advance_expected(rates, state);
+        }
+      },
       [&](std::int64_t step) {
         rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
       });

@@ -15,10 +15,13 @@ namespace swarmagg {
 
 void advance_expected(const BayindirRates& rates, BayindirState& state);
 
-// The state at each step of `grid` (increasing, from 0), starting from all searching; the
-// state at the last step also goes to `last` when given (its size distribution).
+// The state at each step of `grid` (increasing, from 0), starting from all searching. With
+// `start` (the aggregates after the first decision, models/initial_state.hpp) the first step
+// forms exactly those instead of the rates' creations. The state at the last step also goes
+// to `last` when given (its size distribution).
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
+                                               const std::vector<double>& start = {},
                                                BayindirState* last = nullptr);
 
 }  // namespace swarmagg

@@ -11,6 +11,20 @@ BayindirState BayindirState::all_searching(int agents) {
   return state;
 }
 
+BayindirState BayindirState::after_first_decision(int agents,
+                                                  const std::vector<double>& aggregates) {
+  BayindirState state = all_searching(agents);
+  for (int m = 2; m <= agents && m < static_cast<int>(aggregates.size()); ++m) {
+    const double count = aggregates[static_cast<std::size_t>(m)];
+    state.aggregates[static_cast<std::size_t>(m)] = count;
+    state.searching -= m * count;
+    state.totals.creations += count;
+    state.totals.encounters += count;
+    state.totals.growths += (m - 2) * count;
+  }
+  return state;
+}
+
 double BayindirState::noa() const {
   return std::accumulate(aggregates.begin(), aggregates.end(), 0.0);
 }

@@ -19,6 +19,9 @@ struct BayindirState {
   EventTotals totals;
 
   static BayindirState all_searching(int agents);
+  // The state after a first decision that formed `aggregates` ([m]) from all searching:
+  // each aggregate counted as a creation plus m - 2 growths, as the simulation counts them.
+  static BayindirState after_first_decision(int agents, const std::vector<double>& aggregates);
   int agents() const { return static_cast<int>(aggregates.size()) - 1; }
   double noa() const;
   double agents_accounted() const;  // y + sum m n_m, equal to N when conserved

@@ -59,10 +59,24 @@ void advance_stochastic(const BayindirRates& rates, BayindirState& state, Unifor
   state.totals.shrinks += static_cast<double>(shrinks);
 }
 
+BayindirState draw_first_decision(int agents, const std::vector<double>& start,
+                                  UniformStream& uniforms) {
+  std::vector<double> drawn(static_cast<std::size_t>(agents) + 1, 0.0);
+  std::int64_t free = agents;
+  for (int m = std::min<int>(agents, static_cast<int>(start.size()) - 1); m >= 2; --m) {
+    const std::int64_t count =
+        draw_with_mean(free / m, start[static_cast<std::size_t>(m)], uniforms);
+    drawn[static_cast<std::size_t>(m)] = static_cast<double>(count);
+    free -= m * count;
+  }
+  return BayindirState::after_first_decision(agents, drawn);
+}
+
 std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  const std::vector<std::int64_t>& grid,
                                                  std::uint64_t seed, int replicates,
-                                                 std::uint64_t stream) {
+                                                 std::uint64_t stream,
+                                                 const std::vector<double>& start) {
   std::vector<ModelRow> rows;
   for (int replicate = 0; replicate < replicates; ++replicate) {
     const CounterRng rng = CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
@@ -71,7 +85,11 @@ std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
         grid,
         [&](std::int64_t step) {
           UniformStream uniforms(rng, static_cast<std::uint64_t>(step), stream);
-          advance_stochastic(rates, state, uniforms);
+          if (step == 0 && !start.empty() && rates.forms_aggregates) {
+            state = draw_first_decision(rates.agents, start, uniforms);
+          } else {
+            advance_stochastic(rates, state, uniforms);
+          }
         },
         [&](std::int64_t step) {
           rows.push_back(to_model_row(state, rates.forms_aggregates, false, replicate, step));

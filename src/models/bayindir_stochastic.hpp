@@ -20,11 +20,19 @@ namespace swarmagg {
 
 void advance_stochastic(const BayindirRates& rates, BayindirState& state, UniformStream& uniforms);
 
+// The first decision of a stochastic replicate that starts from expected aggregates `start`
+// ([m]): whole counts, largest size first, n_m ~ Binomial(floor(free / m), start[m] / that),
+// so each count has the expected mean while agents last.
+BayindirState draw_first_decision(int agents, const std::vector<double>& start,
+                                  UniformStream& uniforms);
+
 // `replicates` independent runs from all searching; rows ordered by replicate, then step.
-// `stream` separates the draws of different variants of one world.
+// `stream` separates the draws of different variants of one world. With `start`, the first
+// step draws the aggregates of the first decision (draw_first_decision) instead of creations.
 std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  const std::vector<std::int64_t>& grid,
                                                  std::uint64_t seed, int replicates,
-                                                 std::uint64_t stream);
+                                                 std::uint64_t stream,
+                                                 const std::vector<double>& start = {});
 
 }  // namespace swarmagg

@@ -62,12 +62,19 @@ bool reached(const Eigen::VectorXd& distribution,
 Eigen::MatrixXd transient_distributions(const Generator& generator, int initial,
                                         const std::vector<std::int64_t>& steps,
                                         const std::optional<Eigen::VectorXd>& stationary) {
+  return transient_distributions(generator, Eigen::VectorXd::Unit(generator.rows(), initial), steps,
+                                 stationary);
+}
+
+Eigen::MatrixXd transient_distributions(const Generator& generator, const Eigen::VectorXd& initial,
+                                        const std::vector<std::int64_t>& steps,
+                                        const std::optional<Eigen::VectorXd>& stationary) {
   std::vector<std::size_t> order(steps.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return steps[a] < steps[b]; });
   const UniformizedChain chain(generator);
   Eigen::MatrixXd distributions(static_cast<Eigen::Index>(steps.size()), generator.rows());
-  Eigen::VectorXd current = Eigen::VectorXd::Unit(generator.rows(), initial);
+  Eigen::VectorXd current = initial;
   std::int64_t current_step = 0;
   for (const std::size_t j : order) {
     if (!reached(current, stationary)) {

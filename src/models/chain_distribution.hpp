@@ -11,6 +11,13 @@
 
 namespace swarmagg {
 
+// Row j is the distribution after steps[j] steps from distribution `initial`, initial expm(k Q).
+// With the chain's stationary distribution, propagation stops once the distribution is
+// within 1e-13 of it in total variation (every later one is at least as close).
+Eigen::MatrixXd transient_distributions(const Generator& generator, const Eigen::VectorXd& initial,
+                                        const std::vector<std::int64_t>& steps,
+                                        const std::optional<Eigen::VectorXd>& stationary = {});
+
 // Row j is the distribution after steps[j] steps from state `initial`, e_initial expm(k Q).
 // With the chain's stationary distribution, propagation stops once the distribution is
 // within 1e-13 of it in total variation (every later one is at least as close).

@@ -6,9 +6,12 @@
 #include "controllers/controller_registry.hpp"
 #include "models/bayindir_expected.hpp"
 #include "models/bayindir_stochastic.hpp"
+#include "models/initial_state.hpp"
+#include "models/measured_rates.hpp"
 #include "models/output_grid.hpp"
 #include "models/sample_statistics.hpp"
 #include "models/soysal_model.hpp"
+#include "models/soysal_rates.hpp"
 
 namespace swarmagg {
 
@@ -21,8 +24,13 @@ std::string creation_variant_name(CreationVariant variant) {
   return variant == CreationVariant::Original ? "original" : "collision";
 }
 
-std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
+// Stream of the measured variant's stochastic draws (the creation variants use 0 and 1).
+constexpr std::uint64_t kMeasuredStream = 2;
+
+std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
+                                                    const MeasuredTerms* measured) {
   const std::vector<std::int64_t> grid = record_grid(world);
+  const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
     const BayindirRates rates = bayindir_rates(world, variant);
@@ -30,7 +38,17 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
     predictions.push_back({.model = "bayindir",
                            .variant = creation_variant_name(variant),
                            .chosen = variant == world.model.creation,
-                           .series = bayindir_expected_series(rates, grid, &last)});
+                           .series = bayindir_expected_series(rates, grid, start, &last)});
+    if (rates.forms_aggregates)
+      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
+  }
+  if (measured) {
+    const BayindirRates rates = measured_bayindir_rates(world, *measured);
+    BayindirState last;
+    predictions.push_back({.model = "bayindir",
+                           .variant = "measured",
+                           .series = bayindir_expected_series(rates, grid, start, &last),
+                           .extra = measured_term_notes(world, *measured)});
     if (rates.forms_aggregates)
       add_size_distribution(predictions.back(), grid.back(), last.aggregates);
   }
@@ -43,7 +61,15 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world) {
          .stochastic = true,
          .chosen = variant == world.model.creation,
          .series = bayindir_stochastic_series(bayindir_rates(world, variant), grid, world.run.seed,
-                                              world.model.stochastic_replicates, stream)});
+                                              world.model.stochastic_replicates, stream, start)});
+  }
+  if (measured) {
+    predictions.push_back({.model = "bayindir",
+                           .variant = "measured-stochastic",
+                           .stochastic = true,
+                           .series = bayindir_stochastic_series(
+                               measured_bayindir_rates(world, *measured), grid, world.run.seed,
+                               world.model.stochastic_replicates, kMeasuredStream, start)});
   }
   return predictions;
 }
@@ -90,14 +116,22 @@ std::string stationary_summary(const VariantPrediction& prediction) {
 
 }  // namespace
 
-std::vector<VariantPrediction> predict(const WorldSpec& world) {
+std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured) {
   const ModelFamily model = controller_rules(world).model;
   if (model == ModelFamily::None) return {};
-  if (model != ModelFamily::Soysal) return bayindir_predictions(world);
+  if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured);
+  const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const LeavingVariant variant : {LeavingVariant::Original, LeavingVariant::Peripheral}) {
-    predictions.push_back(soysal_prediction(world, variant));
+    predictions.push_back(soysal_prediction(world, soysal_rates(world, variant),
+                                            leaving_variant_name(variant), start));
     predictions.back().chosen = variant == world.model.leaving;
+  }
+  if (measured) {
+    predictions.push_back(
+        soysal_prediction(world, measured_soysal_rates(world, *measured), "measured", start));
+    const std::vector<TidyValue> notes = measured_term_notes(world, *measured);
+    predictions.back().extra.insert(predictions.back().extra.end(), notes.begin(), notes.end());
   }
   return predictions;
 }
@@ -113,6 +147,11 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
         "headings (collision_mode: ghost); in collision_mode: paper the leave runs after each "
         "encounter are not modelled");
     return caveats;
+  }
+  if (world.model.initial_state == InitialState::Placement && !world.robots.random_placement()) {
+    caveats.push_back(
+        "model.initial_state: placement expects a random placement; with given positions the "
+        "models start from all searching");
   }
   if (rules.leaves) {
     caveats.push_back(

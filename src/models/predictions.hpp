@@ -5,15 +5,21 @@
 // replicates); soysal controllers get the partition model, variants `original` and
 // `peripheral`. Each variant reads the same WorldSpec the simulator runs; the ones the
 // world's model block names (model.creation, model.leaving) are marked `chosen`.
+// All of them start from the state after the first decision (model.initial_state).
 #include <string>
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
 
 namespace swarmagg {
 
-std::vector<VariantPrediction> predict(const WorldSpec& world);
+// Every variant starts where model.initial_state says (models/initial_state.hpp). With
+// `measured` terms (SPEC 5.4) the `measured` variants are added too (bayindir `measured` and
+// `measured-stochastic`, soysal `measured`; models/measured_rates.hpp).
+std::vector<VariantPrediction> predict(const WorldSpec& world,
+                                       const MeasuredTerms* measured = nullptr);
 
 // Where the world departs from the models' assumptions, one sentence each.
 std::vector<std::string> model_caveats(const WorldSpec& world);

@@ -1,9 +1,14 @@
 #include "models/soysal_model.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
 #include <string>
 
 #include "core/errors.hpp"
 #include "models/chain_distribution.hpp"
+#include "models/initial_state.hpp"
 #include "models/output_grid.hpp"
 #include "models/partition_chain.hpp"
 #include "models/soysal_rates.hpp"
@@ -50,6 +55,37 @@ void add_stationary(const PartitionChain& chain, const StateObservables& values,
   prediction.extra.push_back({"stationary_largest", std::nullopt, stationary.dot(values.largest)});
 }
 
+// Independent Poisson counts of aggregates of each size, over the chain's partitions.
+Eigen::VectorXd first_decision_distribution(const PartitionChain& chain,
+                                            const std::vector<double>& start) {
+  const auto n = static_cast<Eigen::Index>(chain.states.size());
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    std::map<int, int> counts;
+    for (const int part : chain.states[static_cast<std::size_t>(i)]) {
+      if (part >= 2) ++counts[part];
+    }
+    double log_weight = 0.0;
+    for (std::size_t m = 2; m < start.size(); ++m) {
+      const double mean = start[m];
+      const int k = counts.contains(static_cast<int>(m)) ? counts[static_cast<int>(m)] : 0;
+      if (mean <= 0.0) {
+        if (k > 0) log_weight = -std::numeric_limits<double>::infinity();
+        continue;
+      }
+      log_weight += -mean + k * std::log(mean) - std::lgamma(k + 1.0);
+    }
+    for (const auto& [part, k] : counts) {
+      if (part >= static_cast<int>(start.size()) && k > 0)
+        log_weight = -std::numeric_limits<double>::infinity();
+    }
+    weights(i) = std::exp(log_weight);
+  }
+  const double total = weights.sum();
+  if (!(total > 0.0)) return Eigen::VectorXd::Unit(n, chain.all_free);
+  return weights / total;
+}
+
 // by_size[m]: the expected number of aggregates of size m under `distribution`.
 std::vector<double> expected_sizes(const std::vector<Partition>& states,
                                    const Eigen::RowVectorXd& distribution, int agents) {
@@ -69,20 +105,41 @@ std::string leaving_variant_name(LeavingVariant variant) {
 }
 
 VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant) {
+  return soysal_prediction(world, soysal_rates(world, variant), leaving_variant_name(variant),
+                           start_aggregates(world, nullptr));
+}
+
+VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
+                                    const std::string& variant, const std::vector<double>& start) {
   const int agents = world.robots.count;
   if (partition_count(agents) > kLargestPartitionChain) {
     throw InputError("model: the partition model of " + std::to_string(agents) + " agents has " +
                      std::to_string(partition_count(agents)) + " states; at most " +
                      std::to_string(kLargestPartitionChain) + " (N <= 30) are supported");
   }
-  const PartitionChain chain = build_partition_chain(soysal_rates(world, variant));
-  VariantPrediction prediction{.model = "soysal", .variant = leaving_variant_name(variant)};
+  const PartitionChain chain = build_partition_chain(rates);
+  VariantPrediction prediction{.model = "soysal", .variant = variant};
   const StateObservables values = observables_of(chain.states);
   const std::vector<std::int64_t> grid = sparse_grid(world, kPartitionReportPoints);
   std::optional<Eigen::VectorXd> stationary;
   if (chain.recurrent) stationary = stationary_distribution(chain.generator);
-  const Eigen::MatrixXd distributions =
-      transient_distributions(chain.generator, chain.all_free, grid, stationary);
+  Eigen::MatrixXd distributions;
+  if (start.empty()) {
+    distributions = transient_distributions(chain.generator, chain.all_free, grid, stationary);
+  } else {
+    // Step 0 is all free; from step 1 on the chain runs from the first decision's distribution.
+    std::vector<std::int64_t> after_first(grid.size());
+    for (std::size_t j = 0; j < grid.size(); ++j)
+      after_first[j] = std::max<std::int64_t>(0, grid[j] - 1);
+    distributions = transient_distributions(
+        chain.generator, first_decision_distribution(chain, start), after_first, stationary);
+    for (std::size_t j = 0; j < grid.size(); ++j) {
+      if (grid[j] == 0) {
+        distributions.row(static_cast<Eigen::Index>(j)) =
+            Eigen::RowVectorXd::Unit(distributions.cols(), chain.all_free);
+      }
+    }
+  }
   for (std::size_t j = 0; j < grid.size(); ++j) {
     const Eigen::RowVectorXd distribution = distributions.row(static_cast<Eigen::Index>(j));
     prediction.series.push_back(expected_row(distribution, values, agents, grid[j]));

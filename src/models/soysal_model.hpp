@@ -5,6 +5,7 @@
 // does not tell GO, APPROACH and LEAVE apart) and largest aggregate.
 #include "config/world_spec.hpp"
 #include "models/model_series.hpp"
+#include "models/soysal_rates.hpp"
 
 namespace swarmagg {
 
@@ -14,7 +15,15 @@ inline constexpr int kLargestPartitionChain = 6000;
 // About this many log-spaced and as many evenly spaced reporting steps.
 inline constexpr int kPartitionReportPoints = 50;
 
-// Throws InputError when N has more than kLargestPartitionChain partitions.
+// Throws InputError when N has more than kLargestPartitionChain partitions. The chain starts
+// from all free (step 0); with `start` (expected aggregates [m] after the first decision,
+// models/initial_state.hpp) the distribution at step 1 is that of independent Poisson
+// counts of aggregates of each size with those means (restricted to partitions of N, and
+// renormalized), and the chain runs from there.
+VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
+                                    const std::string& variant,
+                                    const std::vector<double>& start = {});
+// The world's own rates and start (model.initial_state, not measured).
 VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant);
 
 std::string leaving_variant_name(LeavingVariant variant);

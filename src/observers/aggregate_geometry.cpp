@@ -6,11 +6,11 @@
 namespace swarmagg {
 
 double packing_spacing(const WorldSpec& spec) {
-  return 2.0 * spec.robots.radius;
+  return spec.compaction_spacing();
 }
 
 ShapeRules ShapeRules::for_world(const WorldSpec& spec) {
-  return {ArenaGeometry(spec.arena), spec.robots.radius,
+  return {spec.arena.geometry(), spec.robots.radius,
           RimRule::for_spacing(packing_spacing(spec))};
 }
 

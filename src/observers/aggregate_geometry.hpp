@@ -23,7 +23,7 @@
 
 namespace swarmagg {
 
-// The spacing packed members keep: 2r, touching (SPEC 3's compaction default).
+// The spacing packed members keep: controller.compaction.spacing (2r, touching, by default).
 double packing_spacing(const WorldSpec& spec);
 
 struct RimRule {

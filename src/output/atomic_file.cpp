@@ -1,5 +1,6 @@
 #include "output/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -12,6 +13,12 @@
 namespace swarmagg {
 namespace {
 
+[[noreturn]] void fail(const std::string& what, const std::filesystem::path& path) {
+  throw std::runtime_error(what + " " + path.string() + ": " + std::strerror(errno));
+}
+
+}  // namespace
+
 std::filesystem::path temporary_beside(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
   return target.parent_path() /
@@ -19,11 +26,14 @@ std::filesystem::path temporary_beside(const std::filesystem::path& target) {
           std::to_string(counter.fetch_add(1)) + ".tmp");
 }
 
-[[noreturn]] void fail(const std::string& what, const std::filesystem::path& path) {
-  throw std::runtime_error(what + " " + path.string() + ": " + std::strerror(errno));
+void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target) {
+  const int fd = ::open(temporary.c_str(), O_RDONLY);
+  if (fd < 0) fail("cannot open", temporary);
+  const bool synced = ::fsync(fd) == 0;
+  ::close(fd);
+  if (!synced) fail("cannot sync", temporary);
+  std::filesystem::rename(temporary, target);
 }
-
-}  // namespace
 
 void write_file_atomic(const std::filesystem::path& target, std::string_view content) {
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());

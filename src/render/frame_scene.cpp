@@ -33,20 +33,6 @@ Offsets copies(Vec2 p, double extent, double w, double h, bool torus) {
   return out;
 }
 
-double wrap(double v, double period) {
-  const double w = v - period * std::floor(v / period);
-  return w < period ? w : 0.0;  // v slightly below 0 can round up to period
-}
-
-Vec2 separation(Vec2 from, Vec2 to, double w, double h, bool torus) {
-  Vec2 d = to - from;
-  if (torus) {
-    d.x -= w * std::round(d.x / w);
-    d.y -= h * std::round(d.y / h);
-  }
-  return d;
-}
-
 }  // namespace
 
 const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot,
@@ -84,11 +70,9 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot,
   scene_.bodies.clear();
   scene_.walls.clear();
 
+  const ArenaGeometry arena = spec.arena.geometry();
   wrapped_.resize(n);
-  for (std::int32_t i = 0; i < n; ++i) {
-    const Vec2 p = snapshot.positions[i];
-    wrapped_[i] = torus ? Vec2{wrap(p.x, w), wrap(p.y, h)} : p;
-  }
+  for (std::int32_t i = 0; i < n; ++i) wrapped_[i] = arena.wrap(snapshot.positions[i]);
 
   lowest_member_.assign(std::max(snapshot.noa, 0), std::numeric_limits<std::int32_t>::max());
   for (std::int32_t i = 0; i < n; ++i) {
@@ -119,10 +103,9 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot,
     }
   }
 
-  find_links(snapshot, torus);
-  for (const auto& [i, j] : link_pairs_) {
+  find_links(snapshot, arena);
+  for (const auto& [i, j, d] : link_pairs_) {
     const Vec2 p = wrapped_[i];
-    const Vec2 d = separation(p, wrapped_[j], w, h, torus);
     const Offsets offsets = copies(p, extent, w, h, torus);
     for (int c = 0; c < offsets.count; ++c) {
       const Vec2 a = layout.to_pixel(p + offsets.values[c]);
@@ -148,72 +131,27 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot,
   return scene_;
 }
 
-void FrameSceneBuilder::find_links(const SwarmSnapshot& snapshot, bool torus) {
+// Links join members of one aggregate within s of each other; drawn in (i, j) order.
+void FrameSceneBuilder::find_links(const SwarmSnapshot& snapshot, const ArenaGeometry& arena) {
   link_pairs_.clear();
   if (snapshot.aggregate.empty()) return;
-  const WorldSpec& spec = *snapshot.spec;
-  const double w = spec.arena.width;
-  const double h = spec.arena.height;
-  const double s = spec.robots.detection_radius;
-  const double s2 = s * s;
   const auto& aggregate = snapshot.aggregate;
-
   members_.clear();
+  const auto aggregated =
+      std::count_if(aggregate.begin(), aggregate.end(), [](std::int32_t a) { return a >= 0; });
+  members_finder_.reset(arena, snapshot.spec->robots.detection_radius,
+                        static_cast<std::size_t>(aggregated));
   for (std::int32_t i = 0; i < static_cast<std::int32_t>(aggregate.size()); ++i) {
-    if (aggregate[i] >= 0) members_.push_back(i);
+    if (aggregate[i] < 0) continue;
+    members_.push_back(i);
+    members_finder_.add(wrapped_[i]);
   }
-  const auto linked = [&](std::int32_t i, std::int32_t j) {
-    return aggregate[i] == aggregate[j] &&
-           norm2(separation(wrapped_[i], wrapped_[j], w, h, torus)) <= s2;
-  };
-
-  const int nx = std::max(1, static_cast<int>(std::floor(w / s)));
-  const int ny = std::max(1, static_cast<int>(std::floor(h / s)));
-  if (members_.size() <= 48 || nx < 3 || ny < 3) {
-    for (std::size_t a = 0; a < members_.size(); ++a) {
-      for (std::size_t b = a + 1; b < members_.size(); ++b) {
-        if (linked(members_[a], members_[b])) link_pairs_.emplace_back(members_[a], members_[b]);
-      }
-    }
-    return;
-  }
-
-  // Uniform grid with cells at least s wide: partners lie in the 3x3 cells around.
-  const auto cell_x = [&](double x) { return std::clamp(static_cast<int>(x / w * nx), 0, nx - 1); };
-  const auto cell_y = [&](double y) { return std::clamp(static_cast<int>(y / h * ny), 0, ny - 1); };
-  cell_start_.assign(static_cast<std::size_t>(nx) * ny + 1, 0);
-  cell_of_.resize(members_.size());
-  for (std::size_t m = 0; m < members_.size(); ++m) {
-    const Vec2 p = wrapped_[members_[m]];
-    cell_of_[m] = cell_y(p.y) * nx + cell_x(p.x);
-    ++cell_start_[cell_of_[m] + 1];
-  }
-  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-  cell_fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  bucketed_.resize(members_.size());
-  for (std::size_t m = 0; m < members_.size(); ++m) {
-    bucketed_[cell_fill_[cell_of_[m]]++] = members_[m];
-  }
-  for (const std::int32_t i : members_) {
-    const Vec2 p = wrapped_[i];
-    const int cx = cell_x(p.x);
-    const int cy = cell_y(p.y);
-    for (int dy = -1; dy <= 1; ++dy) {
-      int y = cy + dy;
-      if (torus) y = (y + ny) % ny;
-      if (y < 0 || y >= ny) continue;
-      for (int dx = -1; dx <= 1; ++dx) {
-        int x = cx + dx;
-        if (torus) x = (x + nx) % nx;
-        if (x < 0 || x >= nx) continue;
-        const int c = y * nx + x;
-        for (std::int32_t e = cell_start_[c]; e < cell_start_[c + 1]; ++e) {
-          const std::int32_t j = bucketed_[e];
-          if (j > i && linked(i, j)) link_pairs_.emplace_back(i, j);
-        }
-      }
-    }
-  }
+  members_finder_.for_each_pair([&](std::uint32_t a, std::uint32_t b, Vec2 d) {
+    const std::int32_t i = members_[a], j = members_[b];
+    if (aggregate[i] == aggregate[j]) link_pairs_.push_back({i, j, d});
+  });
+  std::sort(link_pairs_.begin(), link_pairs_.end(),
+            [](const Link& a, const Link& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
 }
 
 }  // namespace swarmagg

@@ -12,9 +12,9 @@
 // On a torus every shape that crosses the seam is drawn again on the other side(s); the
 // renderer clips everything but the walls to the arena.
 #include <cstdint>
-#include <utility>
 #include <vector>
 
+#include "geometry/pair_finder.hpp"
 #include "observers/swarm_snapshot.hpp"
 #include "render/frame_layout.hpp"
 #include "render/palette.hpp"
@@ -58,17 +58,21 @@ class FrameSceneBuilder {
   const FrameScene& build(const SwarmSnapshot& snapshot, const FrameLayout& layout);
 
  private:
-  void find_links(const SwarmSnapshot& snapshot, bool torus);
+  void find_links(const SwarmSnapshot& snapshot, const ArenaGeometry& arena);
+
+  // Two members of one aggregate within s: i < j, d from i to j (minimum image).
+  struct Link {
+    std::int32_t i;
+    std::int32_t j;
+    Vec2 d;
+  };
 
   FrameScene scene_;
   std::vector<Vec2> wrapped_;                // positions wrapped into the arena (torus)
   std::vector<std::int32_t> lowest_member_;  // per aggregate
   std::vector<std::int32_t> members_;        // aggregated agents
-  std::vector<std::int32_t> cell_of_;        // grid cell of each member
-  std::vector<std::int32_t> cell_start_;
-  std::vector<std::int32_t> cell_fill_;
-  std::vector<std::int32_t> bucketed_;  // members sorted by cell
-  std::vector<std::pair<std::int32_t, std::int32_t>> link_pairs_;
+  PairFinder members_finder_;                // over the members, by their index in members_
+  std::vector<Link> link_pairs_;
 };
 
 }  // namespace swarmagg

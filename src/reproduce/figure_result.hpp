@@ -6,6 +6,7 @@
 
 #include "analysis/partition_comparison.hpp"
 #include "config/world_spec.hpp"
+#include "rates/rate_rows.hpp"
 #include "reproduce/encounter_comparison.hpp"
 #include "reproduce/noa_comparison.hpp"
 #include "reproduce/paper_figures.hpp"
@@ -18,6 +19,7 @@ struct FigureResult {
   std::vector<EncounterPoint> encounters;         // EncountersVsCount / EncountersVsSpeed
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
+  std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
   std::string plot;  // the figure's PNG, relative to the report's folder ("plots/<id>.png")
   int reused = 0;    // worlds whose run folder was reused
   double wall_seconds = 0.0;

@@ -10,7 +10,8 @@
 namespace swarmagg {
 
 const std::vector<std::string>& noa_variants() {
-  static const std::vector<std::string> variants{"original", "collision", kPaperFitVariant};
+  static const std::vector<std::string> variants{"original", "collision", kPaperFitVariant,
+                                                 kMeasuredVariant};
   return variants;
 }
 

@@ -75,7 +75,9 @@ void plot_noa(const FigureFiles& files, const std::string& title, const NoaCompa
       "  " +
       curves +
       " skip 1 using 1:5 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'collision theory (paper "
-      "fit)'\n";
+      "fit)', \\\n"
+      "  " +
+      curves + " skip 1 using 1:6 with lines lw 2 lc rgb '#2ca02c' title 'measured terms'\n";
   run_gnuplot(files.script(), script);
 }
 

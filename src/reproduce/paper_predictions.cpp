@@ -5,15 +5,16 @@
 
 namespace swarmagg {
 
-std::vector<VariantPrediction> paper_predictions(const WorldSpec& world) {
-  std::vector<VariantPrediction> predictions = predict(world);
+std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
+                                                 const MeasuredTerms* measured) {
+  std::vector<VariantPrediction> predictions = predict(world, measured);
   if (controller_rules(world).model == ModelFamily::Soysal || world.model.kappa == Kappa::Paper) {
     return predictions;
   }
   WorldSpec fitted = world;
   fitted.model.kappa = Kappa::Paper;
   fitted.model.stochastic_replicates = 0;  // only its expected collision variant is kept
-  for (VariantPrediction& prediction : predict(fitted)) {
+  for (VariantPrediction& prediction : predict(fitted, measured)) {
     if (prediction.model == "bayindir" && prediction.variant == "collision") {
       prediction.variant = kPaperFitVariant;
       prediction.chosen = false;

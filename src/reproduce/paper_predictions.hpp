@@ -5,13 +5,17 @@
 // report can show the paper's own improved model next to our kinetic one.
 #include <vector>
 
+#include "analysis/variant_error.hpp"
 #include "config/world_spec.hpp"
+#include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
 
 namespace swarmagg {
 
 inline constexpr const char* kPaperFitVariant = "collision-paper";
 
-std::vector<VariantPrediction> paper_predictions(const WorldSpec& world);
+// With `measured` terms, the measured variants too (models/predictions.hpp).
+std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
+                                                 const MeasuredTerms* measured = nullptr);
 
 }  // namespace swarmagg

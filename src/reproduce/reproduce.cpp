@@ -7,6 +7,7 @@
 #include "config/world_loader.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"
+#include "rates/rates_csv.hpp"
 #include "reproduce/claims.hpp"
 #include "reproduce/encounter_plot.hpp"
 #include "reproduce/noa_plot.hpp"
@@ -40,10 +41,12 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
       break;
     case FigureKind::Noa:
       result.noa = compare_noa(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_noa(files, figure.title, *result.noa);
       break;
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
+      result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       plot_partitions(files, figure.title, *result.partitions);
       break;
   }
@@ -83,7 +86,8 @@ FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure
   for (const std::string& name : figure.worlds) {
     const std::string path = (options.worlds / (name + ".yaml")).string();
     WorldSpec world = load_world(path);
-    for (const std::string& o : reproduce_overrides(options, world)) apply_override(world, o);
+    for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
+    check_world(world);
     result.reused += ensure_run(world, runs / name, run_options) ? 1 : 0;
     result.worlds.push_back(std::move(world));
   }
@@ -97,15 +101,18 @@ FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure
 
 }  // namespace
 
-std::vector<std::string> reproduce_overrides(const ReproduceOptions& options,
-                                             const WorldSpec& world) {
-  std::vector<std::string> overrides;
+std::vector<WorldOverride> reproduce_overrides(const ReproduceOptions& options,
+                                               const WorldSpec& world) {
+  std::vector<WorldOverride> overrides;
   if (options.quick) {
-    overrides.push_back("run.replicates=" + std::to_string(kQuickReplicates));
-    overrides.push_back("run.duration=" + csv_number(world.run.duration / kQuickDurationDivisor));
+    overrides.push_back(typed_override("run.replicates", kQuickReplicates, "--quick"));
+    overrides.push_back(
+        typed_override("run.duration", world.run.duration / kQuickDurationDivisor, "--quick"));
   }
-  if (!options.engine.empty()) overrides.push_back("engine.type=" + options.engine);
-  overrides.insert(overrides.end(), options.overrides.begin(), options.overrides.end());
+  if (!options.engine.empty()) {
+    overrides.push_back(typed_override("engine.type", options.engine, "--engine"));
+  }
+  for (WorldOverride& o : parse_overrides(options.overrides)) overrides.push_back(std::move(o));
   return overrides;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "config/world_override.hpp"
 #include "plot/png_terminal.hpp"
 #include "reproduce/figure_result.hpp"
 
@@ -31,8 +32,8 @@ inline constexpr int kQuickReplicates = 3;
 inline constexpr double kQuickDurationDivisor = 25.0;
 
 // The overrides reproduce applies to a world: quick ones, then the engine, then `overrides`.
-std::vector<std::string> reproduce_overrides(const ReproduceOptions& options,
-                                             const WorldSpec& world);
+std::vector<WorldOverride> reproduce_overrides(const ReproduceOptions& options,
+                                               const WorldSpec& world);
 
 struct ReproduceOutcome {
   std::vector<FigureResult> figures;

@@ -4,8 +4,10 @@
 #include <sstream>
 
 #include "config/world_writer.hpp"
+#include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
 #include "run/model_outputs.hpp"
+#include "run/rate_collector.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg {
@@ -24,7 +26,8 @@ std::string without_comment_lines(std::istream& in) {
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder) {
   std::ifstream resolved(folder / "world.resolved.yaml");
   if (!resolved || !std::filesystem::exists(folder / "timeseries.csv") ||
-      !std::filesystem::exists(folder / "model.csv")) {
+      !std::filesystem::exists(folder / "model.csv") ||
+      !std::filesystem::exists(folder / "rates.csv")) {
     return false;
   }
   std::istringstream current(world_to_yaml(spec));
@@ -34,11 +37,18 @@ bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder)
 bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
                 const RunOptions& options) {
   if (run_is_reusable(spec, folder)) return true;
-  // The models first: world.resolved.yaml, written last by write_run_folder, then marks
-  // the folder complete with its model outputs beside it.
   std::filesystem::remove(folder / "world.resolved.yaml");
-  write_model_outputs(spec, paper_predictions(spec), folder);
-  write_run_folder(spec, run_world(spec, options), folder);
+  // The run measures the model terms as it goes; the measured variants need them, so the
+  // models follow the run, and world.resolved.yaml, written last by write_run_folder, marks
+  // the folder complete with the rates and model outputs beside it.
+  RateCollector collector(spec);
+  RunOptions measuring = options;
+  measuring.observers = both_observers(
+      options.observers, [&collector](int index) { return collector.observer(index); });
+  const RunResult result = run_world(spec, measuring);
+  const MeasuredTerms terms = measured_terms(write_rate_outputs(spec, collector.total(), folder));
+  write_model_outputs(spec, paper_predictions(spec, &terms), folder);
+  write_run_folder(spec, result, folder);
   return false;
 }
 

@@ -13,8 +13,9 @@ namespace swarmagg {
 // True when `folder` holds a complete run of exactly `spec`, with its model outputs.
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder);
 
-// Runs the world and writes the run folder and its model outputs (model.csv,
-// model-timeseries/) unless run_is_reusable. Returns true when the run was reused.
+// Runs the world and writes the run folder, its measured rates (rates.csv, rates.json,
+// plots) and its model outputs (model.csv, model-timeseries/, with the measured variants)
+// unless run_is_reusable. Returns true when the run was reused.
 bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
                 const RunOptions& options);
 

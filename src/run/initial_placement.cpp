@@ -6,7 +6,7 @@
 
 #include "controllers/controller.hpp"
 #include "core/errors.hpp"
-#include "geometry/arena_geometry.hpp"
+#include "geometry/pair_finder.hpp"
 
 namespace swarmagg {
 namespace {
@@ -18,64 +18,6 @@ constexpr int kAttemptsPerAgent = 100000;
 // small worlds (the paper's) as they were.
 constexpr std::size_t kSpatialNumberingFrom = 4096;
 
-// Cells of side >= 2r with a linked list of the agents placed in each, so checking a
-// candidate against every placed body touches only its 3x3 block of cells.
-class PlacementGrid {
- public:
-  PlacementGrid(const ArenaGeometry& arena, double contact, std::size_t n)
-      : arena_(arena), contact_(contact) {
-    nx_ = std::max(1, static_cast<int>(arena.width() / contact));
-    ny_ = std::max(1, static_cast<int>(arena.height() / contact));
-    head_.assign(static_cast<std::size_t>(nx_) * ny_, -1);
-    next_.reserve(n);
-  }
-
-  bool free_at(Vec2 p, const std::vector<Vec2>& placed) const {
-    const int cx = cell_x(p.x);
-    const int cy = cell_y(p.y);
-    const int reach_x = nx_ < 3 ? 0 : 1;
-    const int reach_y = ny_ < 3 ? 0 : 1;
-    if (nx_ < 3 || ny_ < 3) return free_everywhere(p, placed);
-    for (int dy = -reach_y; dy <= reach_y; ++dy) {
-      for (int dx = -reach_x; dx <= reach_x; ++dx) {
-        const int x = (cx + dx + nx_) % nx_;
-        const int y = (cy + dy + ny_) % ny_;
-        for (int k = head_[static_cast<std::size_t>(y) * nx_ + x]; k >= 0; k = next_[k]) {
-          if (arena_.distance(p, placed[k]) < contact_) return false;
-        }
-      }
-    }
-    return true;
-  }
-
-  void add(Vec2 p, int index) {
-    const std::size_t cell = static_cast<std::size_t>(cell_y(p.y)) * nx_ + cell_x(p.x);
-    next_.push_back(head_[cell]);
-    head_[cell] = index;
-  }
-
- private:
-  bool free_everywhere(Vec2 p, const std::vector<Vec2>& placed) const {
-    for (const Vec2& q : placed) {
-      if (arena_.distance(p, q) < contact_) return false;
-    }
-    return true;
-  }
-  int cell_x(double x) const {
-    return std::min(nx_ - 1, static_cast<int>(x / arena_.width() * nx_));
-  }
-  int cell_y(double y) const {
-    return std::min(ny_ - 1, static_cast<int>(y / arena_.height() * ny_));
-  }
-
-  const ArenaGeometry& arena_;
-  double contact_;
-  int nx_ = 1;
-  int ny_ = 1;
-  std::vector<int> head_;
-  std::vector<int> next_;
-};
-
 InitialPlacement explicit_placement(const WorldSpec& spec) {
   InitialPlacement result;
   for (const PlacedAgent& a : spec.robots.placement) {
@@ -86,11 +28,20 @@ InitialPlacement explicit_placement(const WorldSpec& spec) {
 }
 
 InitialPlacement random_placement(const WorldSpec& spec, const CounterRng& rng) {
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   const auto n = static_cast<std::size_t>(spec.robots.count);
   const double r = spec.robots.radius;
   const double margin = spec.arena.topology == Topology::Walls ? r : 0.0;
-  PlacementGrid grid(arena, 2.0 * r, n);
+  const double contact = 2.0 * r;
+  PairFinder placed_bodies;
+  placed_bodies.reset(arena, contact, n);
+  // Free where no placed body is closer than contact (touching is allowed).
+  const auto free_at = [&](Vec2 p) {
+    bool free = true;
+    placed_bodies.for_each_near(p,
+                                [&](std::uint32_t, Vec2 d) { free = free && norm(d) >= contact; });
+    return free;
+  };
   InitialPlacement result;
   result.positions.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -100,8 +51,8 @@ InitialPlacement random_placement(const WorldSpec& spec, const CounterRng& rng) 
                                 rng.uniform(0, i, Draw::Placement, 2 * attempt),
                    margin + (spec.arena.height - 2 * margin) *
                                 rng.uniform(0, i, Draw::Placement, 2 * attempt + 1)};
-      if (!grid.free_at(p, result.positions)) continue;
-      grid.add(p, static_cast<int>(i));
+      if (!free_at(p)) continue;
+      placed_bodies.add(p);
       result.positions.push_back(p);
       placed = true;
     }

@@ -156,7 +156,9 @@ bool solid(AgentState a, AgentState b, bool join) {
     return mover == AgentState::Leave ||
            (join && (mover == AgentState::Go || mover == AgentState::Approach));
   };
-  return (a == AgentState::Wait && blocked(b)) || (b == AgentState::Wait && blocked(a));
+  const bool both_wait = a == AgentState::Wait && b == AgentState::Wait;
+  return both_wait || (a == AgentState::Wait && blocked(b)) ||
+         (b == AgentState::Wait && blocked(a));
 }
 
 }  // namespace
@@ -242,12 +244,13 @@ void InvariantChecker::check_counts_grow(const CheckedState& s) const {
 
 void InvariantChecker::check_motion(const CheckedState& s) const {
   if (box2d(s.spec)) return;  // contacts and repulsion may push bodies faster than v
-  const ArenaGeometry geometry(s.spec.arena);
+  const ArenaGeometry geometry = s.spec.arena.geometry();
   const double reach = s.spec.robots.speed * s.spec.engine.dt;
   const double slack = kRounding * (longest_side(s.spec) + reach);
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
     const double moved = geometry.distance(positions_[i], s.positions[i]);
-    const double limit = s.swarm.state[i] == AgentState::Wait ? 0.0 : reach;
+    // Waiting agents move only to close up their aggregate (SPEC 3 "Compaction").
+    const double limit = s.swarm.state[i] == AgentState::Wait && !s.rules.compacts ? 0.0 : reach;
     if (moved > limit + slack) {
       violated(s, agent(s, i) + " moved " + format_number(moved) + " from " + point(positions_[i]) +
                       " to " + point(s.positions[i]) + " in one step; at most " +
@@ -261,7 +264,7 @@ void InvariantChecker::check_contacts(const CheckedState& s) const {
   const double contact = 2.0 * r;
   const double tolerance = box2d(s.spec) ? r : kRounding * longest_side(s.spec);
   const bool join = s.rules.joins;
-  const ArenaGeometry geometry(s.spec.arena);
+  const ArenaGeometry geometry = s.spec.arena.geometry();
   for (std::size_t i = 0; i < s.swarm.size(); ++i) {
     for (const Neighbour& nb : s.neighbours.of(static_cast<AgentId>(i))) {
       if (nb.distance >= contact) break;  // nearest first

@@ -19,6 +19,7 @@ Replicate::Replicate(const WorldSpec& spec, int index)
   swarm_.heading.assign(placement.headings.begin(), placement.headings.end());
   commands_.resize(swarm_.size());
   signals_.resize(swarm_.size());
+  growths_by_size_.assign(swarm_.size() + 1, 0);
   update_aggregates();
 }
 
@@ -32,7 +33,7 @@ void Replicate::update_aggregates() {
 
 void Replicate::step() {
   const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(),
-                              aggregates_.facts()};
+                              aggregates_.facts(), growths_by_size_};
   controller_->decide(input, swarm_, rng_, commands_, events_);
   leave_episodes_.observe_decision(aggregates_, engine_->neighbours(), engine_->positions(),
                                    swarm_.state);

@@ -4,6 +4,8 @@
 // is advanced one step at a time; observers read it through snapshot().
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "config/world_spec.hpp"
 #include "control_interface/controller_rules.hpp"
@@ -42,6 +44,8 @@ class Replicate {
   const SwarmState& swarm() const { return swarm_; }
   const AggregateTracker& aggregates() const { return aggregates_; }
   const EventCounts& events() const { return events_; }
+  // Cumulative growths by the size of the aggregate joined, [m] for m = 0..N.
+  std::span<const std::uint64_t> growths_by_size() const { return growths_by_size_; }
   // The LEAVE episodes so far, judged between each decision and the move that follows it.
   const LeaveEpisodes& leave_episodes() const { return leave_episodes_; }
   SwarmSnapshot snapshot() const;
@@ -58,6 +62,7 @@ class Replicate {
   SwarmState swarm_;
   AggregateTracker aggregates_;
   EventCounts events_;
+  std::vector<std::uint64_t> growths_by_size_;
   LeaveEpisodes leave_episodes_;
   AgentArray<MotionCommand> commands_;
   AgentArray<Signal> signals_;

@@ -10,6 +10,7 @@
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/aggregate_summary.hpp"
+#include "swarmagg_version.hpp"
 
 namespace swarmagg {
 namespace {

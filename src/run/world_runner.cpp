@@ -3,15 +3,14 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <exception>
-#include <mutex>
 #include <thread>
 
 #include "observers/partition_tracker.hpp"
 #include "run/interrupt.hpp"
+#include "run/parallel_for.hpp"
+#include "run/progress_line.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
@@ -23,9 +22,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Steps done by every replicate of the current run, for the progress line.
-std::atomic<std::int64_t> steps_done_total{0};
-
 void record(const Replicate& replicate, ReplicateOutcome& outcome) {
   outcome.rows.push_back(observe_row(replicate.index(), replicate.snapshot(),
                                      replicate.aggregates(), replicate.events()));
@@ -36,15 +32,6 @@ std::vector<AggregateShape> final_shapes(const Replicate& replicate) {
   members.build(replicate.aggregates());
   return measure_aggregates(members, replicate.engine().positions(),
                             ShapeRules::for_world(replicate.spec()));
-}
-
-void report_progress(const WorldSpec& spec, std::int64_t total, Clock::time_point start) {
-  const double fraction = static_cast<double>(steps_done_total.load()) / static_cast<double>(total);
-  const double elapsed = seconds_since(start);
-  const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  std::fprintf(stderr, "\r%s: %5.1f%%  elapsed %.0fs  eta %.0fs   ", spec.name.c_str(),
-               100.0 * fraction, elapsed, eta);
-  std::fflush(stderr);
 }
 
 }  // namespace
@@ -78,12 +65,8 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
     if (k % spec.run.record_every == 0 || k == steps) record(replicate, outcome);
     if (observer) observer->observe(replicate);
-    if ((k & 1023) == 0) {
-      steps_done_total.fetch_add(1024, std::memory_order_relaxed);
-      throw_if_interrupted();
-    }
+    if ((k & 1023) == 0) throw_if_interrupted();
   }
-  steps_done_total.fetch_add(steps & 1023, std::memory_order_relaxed);
   if (observer) observer->finish();
   const auto sizes = replicate.aggregates().sizes();
   outcome.final_aggregate_sizes.assign(sizes.begin(), sizes.end());
@@ -101,36 +84,23 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
   result.threads = plan.replicates_at_once;
   result.step_threads = plan.step_threads;
   result.replicates.resize(static_cast<std::size_t>(spec.run.replicates));
-  steps_done_total.store(0);
-  std::atomic<int> next{0};
-  std::atomic<int> finished{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto worker = [&] {
-    for (int index = next++; index < spec.run.replicates; index = next++) {
-      try {
-        auto observer = options.observers ? options.observers(index) : nullptr;
-        result.replicates[static_cast<std::size_t>(index)] =
-            run_replicate(spec, index, observer.get(), options.check, plan.step_threads);
-      } catch (...) {
-        std::lock_guard lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = spec.run.replicates;  // stop handing out work
-      }
-      ++finished;
-    }
+  const int agents = spec.robots.count;
+  const std::int64_t steps = spec.steps();
+  ProgressLine progress(
+      spec.name, "replicates", spec.run.replicates,
+      static_cast<double>(agents) * static_cast<double>(steps) * spec.run.replicates);
+  auto run_one = [&](std::size_t index) {
+    const int i = static_cast<int>(index);
+    ObserverGroup observers;
+    observers.add(std::make_unique<ProgressObserver>(progress, agents, steps));
+    if (options.observers) observers.add(options.observers(i));
+    result.replicates[index] = run_replicate(spec, i, &observers, options.check, plan.step_threads);
+    progress.finished_unit();
   };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < result.threads; ++t) pool.emplace_back(worker);
   const bool show = options.progress && ::isatty(::fileno(stderr));
-  const std::int64_t total = spec.steps() * spec.run.replicates;
-  while (show && finished.load() < spec.run.replicates) {
-    report_progress(spec, total, start);
-    std::this_thread::sleep_for(std::chrono::milliseconds(250));
-  }
-  for (std::thread& t : pool) t.join();
-  if (show) std::fprintf(stderr, "\r%*s\r", 60, "");
-  if (failure) std::rethrow_exception(failure);
+  parallel_for(result.replicates.size(), result.threads, run_one,
+               show ? std::function<void()>([&] { progress.print(); }) : nullptr);
+  if (show) progress.clear();
   result.wall_seconds = seconds_since(start);
   return result;
 }

@@ -1,35 +1,25 @@
 // Runs the built `swarmagg` binary as a user would and checks exit codes and messages.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "cli/cli_testing.hpp"
+#include "config/world_loader.hpp"
+
 namespace {
 
 using ::testing::HasSubstr;
 
-struct Outcome {
-  int exit_code;
-  std::string output;  // stdout and stderr together
-};
+using Outcome = swarmagg::testing::CliOutcome;
 
 Outcome swarmagg(const std::string& arguments, const std::string& environment = "") {
-  const std::string command =
-      environment + " " + std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
-  Outcome outcome{-1, {}};
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return outcome;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) outcome.output += buffer.data();
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+  return swarmagg::testing::run_swarmagg(arguments, environment);
 }
 
 // The same, with environment assignments (e.g. "PATH=/x") for the child only.
@@ -37,8 +27,10 @@ Outcome swarmagg_with_env(const std::string& environment, const std::string& arg
   return swarmagg(arguments, environment);
 }
 
+// Named by the process too: suites of several checkouts may run at once on one machine.
 std::filesystem::path temp_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("swarmagg-cli-" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("swarmagg-cli-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   return dir;
 }
@@ -81,6 +73,22 @@ TEST(Cli, RunWritesTheOutputFolder) {
   EXPECT_TRUE(std::filesystem::exists(out / "timeseries.csv"));
   EXPECT_TRUE(std::filesystem::exists(out / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(out / "world.resolved.yaml"));
+  std::filesystem::remove_all(out);
+}
+
+// --render-dir reaches render.dir as the typed string it is: a name holding `"` and `\` once
+// came out as YAML escapes (the option was spliced into a `--set` text).
+TEST(Cli, RenderDirKeepsQuotesAndBackslashes) {
+  const auto out = temp_dir("render-dir");
+  const std::filesystem::path frames = out / "fr\"am\\es";
+  const Outcome o = swarmagg(
+      "run worlds/examples/demo.yaml --replicates 1 --set run.duration=0.3 --no-model --quiet "
+      "--render-every 1 --render-size 64x64 --out '" +
+      out.string() + "' --render-dir '" + frames.string() + "'");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(std::filesystem::exists(frames / "frame_000000.png")) << o.output;
+  EXPECT_EQ(swarmagg::load_world((out / "world.resolved.yaml").string()).render.dir,
+            frames.string());
   std::filesystem::remove_all(out);
 }
 

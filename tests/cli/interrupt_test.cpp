@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include "cli/cli_testing.hpp"
+
 extern char** environ;
 
 namespace {
@@ -26,6 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using Clock = std::chrono::steady_clock;
+using swarmagg::testing::read_all;
 
 const std::string kLongWorld = std::string(SWARMAGG_SOURCE_DIR) + "/worlds/paper/full-0.0025.yaml";
 
@@ -122,13 +125,6 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Every file below `dir` (relative path -> content).
 std::map<std::string, std::string> files_below(const fs::path& dir) {
   std::map<std::string, std::string> files;
@@ -202,6 +198,16 @@ TEST(Interrupt, SigtermStopsARunWithExitCode143AndLeavesNoPartialFile) {
   if (!after.contains("world.resolved.yaml")) {
     EXPECT_TRUE(after.empty()) << after.size() << " outputs of an incomplete run";
   }
+  fs::remove_all(out);
+}
+
+TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
+  const fs::path out = fresh_dir("trajectories");
+  auto arguments = long_run(out);
+  arguments.insert(arguments.end(), {"--trajectories", "100"});
+  expect_interrupted(interrupt(arguments, SIGTERM, std::chrono::milliseconds(1500)), 143);
+  EXPECT_FALSE(fs::exists(out / "trajectories.h5"));
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   fs::remove_all(out);
 }
 

@@ -81,6 +81,48 @@ TEST(WorldLoader, TheResolvedWorldLoadsBackUnchanged) {
   EXPECT_THAT(text, HasSubstr("p_leave: 0.0001"));
 }
 
+TEST(WorldLoader, CompactionDefaultsToTouchingSpacingAndFollowsTheRadius) {
+  const WorldSpec spec = load_world_text("robots: {count: 5}\n", "w.yaml");
+  EXPECT_TRUE(spec.controller.compaction.enabled);
+  EXPECT_DOUBLE_EQ(spec.compaction_spacing(), 2.0);
+  EXPECT_DOUBLE_EQ(spec.controller.compaction.gain, 1.0);
+  EXPECT_DOUBLE_EQ(spec.controller.compaction.tolerance, 0.05);
+  EXPECT_DOUBLE_EQ(load_world_text("robots: {radius: 1.5, detection_radius: 6}\n", "w.yaml")
+                       .compaction_spacing(),
+                   3.0);
+  const WorldSpec set = load_world_text(
+      "controller:\n  compaction: {enabled: false, spacing: 2.5, gain: 3, tolerance: 0}\n",
+      "w.yaml");
+  EXPECT_FALSE(set.controller.compaction.enabled);
+  EXPECT_DOUBLE_EQ(set.compaction_spacing(), 2.5);
+  EXPECT_DOUBLE_EQ(set.controller.compaction.gain, 3.0);
+  EXPECT_DOUBLE_EQ(set.controller.compaction.tolerance, 0.0);
+  // Written back resolved, so the written world says what ran.
+  EXPECT_THAT(world_to_yaml(spec), HasSubstr("spacing: 2"));
+  EXPECT_DOUBLE_EQ(
+      load_world_text("{}", "w.yaml", {"controller.compaction.spacing=2.25"}).compaction_spacing(),
+      2.25);
+}
+
+TEST(WorldLoaderErrors, CompactionValuesAreChecked) {
+  EXPECT_THAT(error_of("controller: {compaction: {spacing: 0}}\n"),
+              HasSubstr("controller.compaction.spacing: expected a positive number"));
+  EXPECT_THAT(error_of("controller: {compaction: {gain: -1}}\n"),
+              HasSubstr("controller.compaction.gain: expected a positive number"));
+  EXPECT_THAT(error_of("controller: {compaction: {tolerance: -0.1}}\n"),
+              HasSubstr("controller.compaction.tolerance: expected a number >= 0"));
+  EXPECT_THAT(error_of("controller: {compaction: {spacing: 4}}\n"),
+              HasSubstr("controller.compaction.spacing: is 4 but must be below "
+                        "robots.detection_radius (4)"));
+  EXPECT_THAT(error_of("robots: {radius: 2, detection_radius: 4}\n"),
+              HasSubstr("is 4 (2 robots.radius) but must be below"));
+  EXPECT_EQ(error_of("robots: {radius: 2, detection_radius: 4}\n"
+                     "controller: {compaction: {enabled: false}}\n"),
+            "no error");
+  EXPECT_THAT(error_of("controller: {compaction: {spacng: 2}}\n"),
+              HasSubstr("did you mean 'controller.compaction.spacing'"));
+}
+
 TEST(WorldLoaderErrors, AMissingFileIsNamed) {
   try {
     load_world("/nonexistent/w.yaml");

@@ -269,6 +269,106 @@ TEST(CollisionController, PaperModePairsThenBothLeaveAtOnce) {
   EXPECT_EQ(f.events.dissipations, 1u);
 }
 
+// SPEC 3 "Compaction". Waiting agents that go on waiting close up under the spring force of
+// the waiting members of their aggregate they perceive.
+constexpr SignalMask kLeaveMask = mask_of(static_cast<Signal>(AgentState::Leave));
+
+TEST(Compaction, WaitingMembersPullEachOtherToTheSpacingAtMostAtV) {
+  ControllerFixture f(bayindir(true, false, 0.0));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13.5, 10, AgentState::Wait);
+  f.add(10, 12.5, AgentState::Wait);
+  f.decide();
+  // a: 1.5 towards b, 0.5 towards c; |F| = 1.58 > 1, so at v = 1.
+  const Vec2 force{1.5, 0.5};
+  const Vec2 expected = force * (1.0 / norm(force));
+  EXPECT_NEAR(f.commands[a].velocity.x, expected.x, 1e-12);
+  EXPECT_NEAR(f.commands[a].velocity.y, expected.y, 1e-12);
+  // b perceives only a (c is 4.30 away): 1.5, capped at v.
+  EXPECT_NEAR(norm(f.commands[b].velocity), 1.0, 1e-12);
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.commands[a].halt_on, 0u);
+  constexpr SignalMask kApproachMask = mask_of(static_cast<Signal>(AgentState::Approach));
+  EXPECT_EQ(f.commands[a].blocked_by, kWaitMask | kLeaveMask | kGoMask | kApproachMask);
+}
+
+TEST(Compaction, BelowTheToleranceAWaitingAgentStandsExactlyStill) {
+  WorldSpec spec = bayindir(true, false, 0.0);
+  spec.controller.compaction.gain = 2.0;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(12.04, 10, AgentState::Wait);  // |F| = 0.04 < 0.05
+  const auto c = f.add(30, 10, AgentState::Wait);
+  const auto d = f.add(32.3, 10, AgentState::Wait);  // |F| = 0.3: at gain 2, 0.6
+  f.decide();
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.0, 0.0}));
+  EXPECT_EQ(f.commands[b].velocity, (Vec2{0.0, 0.0}));
+  EXPECT_NEAR(f.commands[c].velocity.x, 0.6, 1e-12);
+  EXPECT_NEAR(f.commands[d].velocity.x, -0.6, 1e-12);
+  EXPECT_EQ(f.commands[c].velocity.y, 0.0);
+}
+
+TEST(Compaction, OnlyWaitingMembersPullAndTooCloseOnesPush) {
+  ControllerFixture f(bayindir(true, false, 0.0));
+  f.spec.controller.compaction.spacing = 2.5;
+  const auto a = f.add(10, 10, AgentState::Wait);
+  f.add(12, 10, AgentState::Wait);   // 0.5 closer than the spacing: pushes a to -x
+  f.add(10, 13, AgentState::Leave);  // not waiting: no force
+  f.add(10, 7, AgentState::Go);      // searching: joins, but pulls only from the next step
+  f.decide();
+  EXPECT_NEAR(f.commands[a].velocity.x, -0.5, 1e-12);
+  EXPECT_NEAR(f.commands[a].velocity.y, 0.0, 1e-12);
+}
+
+TEST(Compaction, UnderJoinFalseOnlyThePartnerPulls) {
+  ControllerFixture f(bayindir(false, false, 0.0));
+  const auto a = f.add(10, 10);
+  const auto b = f.add(13.5, 10);
+  const auto c = f.add(40, 10);
+  const auto d = f.add(40, 13.5);
+  f.decide();  // two pairs form, standing this step
+  EXPECT_EQ(f.swarm.partner[a], static_cast<std::int32_t>(b));
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.0, 0.0}));
+  f.positions[c] = {12.0, 13.0};  // c now within s of a and b, but in the other pair
+  f.positions[d] = {12.0, 16.5};
+  f.decide();
+  EXPECT_NEAR(f.commands[a].velocity.x, 1.0, 1e-12);
+  EXPECT_NEAR(f.commands[a].velocity.y, 0.0, 1e-12);
+  EXPECT_NEAR(f.commands[c].velocity.y, 1.0, 1e-12);
+  EXPECT_NEAR(f.commands[c].velocity.x, 0.0, 1e-12);
+}
+
+TEST(Compaction, DisabledWaitingAgentsStandAndLeaversStayPassable) {
+  WorldSpec spec = bayindir(true, false, 0.0);
+  spec.controller.compaction.enabled = false;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10, AgentState::Wait);
+  f.add(13.5, 10, AgentState::Wait);
+  f.decide();
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.0, 0.0}));
+  EXPECT_EQ(f.commands[a].blocked_by, kWaitMask);
+}
+
+// A leaver with neighbours all around (the sum of the vectors to them under
+// kEnclosedFraction of their lengths) draws its heading; one on the rim heads away.
+TEST(Compaction, AnEnclosedLeaverDrawsARandomHeadingARimLeaverHeadsAway) {
+  WorldSpec spec = bayindir(true, true, 1.0);  // everyone leaves at once
+  ControllerFixture f(spec);
+  const auto centre = f.add(50, 50, AgentState::Wait);
+  for (int k = 0; k < 6; ++k) {
+    const double angle = k * 3.141592653589793 / 3.0;
+    f.add(50 + 2.0 * std::cos(angle), 50 + 2.0 * std::sin(angle), AgentState::Wait);
+  }
+  f.decide();
+  ASSERT_EQ(f.swarm.state[centre], AgentState::Leave);
+  const Vec2 drawn = random_heading(CounterRng(11), 0, centre, Draw::EnclosedLeave);
+  EXPECT_EQ(f.swarm.heading[centre], drawn);
+  EXPECT_NE(drawn, (Vec2{1.0, 0.0}));
+  // Agent 1 (at +x) perceives the centre and its two neighbours, all to its -x side.
+  EXPECT_NEAR(f.swarm.heading[1].x, 1.0, 1e-12);
+  EXPECT_NEAR(f.swarm.heading[1].y, 0.0, 1e-12);
+}
+
 TEST(CollisionController, GhostModeMovesStraightAndTumbles) {
   WorldSpec spec;
   spec.controller.type = "collision";

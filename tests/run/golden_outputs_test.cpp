@@ -46,11 +46,14 @@ struct GoldenWorld {
 };
 
 // Overrides every golden world takes: short runs, and the settings of the outputs they pin.
-const std::vector<std::string> kShared = {"run.replicates=2", "run.threads=2"};
+// Compaction (SPEC 3) moves waiting agents; switched off, the outputs are those of the
+// still-standing waiting agents these hashes were recorded with.
+const std::vector<std::string> kShared = {"run.replicates=2", "run.threads=2",
+                                          "controller.compaction.enabled=false"};
 
 std::vector<GoldenWorld> golden_worlds() {
   return {
-      {"worlds/paper/full-0.0025.yaml", {"run.duration=400"}, 0x63a8566b5a2ff8d5ull},
+      {"worlds/paper/full-0.0025.yaml", {"run.duration=400"}, 0xf37f30048604f628ull},
       {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0xc01177127c91dcdcull},
       {"worlds/paper/creation-growing-80.yaml", {"run.duration=400"}, 0xe96da553d397e1cbull},
       {"worlds/paper/soysal-5-constant.yaml",

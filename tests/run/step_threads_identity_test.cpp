@@ -12,7 +12,7 @@
 #include <span>
 #include <vector>
 
-#include "config/paper_density_world.hpp"
+#include "bench/lib/paper_density_world.hpp"
 #include "config/world_loader.hpp"
 #include "run/replicate.hpp"
 
@@ -73,6 +73,8 @@ void expect_identical(const EndState& one, const EndState& many, int threads) {
 
 void check_thread_counts(const std::string& type) {
   const WorldSpec spec = identity_world(type);
+  // Waiting agents move too (SPEC 3's default), through the same guarded solver.
+  EXPECT_TRUE(spec.controller.compaction.enabled);
   const EndState one = run(spec, 1);
   // The comparison must see a world that did something.
   EXPECT_GT(one.events.encounters, 1000u);

@@ -109,7 +109,7 @@ TEST(WorldRunner, TheFullModelCreatesGrowsDissolvesAndShrinks) {
 TEST(InitialPlacement, RandomBodiesNeverOverlap) {
   WorldSpec spec = load_world_text("arena: {width: 60, height: 60}\nrobots: {count: 400}\n", "t");
   const InitialPlacement placed = place_agents(spec, CounterRng::for_replicate(1, 0));
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   ASSERT_EQ(placed.positions.size(), 400u);
   for (std::size_t i = 0; i < placed.positions.size(); ++i) {
     EXPECT_GE(placed.positions[i].x, 0.0);

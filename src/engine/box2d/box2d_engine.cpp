@@ -173,7 +173,7 @@ BodyShapes shapes_for(const WorldSpec& spec) {
 }
 
 Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
-    : geometry_(spec.arena),
+    : geometry_(spec.arena.geometry()),
       dt_(spec.engine.dt),
       detection_radius_(spec.robots.detection_radius),
       sensing_radius_(std::max(spec.sensing_radius(), spec.robots.detection_radius)),

@@ -12,17 +12,15 @@ constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
 
 }  // namespace
 
-// Earliest event first; simultaneous events in the reference scan order of their pairs,
-// then by kind, so the order never depends on how the heap or the pair list is arranged.
+// Earliest event first; simultaneous events by their pair's agent ids (i, then j), then by
+// kind, so the order never depends on how the heap or the pair list is arranged.
 bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
   if (a.time != b.time) return a.time > b.time;
   if (a.pair != b.pair) {
     const CandidatePair& p = pairs[a.pair];
     const CandidatePair& q = pairs[b.pair];
-    if (p.rank != q.rank) return p.rank > q.rank;
-    const std::uint32_t pa = p.a_is_j ? p.j : p.i, qa = q.a_is_j ? q.j : q.i;
-    if (pa != qa) return pa > qa;
-    return (p.a_is_j ? p.i : p.j) > (q.a_is_j ? q.i : q.j);
+    if (p.i != q.i) return p.i > q.i;
+    return p.j > q.j;
   }
   return a.kind > b.kind;
 }
@@ -105,6 +103,9 @@ void GuardedMotion::reset(std::size_t agents, double dt) {
     head_.assign(agents, 0u);
     head_stamp_.assign(agents, 0u);
     stamp_ = 0;
+    // Every agent halts at most once a step: room for all, so that a swarm whose halts
+    // keep growing (waiting agents pressing into packed aggregates) never reallocates.
+    halted_.reserve(agents);
   } else {
     for (const std::uint32_t agent : halted_) stop_time_[agent] = dt;
   }
@@ -125,6 +126,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     stamp_ = 0;
   }
   heap_.clear();
+  // Each pair schedules at most two events at the start and two more per halt of either
+  // agent; room for twice the pairs up front keeps the heap from growing step by step as
+  // aggregates densify.
+  if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
   for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
 
   std::uint64_t encounters = 0;

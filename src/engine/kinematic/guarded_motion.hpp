@@ -16,15 +16,12 @@
 namespace swarmagg {
 
 // Two agents that may meet during the step: i < j, `offset` from i to j at the step start.
-// Simultaneous events are processed in the order of (rank, a, b), where a is i, or j when
-// `a_is_j`, and b the other: the order in which the reference grid scan meets the pairs
-// (pair_convention.hpp), whatever order the pairs are listed in.
+// Simultaneous events are processed in the order of the pairs (i, j), whatever order the
+// pairs are listed in.
 struct CandidatePair {
   std::uint32_t i = 0;
   std::uint32_t j = 0;
   Vec2 offset;
-  std::uint32_t rank = 0;
-  bool a_is_j = false;
 };
 
 struct MotionLimits {

@@ -46,7 +46,7 @@ CommandSummary summarise(std::span<const MotionCommand> commands) {
 class KinematicEngine final : public Engine {
  public:
   KinematicEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
-      : arena_(spec.arena),
+      : arena_(spec.arena.geometry()),
         // Halting a hair inside s guarantees the halted pair perceives each other afterwards.
         limits_{spec.robots.detection_radius * (1.0 - 1e-9), 2.0 * spec.robots.radius,
                 spec.engine.dt},

@@ -1,7 +1,7 @@
 #pragma once
 // The paper's SWARM-AGG engine, made exact: finite-size points moving with their commanded
 // velocities, guarded moves and contacts resolved at the exact instant within the step,
-// neighbour search on a uniform grid (O(N) per step), torus or reflecting walls.
+// neighbour search in sorted strips (O(N) per step), torus or reflecting walls.
 #include <memory>
 #include <span>
 

@@ -7,71 +7,59 @@ namespace swarmagg {
 namespace {
 
 // The strips are searched a hair wider than the reach, so that no pair within the reach is
-// lost to rounding in the strip bounds; the convention then applies the exact reach.
+// lost to rounding in the strip bounds; the exact radii apply to the minimum-image offset.
 constexpr double kWindowMargin = 1e-9;
 // Agents per task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerTask = 16384;
 
 }  // namespace
 
-NeighbourSearch::Plan NeighbourSearch::plan(const ArenaGeometry& arena, std::size_t agents,
-                                            const SearchRadii& radii) {
-  radii_ = radii;
-  Plan p;
-  p.reach = std::max(radii.sensing, radii.pair_reach);
-  // Cells much smaller than the spacing between agents cost more to sweep than the
-  // distance checks they save (the reference grid's own rule; it fixes the convention).
-  const double spacing = std::sqrt(arena.width() * arena.height() /
-                                   static_cast<double>(std::max<std::size_t>(1, agents)));
-  p.min_cell = std::max(p.reach, 1.2 * spacing);
-  convention_ = PairConvention(arena, p.min_cell);
-  p.window = p.reach * (1.0 + kWindowMargin);
-  p.strips = !convention_.scans_all_pairs() && SortedStrips::fits(arena, p.window);
-  return p;
-}
-
 void NeighbourSearch::find(const ArenaGeometry& arena, std::span<const Vec2> positions,
                            const SearchRadii& radii, StepThreads& threads) {
-  const Plan p = plan(arena, positions.size(), radii);
-  if (!p.strips) return scan_grid(arena, positions, p.min_cell, p.reach);
-  strips_.update(arena, p.window, positions, threads);
-  scan(p, positions.size(), threads);
+  radii_ = radii;
+  arena_ = arena;
+  const double reach = std::max(radii.sensing, radii.pair_reach);
+  const double window = reach * (1.0 + kWindowMargin);
+  if (!SortedStrips::fits(arena, window)) return scan_small(arena, positions, reach);
+  strips_.update(arena, window, positions, threads);
+  scan_strips(positions.size(), threads);
 }
 
-void NeighbourSearch::scan(const Plan& p, std::size_t agents, StepThreads& threads) {
+inline void NeighbourSearch::report(Found& out, std::uint32_t i, std::uint32_t j,
+                                    Vec2 offset) const {
+  const double d2 = norm2(offset);
+  if (radii_.perception && d2 <= radii_.sensing * radii_.sensing) {
+    out.close.push_back({i, j, offset, std::sqrt(d2)});
+  }
+  if (d2 <= radii_.pair_reach * radii_.pair_reach) out.candidates.push_back({i, j, offset});
+}
+
+void NeighbourSearch::scan_strips(std::size_t agents, StepThreads& threads) {
   const int tasks = std::max(
       1, std::min({threads.size(), strips_.strips(), static_cast<int>(agents / kAgentsPerTask)}));
   if (found_.size() < static_cast<std::size_t>(tasks))
     found_.resize(static_cast<std::size_t>(tasks));
-  auto scan_one = [&](int task) { scan_task(task, tasks, p.reach); };
+  auto scan_one = [&](int task) { scan_task(task, tasks); };
   threads.run(tasks, scan_one);
   join_tasks(tasks);
 }
 
-void NeighbourSearch::scan_task(int task, int tasks, double reach) {
+void NeighbourSearch::scan_task(int task, int tasks) {
   Found& out = found_[static_cast<std::size_t>(task)];
   out.candidates.clear();
   out.close.clear();
   const auto strips = static_cast<std::size_t>(strips_.strips());
   const auto first = static_cast<int>(StepThreads::slice_begin(strips, task, tasks));
   const auto last = static_cast<int>(StepThreads::slice_begin(strips, task + 1, tasks));
-  const double reach2 = reach * reach;
-  const double sense2 = radii_.sensing * radii_.sensing;
-  const double pair2 = radii_.pair_reach * radii_.pair_reach;
-  const bool perception = radii_.perception;
   strips_.for_each_candidate(first, last, [&](std::uint32_t a, std::uint32_t b) {
-    const auto pair = convention_.report(strips_.id(a), strips_.position(a), strips_.id(b),
-                                         strips_.position(b), reach2);
-    if (!pair) return;
-    if (perception && pair->d2 <= sense2) {
-      out.close.push_back({pair->i, pair->j, pair->offset, std::sqrt(pair->d2)});
-    }
-    if (pair->d2 <= pair2) {
-      out.candidates.push_back({pair->i, pair->j, pair->offset, pair->rank, pair->a_is_j});
+    const std::uint32_t id_a = strips_.id(a), id_b = strips_.id(b);
+    if (id_a < id_b) {
+      report(out, id_a, id_b, arena_.displacement(strips_.position(a), strips_.position(b)));
+    } else {
+      report(out, id_b, id_a, arena_.displacement(strips_.position(b), strips_.position(a)));
     }
   });
 }
-
 void NeighbourSearch::join_tasks(int tasks) {
   if (tasks == 1) {
     candidates_ = found_[0].candidates;
@@ -98,23 +86,17 @@ void NeighbourSearch::join_tasks(int tasks) {
   close_ = joined_close_;
 }
 
-// Small or narrow worlds: the reference grid itself, whose scan order is the convention
-// (rank = position in the list).
-void NeighbourSearch::scan_grid(const ArenaGeometry& arena, std::span<const Vec2> positions,
-                                double min_cell, double reach) {
-  grid_.rebuild(arena, min_cell, positions);
+// Worlds too small or narrow for three strips.
+void NeighbourSearch::scan_small(const ArenaGeometry& arena, std::span<const Vec2> positions,
+                                 double reach) {
+  small_world_.reset(arena, reach, positions.size());
+  for (const Vec2& p : positions) small_world_.add(p);
   if (found_.empty()) found_.resize(1);
   Found& out = found_[0];
   out.candidates.clear();
   out.close.clear();
-  const double sense2 = radii_.sensing * radii_.sensing;
-  const double pair2 = radii_.pair_reach * radii_.pair_reach;
-  grid_.for_each_close_pair(reach, [&](std::uint32_t i, std::uint32_t j, Vec2 d, double d2) {
-    if (radii_.perception && d2 <= sense2) out.close.push_back({i, j, d, std::sqrt(d2)});
-    if (d2 <= pair2) {
-      out.candidates.push_back({i, j, d, static_cast<std::uint32_t>(out.candidates.size()), false});
-    }
-  });
+  small_world_.for_each_pair(
+      [&](std::uint32_t i, std::uint32_t j, Vec2 offset) { report(out, i, j, offset); });
   join_tasks(1);
 }
 

@@ -2,19 +2,19 @@
 // The pairs of agents one step needs, found after the previous step: those within the
 // sensing radius (what the agents perceive) and those close enough to meet during the next
 // step (the guarded-motion solver's candidates). Pairs are searched in sorted strips
-// (sorted_strips.hpp) and reported as the reference grid would (pair_convention.hpp); worlds
-// too small for three strips or three grid cells along an axis are searched by the
-// reference grid itself (uniform_grid.hpp). Several threads may search strips at once; each fills
-// its own buffers, joined in strip order, so the result does not depend on the thread count.
+// (sorted_strips.hpp); worlds too small for three strips by the arena's pair finder
+// (geometry/pair_finder.hpp). Either way a pair is reported as a function of the pair alone:
+// i < j and the minimum-image offset from i to j, so results never depend on which search
+// found it. Several threads may search strips at once; each fills its own buffers, joined in
+// strip order, so the result does not depend on the thread count.
 #include <span>
 #include <vector>
 
+#include "control_interface/neighbour_lists.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
-#include "engine/kinematic/pair_convention.hpp"
 #include "engine/kinematic/sorted_strips.hpp"
 #include "engine/kinematic/step_threads.hpp"
-#include "engine/kinematic/uniform_grid.hpp"
-#include "control_interface/neighbour_lists.hpp"
+#include "geometry/pair_finder.hpp"
 
 namespace swarmagg {
 
@@ -34,30 +34,22 @@ class NeighbourSearch {
   std::span<const ClosePair> close_pairs() const { return close_; }
 
  private:
-  struct Plan {
-    double reach = 0.0;
-    double min_cell = 0.0;  // of the reference grid
-    double window = 0.0;    // of the strips
-    bool strips = false;    // false: the reference grid searches
-  };
-  Plan plan(const ArenaGeometry& arena, std::size_t agents, const SearchRadii& radii);
-  void scan(const Plan& plan, std::size_t agents, StepThreads& threads);
-
   struct Found {
     AgentArray<CandidatePair> candidates;
     AgentArray<ClosePair> close;
   };
 
-  void scan_grid(const ArenaGeometry& arena, std::span<const Vec2> positions, double min_cell,
-                 double reach);
-  void scan_strips(double reach, StepThreads& threads);
-  void scan_task(int task, int tasks, double reach);
+  // Files the pair i < j, `offset` from i to j, by its distance.
+  void report(Found& out, std::uint32_t i, std::uint32_t j, Vec2 offset) const;
+  void scan_strips(std::size_t agents, StepThreads& threads);
+  void scan_task(int task, int tasks);
+  void scan_small(const ArenaGeometry& arena, std::span<const Vec2> positions, double reach);
   void join_tasks(int tasks);
 
   SearchRadii radii_;
-  PairConvention convention_;
+  ArenaGeometry arena_{1.0, 1.0, Topology::Torus};
   SortedStrips strips_;
-  UniformGrid grid_;
+  PairFinder small_world_;
   std::vector<Found> found_;  // per task
   std::span<const CandidatePair> candidates_;
   std::span<const ClosePair> close_;

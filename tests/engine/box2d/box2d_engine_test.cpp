@@ -59,7 +59,7 @@ TEST(Box2DEngine, NeighbourListsMatchBruteForce) {
   const WorldSpec spec = box2d_world(80.0, 60.0, 300);
   const auto start = random_positions(spec, 300, 2.0, 11);
   auto engine = make_box2d_engine(spec, start);
-  const ArenaGeometry geometry(spec.arena);
+  const ArenaGeometry geometry = spec.arena.geometry();
   expect_brute_force_neighbours(*engine, geometry, 4.0);        // the initial placement too
   const auto commands = moving(random_headings(300, 12), 1.0);  // ghosts: they pass
   const std::vector<Signal> signals(300, kGo);
@@ -76,7 +76,7 @@ TEST(Box2DEngine, NeighbourListsReachTheSensingRadius) {
   spec.controller.approach_radius = 12.0;
   const auto start = random_positions(spec, 200, 2.0, 21);
   auto engine = make_box2d_engine(spec, start);
-  const ArenaGeometry geometry(spec.arena);
+  const ArenaGeometry geometry = spec.arena.geometry();
   const auto commands = moving(random_headings(200, 22), 1.0);
   const std::vector<Signal> signals(200, kGo);
   std::uint64_t encounters = 0;
@@ -183,7 +183,7 @@ TEST(Box2DEngine, FastAgentsAreSubsteppedNotClamped) {
     std::vector<MotionCommand> c(2);
     c[0].velocity = Vec2{0.6, 0.8} * speed;
     const std::vector<Signal> signals{kGo, kGo};
-    const ArenaGeometry geometry(spec.arena);
+    const ArenaGeometry geometry = spec.arena.geometry();
     Vec2 last = start[0];
     for (int k = 0; k < 10; ++k) {
       engine->step(c, signals);
@@ -262,7 +262,7 @@ TEST(Box2DEngine, BodiesNeverOverlapMuch) {
     spec.engine.box2d.substeps = substeps;
     const auto start = random_positions(spec, 250, 2.0, 41);
     auto engine = make_box2d_engine(spec, start);
-    const ArenaGeometry geometry(spec.arena);
+    const ArenaGeometry geometry = spec.arena.geometry();
     const auto commands = moving(random_headings(250, 42), 1.0, kAll);
     const std::vector<Signal> signals(250, kGo);
     double worst = INFINITY;

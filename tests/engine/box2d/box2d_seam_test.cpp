@@ -22,7 +22,7 @@ struct ScenarioRun {
 ScenarioRun run_scenario(const WorldSpec& spec, Vec2 centre, const std::vector<Vec2>& offsets,
                          const std::vector<MotionCommand>& commands,
                          const std::vector<Signal>& signals, int steps) {
-  const ArenaGeometry geometry(spec.arena);
+  const ArenaGeometry geometry = spec.arena.geometry();
   std::vector<Vec2> start;
   for (const Vec2& o : offsets) start.push_back(geometry.wrap(centre + o));
   auto engine = make_box2d_engine(spec, start);
@@ -193,7 +193,7 @@ TEST(Box2DTorus, TeleportedBodyKeepsItsVelocity) {
   for (int k = 0; k < 30; ++k) {
     engine->step(commands, signals);
     const Vec2 p = engine->positions()[0];
-    const ArenaGeometry geometry(spec.arena);
+    const ArenaGeometry geometry = spec.arena.geometry();
     const Vec2 moved = geometry.displacement(last, p);
     EXPECT_NEAR(moved.x, 0.1, 1e-5) << "step " << k;
     EXPECT_NEAR(moved.y, 0.05, 1e-5) << "step " << k;

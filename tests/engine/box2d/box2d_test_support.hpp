@@ -41,7 +41,7 @@ inline WorldSpec box2d_world(double width, double height, int count,
 inline std::vector<Vec2> random_positions(const WorldSpec& spec, int count, double min_distance,
                                           std::uint64_t seed, double border = 0.0) {
   std::mt19937_64 rng(seed);
-  const ArenaGeometry geometry(spec.arena);
+  const ArenaGeometry geometry = spec.arena.geometry();
   std::uniform_real_distribution<double> ux(border, spec.arena.width - border);
   std::uniform_real_distribution<double> uy(border, spec.arena.height - border);
   std::vector<Vec2> out;

@@ -33,7 +33,7 @@ TEST(KinematicEngine, NeighbourListsMatchBruteForceAndAreSortedByDistance) {
   std::vector<Vec2> positions(300);
   for (Vec2& p : positions) p = {ux(gen), uy(gen)};
   auto engine = make_kinematic_engine(spec, positions);
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   for (std::uint32_t i = 0; i < positions.size(); ++i) {
     std::vector<std::uint32_t> expected;
     for (std::uint32_t j = 0; j < positions.size(); ++j) {
@@ -89,7 +89,7 @@ TEST(KinematicEngine, GuardedMoveHaltsAcrossTheSeam) {
                                             moving({-10.0, 0.0}, mask_of(kGo))};
   const std::vector<Signal> signals{kGo, kGo};
   EXPECT_EQ(engine->step(commands, signals).encounters, 1u);  // 5 apart, closing 2 per step
-  const ArenaGeometry arena(spec.arena);
+  const ArenaGeometry arena = spec.arena.geometry();
   const double gap = arena.distance(engine->positions()[0], engine->positions()[1]);
   EXPECT_LE(gap, 4.0);
   EXPECT_GT(gap, 4.0 - 1e-6);
@@ -116,6 +116,36 @@ TEST(KinematicEngine, BlockedBodyStopsAtContactAndMayStillMoveAway) {
   const std::vector<MotionCommand> away{moving({-10.0, 0.0}, 0, mask_of(kWait)), moving({})};
   engine->step(away, signals);
   EXPECT_NEAR(engine->positions()[0].x, 47.0, 1e-9);
+}
+
+// Compaction's moves (SPEC 3): two waiting bodies closing in on each other, each blocked by
+// the other, stop together at contact.
+TEST(KinematicEngine, TwoBlockedBodiesMovingTogetherStopAtContact) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{48.25, 50.0}, {51.75, 50.0}});
+  const std::vector<Signal> signals{kWait, kWait};
+  const std::vector<MotionCommand> closing{moving({10.0, 0.0}, 0, mask_of(kWait)),
+                                           moving({-10.0, 0.0}, 0, mask_of(kWait))};
+  engine->step(closing, signals);
+  EXPECT_NEAR(engine->positions()[0].x, 49.0, 1e-9);
+  EXPECT_NEAR(engine->positions()[1].x, 51.0, 1e-9);
+}
+
+// Bodies already touching and pressed towards each other do not move at all (they halt at
+// the start of the step), while one pushed sideways along the other slides.
+TEST(KinematicEngine, TouchingBlockedBodiesPressedTogetherHaltAtOnce) {
+  WorldSpec spec = arena_world(100.0, 100.0);
+  const std::vector<Vec2> start{{49.0, 50.0}, {51.0, 50.0}, {60.0, 50.0}, {62.0, 50.0}};
+  auto engine = make_kinematic_engine(spec, start);
+  const std::vector<Signal> signals{kWait, kWait, kWait, kWait};
+  const SignalMask solid = mask_of(kWait);
+  const std::vector<MotionCommand> pressed{
+      moving({0.5, 0.1}, 0, solid), moving({-0.5, 0.0}, 0, solid),  // into each other
+      moving({0.0, 1.0}, 0, solid), moving({}, 0, solid)};          // along the other
+  for (int k = 0; k < 10; ++k) engine->step(pressed, signals);
+  EXPECT_EQ(engine->positions()[0], start[0]);
+  EXPECT_EQ(engine->positions()[1], start[1]);
+  EXPECT_NEAR(engine->positions()[2].y, 51.0, 1e-9);
 }
 
 TEST(KinematicEngine, AHaltedAgentDoesNotMeetWhatLayBeyondItsStop) {

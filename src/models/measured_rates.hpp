@@ -1,0 +1,32 @@
+#pragma once
+// The `measured` model variants (SPEC 5.4): the same model equations fed with the terms a
+// simulation measured. Bayindir: creation per searcher pair and growth per (searcher,
+// size-m aggregate) pair; Soysal: pair-up P_e(1) and join P_e(i), the same measurements.
+// A term not measured (fewer than the events an estimate needs, or sizes the runs never
+// held) keeps the model's own value: creation from model.creation, growth from SPEC 5.2 /
+// 5.3, leaving from Bayindir's p min(m, periph(m)) or Soysal's model.leaving variant.
+// Agents leave at the measured LEAVE attempt rate per size: an attempt that does not escape
+// rejoins, and that return is already in the measured growth (join) rate.
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "models/bayindir_rates.hpp"
+#include "models/measured_terms.hpp"
+#include "models/model_series.hpp"
+#include "models/soysal_rates.hpp"
+
+namespace swarmagg {
+
+BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerms& terms);
+SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& terms);
+
+// Tidy values that say which terms of a measured variant were measured and which came from
+// the model: `terms:creation_measured` (0 or 1), `terms:growth_sizes_measured` and, when
+// the world leaves, `terms:leave_sizes_measured` (counts of sizes).
+std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const MeasuredTerms& terms);
+
+// The same in words, one sentence, for the command line and rates.json.
+std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& terms);
+
+}  // namespace swarmagg

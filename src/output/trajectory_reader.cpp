@@ -1,0 +1,80 @@
+#include "output/trajectory_reader.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "output/trajectory_layout.hpp"
+
+namespace swarmagg {
+namespace {
+
+namespace layout = trajectory_layout;
+
+}  // namespace
+
+TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : path_(path) {
+  if (!std::filesystem::is_regular_file(path)) {
+    throw InputError(path.string() +
+                     ": no trajectory file (run with --trajectories K or run.trajectories: K)");
+  }
+  std::lock_guard lock(h5::hdf5_lock());
+  try {
+    file_ = h5::open_file_read(path.string());
+    if (h5::read_string_attribute(file_, "format") != layout::kFormat) throw std::runtime_error("");
+    world_text_ = h5::read_string_attribute(file_, "world");
+    every_ = h5::read_int_attribute(file_, "every");
+    agents_ = h5::read_int_attribute(file_, "agents");
+    replicates_ = static_cast<int>(h5::read_int_attribute(file_, "replicates"));
+  } catch (const std::runtime_error&) {
+    throw InputError(path.string() +
+                     ": not a swarmagg trajectory file (expected attribute format '" +
+                     layout::kFormat + "')");
+  }
+}
+
+h5::Handle TrajectoryReader::replicate_group(int replicate) const {
+  const std::string name = layout::group_name(replicate);
+  if (replicate < 0 || replicate >= replicates_ || !h5::has_child(file_, name)) {
+    throw InputError(path_.string() + ": no replicate " + std::to_string(replicate) +
+                     " (the file holds replicates 0.." + std::to_string(replicates_ - 1) + ")");
+  }
+  return h5::open_group(file_, name);
+}
+
+std::vector<std::int64_t> TrajectoryReader::steps(int replicate) const {
+  std::lock_guard lock(h5::hdf5_lock());
+  const h5::Handle group = replicate_group(replicate);
+  const h5::Handle steps = h5::open_dataset(group, "step");
+  std::vector<std::int64_t> values;
+  h5::read_rows(steps, 0, h5::dataset_shape(steps)[0], values);
+  return values;
+}
+
+void TrajectoryReader::read(int replicate, std::int64_t row, TrajectoryRow& out) const {
+  std::lock_guard lock(h5::hdf5_lock());
+  const h5::Handle group = replicate_group(replicate);
+  h5::read_rows(h5::open_dataset(group, "step"), row, 1, step_);
+  h5::read_rows(h5::open_dataset(group, "time"), row, 1, time_);
+  h5::read_rows(h5::open_dataset(group, "x"), row, 1, x_);
+  h5::read_rows(h5::open_dataset(group, "y"), row, 1, y_);
+  h5::read_rows(h5::open_dataset(group, "heading"), row, 1, out.heading);
+  h5::read_rows(h5::open_dataset(group, "state"), row, 1, state_);
+  h5::read_rows(h5::open_dataset(group, "aggregate"), row, 1, out.aggregate);
+  out.step = step_[0];
+  out.time = time_[0];
+  out.positions.resize(x_.size());
+  out.states.resize(state_.size());
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    out.positions[i] = {x_[i], y_[i]};
+    if (state_[i] >= kAgentStateCount) {
+      throw InputError(path_.string() + ": agent state " + std::to_string(state_[i]) +
+                       " out of range at row " + std::to_string(row));
+    }
+    out.states[i] = static_cast<AgentState>(state_[i]);
+  }
+  const auto largest = std::max_element(out.aggregate.begin(), out.aggregate.end());
+  out.noa = largest == out.aggregate.end() ? 0 : std::max(0, *largest + 1);
+}
+
+}  // namespace swarmagg

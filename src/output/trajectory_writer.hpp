@@ -1,0 +1,86 @@
+#pragma once
+// Writes trajectories.h5 (layout in trajectory_layout.hpp) while replicates run in parallel.
+// The file is built under a temporary name beside the target and renamed over it by
+// commit(), so an interrupted run leaves no half-written .h5: without commit() the
+// destructor removes the temporary.
+//
+// Memory stays bounded: each replicate keeps one chunk's worth of rows (about
+// trajectory_layout::kChunkElements values per column) and writes a block of rows when it
+// fills. Replicates write under h5::hdf5_lock(), one at a time.
+#include <cstdint>
+#include <filesystem>
+#include <mutex>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "core/agent_state.hpp"
+#include "core/vec2.hpp"
+#include "observers/swarm_snapshot.hpp"
+#include "output/hdf5_file.hpp"
+
+namespace swarmagg {
+
+class TrajectoryWriter;
+
+// One replicate's datasets and its buffer of rows not yet written.
+class ReplicateTrajectory {
+ public:
+  ReplicateTrajectory(ReplicateTrajectory&&) = default;
+  ~ReplicateTrajectory() = default;
+
+  // Stores one step: the snapshot's positions, states and aggregate ids, and the headings.
+  void record(const SwarmSnapshot& snapshot, std::span<const Vec2> heading);
+  // Writes the buffered rows; throws unless every row of the replicate was recorded.
+  void finish();
+
+ private:
+  friend class TrajectoryWriter;
+  ReplicateTrajectory(const h5::Handle& file, int replicate, std::uint64_t seed, std::int64_t rows,
+                      std::int64_t agents);
+  void flush();
+
+  std::int64_t rows_;
+  std::int64_t agents_;
+  std::int64_t block_rows_;     // rows written at once (one chunk's rows)
+  std::int64_t rows_done_ = 0;  // rows written to the file
+  h5::Handle group_;
+  h5::Handle step_set_, time_set_, x_set_, y_set_, heading_set_, state_set_, aggregate_set_;
+  std::vector<std::int64_t> step_;
+  std::vector<double> time_, x_, y_;
+  std::vector<float> heading_;
+  std::vector<std::uint8_t> state_;
+  std::vector<std::int32_t> aggregate_;
+};
+
+class TrajectoryWriter {
+ public:
+  // Creates the temporary file with the root attributes; `world_text` is the resolved world.
+  TrajectoryWriter(const WorldSpec& spec, const std::string& world_text,
+                   std::filesystem::path target);
+  ~TrajectoryWriter();  // removes the temporary unless committed
+  TrajectoryWriter(const TrajectoryWriter&) = delete;
+  TrajectoryWriter& operator=(const TrajectoryWriter&) = delete;
+
+  // The datasets of replicate `index` (thread-safe; one call per replicate).
+  ReplicateTrajectory begin_replicate(int index, std::uint64_t seed);
+  // Writes the seeds, closes the file and renames it over the target. Every replicate's
+  // ReplicateTrajectory must have finished and been destroyed.
+  void commit();
+
+  const std::filesystem::path& target() const { return target_; }
+
+ private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  std::int64_t rows_;
+  std::int64_t agents_;
+  std::vector<std::uint64_t> seeds_;
+  std::vector<bool> begun_;
+  std::mutex seeds_mutex_;
+  h5::Handle file_;
+  bool committed_ = false;
+};
+
+}  // namespace swarmagg

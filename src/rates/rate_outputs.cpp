@@ -1,0 +1,27 @@
+#include "rates/rate_outputs.hpp"
+
+#include <iostream>
+
+#include "output/atomic_file.hpp"
+#include "plot/gnuplot.hpp"
+#include "rates/rates_csv.hpp"
+#include "rates/rates_json.hpp"
+#include "rates/rates_plot.hpp"
+
+namespace swarmagg {
+
+std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally& tally,
+                                        const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  const std::vector<RateRow> rows = measured_rate_rows(world, tally);
+  write_file_atomic(folder / "rates.csv", rates_csv(rows));
+  write_file_atomic(folder / "rates.json", rates_json(world, tally, rows));
+  if (gnuplot_available()) {
+    plot_rates(world, rows, folder);
+  } else {
+    std::cerr << "note: gnuplot not found: no rate plots (install gnuplot-nox)\n";
+  }
+  return rows;
+}
+
+}  // namespace swarmagg

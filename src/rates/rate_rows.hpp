@@ -1,0 +1,46 @@
+#pragma once
+// The measured terms of SPEC 5.4 as rows: one per term (and size), each with its estimate
+// and what every model variant says the term is. Terms:
+//  - creation (Bayindir and collision worlds) / pairup (Soysal): creations per searcher pair
+//    per tu; models: original 2 sqrt 2 s v / A, collision 2 kappa s v / A (8 s v / (pi A)
+//    kinetic), Soysal's P_e(1) / dt;
+//  - growth / join, by the size m joined: growths per searcher per size-m aggregate per tu;
+//    models: 2 rho_m v / A (SPEC 5.2), Soysal's P_e(m) / dt;
+//  - initial, by size m: aggregates of size m right after the first decision per replicate
+//    (exposure: replicates), against the placement expectation (models/initial_state.hpp).
+//  - attempt / escape, by the size m left: LEAVE attempts (escapes: attempts that ended
+//    with no waiting member of the aggregate left within s) per size-m aggregate per tu;
+//    models: attempts m P_l(m) / dt, escapes the variant's loss (Bayindir p min(m,
+//    periph(m)), Soysal L(m)).
+// The radius and rim terms (aggregate geometry) are not measured here yet.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "models/measured_terms.hpp"
+#include "rates/poisson_interval.hpp"
+#include "rates/rate_tally.hpp"
+
+namespace swarmagg {
+
+struct ModelTerm {
+  std::string model;    // bayindir | soysal
+  std::string variant;  // original | collision | peripheral
+  double rate = 0.0;    // in the row's unit
+};
+
+struct RateRow {
+  std::string term;
+  std::optional<int> size = {};  // empty where size does not apply
+  RateEstimate estimate = {};
+  std::vector<ModelTerm> models = {};  // one per model variant that predicts the term
+};
+
+std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally);
+
+// The terms a measured model variant uses: rates with enough events, and the measured
+// initial state (events / exposure, whatever the count: a mean count of 0 is a measurement).
+MeasuredTerms measured_terms(const std::vector<RateRow>& rows);
+
+}  // namespace swarmagg

@@ -1,0 +1,31 @@
+#pragma once
+// The events and exposures of SPEC 5.4, summed over the steps of one or more replicates.
+// Exposures are kept in steps (whole numbers, so sums are exact and independent of the
+// order replicates are merged in); multiply by dt for tu. "Searchers" are the model's y:
+// every agent in no aggregate (a LEAVE agent too: the models have no leave timeout), or
+// all N agents in a collision world (every agent keeps moving there).
+#include <cstdint>
+#include <vector>
+
+namespace swarmagg {
+
+struct RateTally {
+  int agents = 0;
+  int replicates = 0;
+  std::uint64_t steps = 0;             // steps of exposure, over all replicates
+  std::uint64_t creations = 0;         // creations (collision worlds: encounters) after step 1
+  std::vector<std::uint64_t> growths;  // [m] growths into an aggregate of size m after step 1
+  std::uint64_t pair_steps = 0;        // sum of y (y - 1) / 2
+  std::vector<std::uint64_t> searcher_aggregate_steps;  // [m] sum of y n_m
+  std::vector<std::uint64_t> aggregate_steps;           // [m] sum of n_m
+  // [m] aggregates of size m right after the first decision, summed over replicates.
+  std::vector<std::uint64_t> initial_aggregates;
+  // LEAVE episodes by the size m of the aggregate left (observers/leave_episodes.hpp): the
+  // attempts, the escapes and their exposure (aggregates of size m at each decision).
+  std::vector<std::uint64_t> attempts, escapes, leave_aggregate_steps;
+
+  explicit RateTally(int agent_count = 0);
+  void merge(const RateTally& other);
+};
+
+}  // namespace swarmagg

@@ -1,0 +1,92 @@
+#include "rates/rates_csv.hpp"
+
+#include <cmath>
+
+#include "analysis/csv_table.hpp"
+#include "analysis/csv_text.hpp"
+#include "core/errors.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+constexpr const char* kHeader =
+    "term,size,events,exposure,rate,ci_low,ci_high,model,variant,model_rate";
+
+std::string optional_number(const std::optional<double>& value) {
+  return value ? csv_number(*value) : "";
+}
+
+std::string measured_columns(const RateRow& row) {
+  const RateEstimate& e = row.estimate;
+  return row.term + "," + (row.size ? std::to_string(*row.size) : "") + "," +
+         std::to_string(e.events) + "," + csv_number(e.exposure) + "," + optional_number(e.rate) +
+         "," + optional_number(e.low) + "," + optional_number(e.high);
+}
+
+}  // namespace
+
+std::string rates_csv(const std::vector<RateRow>& rows) {
+  std::string out = std::string(kHeader) + "\n";
+  for (const RateRow& row : rows) {
+    const std::string measured = measured_columns(row);
+    if (row.models.empty()) out += measured + ",,,\n";
+    for (const ModelTerm& m : row.models) {
+      out += measured + "," + m.model + "," + m.variant + "," + csv_number(m.rate) + "\n";
+    }
+  }
+  return out;
+}
+
+std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
+  CsvTable table;
+  try {
+    table = read_csv(file);
+  } catch (const std::exception& e) {
+    throw InputError(file.string() + ": cannot read rates: " + e.what());
+  }
+  std::string header;
+  for (const std::string& column : table.header) header += (header.empty() ? "" : ",") + column;
+  if (header != kHeader) {
+    throw InputError(file.string() + ": line 1: expected the rates.csv header `" +
+                     std::string(kHeader) + "`");
+  }
+  std::vector<RateRow> rows;
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const std::vector<std::string>& cells = table.rows[i];
+    const std::string where = file.string() + ": line " + std::to_string(i + 2);
+    if (cells.size() < 7) throw InputError(where + ": expected 10 columns");
+    auto number = [&](std::size_t column) {
+      double value = 0.0;
+      try {
+        value = table.number(i, column);
+      } catch (const std::exception&) {
+        throw InputError(where + ": column " + table.header[column] + ": expected a number");
+      }
+      if (column >= 2 && column < 4 && std::isnan(value)) {
+        throw InputError(where + ": column " + table.header[column] + ": expected a number");
+      }
+      return value;
+    };
+    RateRow row{.term = cells.at(0)};
+    if (!cells.at(1).empty()) row.size = static_cast<int>(number(1));
+    row.estimate.events = static_cast<std::uint64_t>(number(2));
+    row.estimate.exposure = number(3);
+    for (const auto& [column, field] :
+         {std::pair{4, &row.estimate.rate}, {5, &row.estimate.low}, {6, &row.estimate.high}}) {
+      const double value = number(static_cast<std::size_t>(column));
+      if (!std::isnan(value)) *field = value;
+    }
+    if (!rows.empty() && rows.back().term == row.term && rows.back().size == row.size) {
+      row = rows.back();
+      rows.pop_back();
+    }
+    if (cells.size() > 9 && !cells[7].empty()) {
+      row.models.push_back({cells[7], cells[8], number(9)});
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,17 @@
+#pragma once
+// rates.json (SPEC 5.4): every measured term with its 95% interval and, per model variant,
+// the model's value and the ratio measured / model with its interval; the initial state;
+// which terms are not measured yet and why; what the measured variant took from the model.
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "rates/rate_rows.hpp"
+#include "rates/rate_tally.hpp"
+
+namespace swarmagg {
+
+std::string rates_json(const WorldSpec& world, const RateTally& tally,
+                       const std::vector<RateRow>& rows);
+
+}  // namespace swarmagg

@@ -1,0 +1,29 @@
+#include "rates/rates_text.hpp"
+
+#include "output/format_text.hpp"
+
+namespace swarmagg {
+
+std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
+  std::vector<std::string> lines;
+  for (const RateRow& row : rows) {
+    const RateEstimate& e = row.estimate;
+    std::string line = row.term + (row.size ? " " + std::to_string(*row.size) : "") + ": ";
+    if (!e.rate) {
+      line += "too few events (" + std::to_string(e.events) + ")";
+    } else {
+      line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high) + " from " +
+              std::to_string(e.events) + " events";
+      for (const ModelTerm& m : row.models) {
+        if (m.rate <= 0.0) continue;
+        line +=
+            "; /" + m.variant +
+            format_text(" %.3f [%.3f, %.3f]", *e.rate / m.rate, *e.low / m.rate, *e.high / m.rate);
+      }
+    }
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+}  // namespace swarmagg

@@ -1,0 +1,72 @@
+#include "run/rate_collector.hpp"
+
+#include <algorithm>
+
+#include "controllers/controller_registry.hpp"
+#include "rates/rate_recorder.hpp"
+#include "run/replicate.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+class RateObserver final : public ReplicateObserver {
+ public:
+  RateObserver(const WorldSpec& spec, std::optional<RateTally>& slot)
+      : recorder_(spec.robots.count, spec.steps()),
+        slot_(slot),
+        collision_(controller_rules(spec).model == ModelFamily::Encounters) {}
+
+  void observe(const Replicate& replicate) override {
+    replicate_ = &replicate;  // alive until finish(): run_replicate owns it
+    const auto sizes = replicate.aggregates().sizes();
+    int free = replicate.spec().robots.count;
+    if (!collision_) {
+      for (const std::int32_t size : sizes) free -= size;
+    }
+    const EventCounts& events = replicate.events();
+    recorder_.observe(replicate.steps_done(), free, sizes,
+                      collision_ ? events.encounters : events.creations,
+                      replicate.growths_by_size());
+  }
+  void finish() override {
+    RateTally tally = recorder_.finish();
+    if (replicate_) add_leave_episodes(replicate_->leave_episodes().tally(), tally);
+    slot_ = std::move(tally);
+  }
+
+ private:
+  static void add_leave_episodes(const LeaveTally& leave, RateTally& tally) {
+    auto copy = [](const std::vector<std::int64_t>& from, std::vector<std::uint64_t>& to) {
+      for (std::size_t m = 0; m < std::min(from.size(), to.size()); ++m)
+        to[m] = static_cast<std::uint64_t>(from[m]);
+    };
+    copy(leave.attempts_by_size, tally.attempts);
+    copy(leave.escapes_by_size, tally.escapes);
+    copy(leave.aggregate_steps_by_size, tally.leave_aggregate_steps);
+  }
+
+  RateRecorder recorder_;
+  const Replicate* replicate_ = nullptr;
+  std::optional<RateTally>& slot_;
+  bool collision_;
+};
+
+}  // namespace
+
+RateCollector::RateCollector(const WorldSpec& spec)
+    : spec_(spec), tallies_(static_cast<std::size_t>(spec.run.replicates)) {}
+
+std::unique_ptr<ReplicateObserver> RateCollector::observer(int index) {
+  return std::make_unique<RateObserver>(spec_, tallies_.at(static_cast<std::size_t>(index)));
+}
+
+RateTally RateCollector::total() const {
+  RateTally total(spec_.robots.count);
+  for (const auto& tally : tallies_) {
+    if (tally) total.merge(*tally);
+  }
+  return total;
+}
+
+}  // namespace swarmagg

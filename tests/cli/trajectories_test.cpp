@@ -1,0 +1,154 @@
+// `run --trajectories K` and `render RUN_DIR`, through the built binary: the stored
+// aggregate ids agree with timeseries.csv, and re-rendered frames are byte-identical to the
+// frames the run drew at the same steps.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "cli/cli_testing.hpp"
+#include "output/trajectory_reader.hpp"
+
+namespace swarmagg {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+using Outcome = testing::CliOutcome;
+using testing::read_all;
+
+Outcome swarmagg(const std::string& arguments) {
+  return testing::run_swarmagg(arguments);
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("swarmagg-trajectories-" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+// NOA of timeseries.csv by (replicate, step).
+std::map<std::pair<int, std::int64_t>, int> recorded_noa(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("replicate,step,time,noa,", 0), 0u) << line;
+  std::map<std::pair<int, std::int64_t>, int> noa;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string replicate, step, time, value;
+    std::getline(fields, replicate, ',');
+    std::getline(fields, step, ',');
+    std::getline(fields, time, ',');
+    std::getline(fields, value, ',');
+    noa[{std::stoi(replicate), std::stoll(step)}] = std::stoi(value);
+  }
+  return noa;
+}
+
+// The demo world (full model: aggregates form, grow, shrink and dissolve), shortened.
+const std::string kWorld =
+    "worlds/examples/demo.yaml --replicates 2 --threads 2 --set run.duration=150 --no-model "
+    "--quiet";
+
+TEST(Trajectories, AggregateIdsAgreeWithTheTimeseriesAtEveryStoredStep) {
+  const fs::path out = fresh_dir("noa");
+  const Outcome o = swarmagg("run " + kWorld + " --trajectories 10 --out " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  const TrajectoryReader reader(out / "trajectories.h5");
+  EXPECT_EQ(reader.every(), 10);
+  EXPECT_EQ(reader.agents(), 60);
+  EXPECT_THAT(reader.world_text(), HasSubstr("trajectories: 10"));
+  EXPECT_EQ(reader.world_text(), read_all(out / "world.resolved.yaml"));
+  const auto noa = recorded_noa(out / "timeseries.csv");
+  int compared = 0, aggregated = 0;
+  for (int r = 0; r < 2; ++r) {
+    const auto steps = reader.steps(r);
+    ASSERT_EQ(steps.size(), 151u) << "steps 0, 10, ..., 1500";
+    TrajectoryRow row;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      reader.read(r, static_cast<std::int64_t>(i), row);
+      std::set<std::int32_t> ids;
+      for (const std::int32_t id : row.aggregate) {
+        if (id >= 0) ids.insert(id);
+      }
+      const auto recorded = noa.find({r, row.step});
+      ASSERT_NE(recorded, noa.end()) << "step " << row.step << " not in timeseries.csv";
+      EXPECT_EQ(static_cast<int>(ids.size()), recorded->second)
+          << "replicate " << r << " step " << row.step;
+      ++compared;
+      aggregated += ids.empty() ? 0 : 1;
+    }
+  }
+  EXPECT_EQ(compared, 302);
+  EXPECT_GT(aggregated, 100) << "the test needs steps with aggregates to mean anything";
+  fs::remove_all(out);
+}
+
+TEST(Trajectories, ReRenderedFramesAreByteIdenticalToTheRunsFrames) {
+  const fs::path out = fresh_dir("render");
+  const Outcome run = swarmagg("run " + kWorld +
+                               " --trajectories 10 --render-every 300 --render-size 200x160 "
+                               "--render-replicate 1 --out " +
+                               out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const Outcome render = swarmagg("render " + out.string() + " --every 300 --quiet --out " +
+                                  (out / "replay").string());
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  int frames = 0;
+  for (const auto& entry : fs::directory_iterator(out / "frames")) {
+    const fs::path replay = out / "replay" / entry.path().filename();
+    ASSERT_TRUE(fs::exists(replay)) << replay;
+    EXPECT_TRUE(read_all(entry.path()) == read_all(replay)) << entry.path().filename();
+    ++frames;
+  }
+  EXPECT_EQ(frames, 6) << "steps 0, 300, ..., 1500";
+  EXPECT_EQ(std::distance(fs::directory_iterator(out / "replay"), fs::directory_iterator{}), 6);
+  // Another replicate draws other frames.
+  ASSERT_EQ(swarmagg("render " + out.string() + " --every 300 --replicate 0 --quiet --out " +
+                     (out / "other").string())
+                .exit_code,
+            0);
+  EXPECT_FALSE(read_all(out / "frames" / "frame_000005.png") ==
+               read_all(out / "other" / "frame_000005.png"));
+  fs::remove_all(out);
+}
+
+TEST(Trajectories, BadRenderRequestsExitTwoWithAReason) {
+  const fs::path out = fresh_dir("bad");
+  Outcome o = swarmagg("render " + out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_THAT(o.output, HasSubstr("trajectories.h5"));
+  ASSERT_EQ(
+      swarmagg("run " + kWorld + " --trajectories 10 --set run.duration=5 --out " + out.string())
+          .exit_code,
+      0);
+  o = swarmagg("render " + out.string() + " --every 15");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_THAT(o.output, HasSubstr("multiple of 10"));
+  o = swarmagg("render " + out.string() + " --replicate 2");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_THAT(o.output, HasSubstr("no replicate 2"));
+  o = swarmagg("run " + kWorld + " --trajectories -1 --out " + out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_THAT(o.output, HasSubstr("run.trajectories"));
+  fs::remove_all(out);
+}
+
+TEST(Trajectories, ARunWithoutTrajectoriesRemovesAnEarlierFile) {
+  const fs::path out = fresh_dir("stale");
+  ASSERT_EQ(swarmagg("run " + kWorld + " --trajectories 10 --out " + out.string()).exit_code, 0);
+  ASSERT_TRUE(fs::exists(out / "trajectories.h5"));
+  ASSERT_EQ(swarmagg("run " + kWorld + " --out " + out.string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "trajectories.h5")) << "would not belong to the new run";
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace swarmagg

@@ -1,0 +1,170 @@
+// trajectories.h5 written by TrajectoryWriter reads back exactly through TrajectoryReader;
+// without commit() nothing is left; misuse is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "output/atomic_file.hpp"
+#include "output/trajectory_layout.hpp"
+#include "output/trajectory_reader.hpp"
+#include "output/trajectory_writer.hpp"
+
+namespace swarmagg {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("swarmagg-trajectory-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+WorldSpec small_world(int agents, int replicates, double duration, int every) {
+  WorldSpec spec;
+  spec.robots.count = agents;
+  spec.run.replicates = replicates;
+  spec.run.duration = duration;  // dt 0.1
+  spec.run.trajectories = every;
+  return spec;
+}
+
+// A made-up state of agent i at step k of replicate r, different everywhere.
+struct FakeSwarm {
+  std::vector<Vec2> positions, heading;
+  std::vector<AgentState> states;
+  std::vector<std::int32_t> aggregate;
+
+  SwarmSnapshot at(const WorldSpec& spec, int r, std::int64_t k) {
+    const auto n = static_cast<std::size_t>(spec.robots.count);
+    positions.resize(n);
+    heading.resize(n);
+    states.resize(n);
+    aggregate.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      positions[i] = {0.1 * static_cast<double>(i) + r + 1e-9 * static_cast<double>(k),
+                      1.0 / 3.0 + static_cast<double>(k)};
+      const double angle = 0.001 * static_cast<double>(i + static_cast<std::size_t>(k));
+      heading[i] = {std::cos(angle), std::sin(angle)};
+      states[i] = static_cast<AgentState>((i + static_cast<std::size_t>(k)) % kAgentStateCount);
+      aggregate[i] = static_cast<std::int32_t>(i % 3) - 1;
+    }
+    return {&spec, k, 0.1 * static_cast<double>(k), positions, states, aggregate, 2};
+  }
+};
+
+void write_replicate(TrajectoryWriter& writer, const WorldSpec& spec, int r) {
+  ReplicateTrajectory trajectory = writer.begin_replicate(r, 1000u + static_cast<unsigned>(r));
+  FakeSwarm swarm;
+  for (std::int64_t k = 0; k <= spec.steps(); k += spec.run.trajectories) {
+    const SwarmSnapshot snapshot = swarm.at(spec, r, k);  // before heading is read
+    trajectory.record(snapshot, swarm.heading);
+  }
+  trajectory.finish();
+}
+
+TEST(TrajectoryFile, ReadsBackWhatWasWrittenByParallelReplicates) {
+  const fs::path dir = fresh_dir("roundtrip");
+  const WorldSpec spec = small_world(7, 3, 10.0, 3);  // 100 steps: rows at 0, 3, ..., 99
+  {
+    TrajectoryWriter writer(spec, "name: roundtrip\n", dir / "trajectories.h5");
+    std::vector<std::thread> threads;
+    for (int r = 0; r < 3; ++r) threads.emplace_back([&, r] { write_replicate(writer, spec, r); });
+    for (auto& t : threads) t.join();
+    EXPECT_FALSE(fs::exists(dir / "trajectories.h5")) << "visible before commit";
+    writer.commit();
+  }
+  const TrajectoryReader reader(dir / "trajectories.h5");
+  EXPECT_EQ(reader.world_text(), "name: roundtrip\n");
+  EXPECT_EQ(reader.every(), 3);
+  EXPECT_EQ(reader.agents(), 7);
+  EXPECT_EQ(reader.replicates(), 3);
+  for (int r = 0; r < 3; ++r) {
+    const auto steps = reader.steps(r);
+    ASSERT_EQ(steps.size(), 34u);
+    FakeSwarm expected;
+    TrajectoryRow row;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const std::int64_t k = 3 * static_cast<std::int64_t>(i);
+      EXPECT_EQ(steps[i], k);
+      const SwarmSnapshot want = expected.at(spec, r, k);
+      reader.read(r, static_cast<std::int64_t>(i), row);
+      EXPECT_EQ(row.step, k);
+      EXPECT_EQ(row.time, want.time);
+      for (std::size_t a = 0; a < 7; ++a) {
+        EXPECT_EQ(row.positions[a], want.positions[a]) << "exact doubles, agent " << a;
+        EXPECT_EQ(row.states[a], want.states[a]);
+        EXPECT_EQ(row.aggregate[a], want.aggregate[a]);
+        EXPECT_NEAR(row.heading[a], std::atan2(expected.heading[a].y, expected.heading[a].x), 1e-6);
+      }
+      EXPECT_EQ(row.noa, 2);
+    }
+  }
+  EXPECT_THROW(reader.steps(3), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(TrajectoryFile, WithoutCommitNoFileRemains) {
+  const fs::path dir = fresh_dir("abandoned");
+  const WorldSpec spec = small_world(5, 2, 1.0, 1);
+  {
+    TrajectoryWriter writer(spec, "name: abandoned\n", dir / "trajectories.h5");
+    ReplicateTrajectory trajectory = writer.begin_replicate(0, 1);
+    FakeSwarm swarm;
+    const SwarmSnapshot snapshot = swarm.at(spec, 0, 0);  // before heading is read
+    trajectory.record(snapshot, swarm.heading);
+    // Interrupted here: the writer goes without commit().
+  }
+  EXPECT_TRUE(fs::is_empty(dir)) << "a temporary or partial file was left";
+  fs::remove_all(dir);
+}
+
+TEST(TrajectoryFile, CommitRefusesMissingOrIncompleteReplicates) {
+  const fs::path dir = fresh_dir("incomplete");
+  const WorldSpec spec = small_world(5, 2, 1.0, 5);  // 10 steps: rows 0, 5, 10
+  TrajectoryWriter writer(spec, "", dir / "trajectories.h5");
+  write_replicate(writer, spec, 0);
+  EXPECT_THROW(writer.commit(), std::logic_error) << "replicate 1 never began";
+  ReplicateTrajectory short_one = writer.begin_replicate(1, 2);
+  FakeSwarm swarm;
+  const SwarmSnapshot snapshot = swarm.at(spec, 1, 0);  // before heading is read
+  short_one.record(snapshot, swarm.heading);
+  EXPECT_THROW(short_one.finish(), std::logic_error) << "1 of 3 rows";
+  fs::remove_all(dir);
+}
+
+TEST(TrajectoryFile, RowsWiderThanAChunkRoundTrip) {
+  const fs::path dir = fresh_dir("wide");
+  const int agents = static_cast<int>(trajectory_layout::kChunkElements) + 123;
+  const WorldSpec spec = small_world(agents, 1, 0.2, 1);  // rows 0, 1, 2
+  {
+    TrajectoryWriter writer(spec, "", dir / "trajectories.h5");
+    write_replicate(writer, spec, 0);
+    writer.commit();
+  }
+  const TrajectoryReader reader(dir / "trajectories.h5");
+  TrajectoryRow row;
+  reader.read(0, 2, row);
+  FakeSwarm expected;
+  const SwarmSnapshot want = expected.at(spec, 0, 2);
+  ASSERT_EQ(row.positions.size(), static_cast<std::size_t>(agents));
+  EXPECT_EQ(row.positions.back(), want.positions.back());
+  EXPECT_EQ(row.aggregate[65600], want.aggregate[65600]);
+  fs::remove_all(dir);
+}
+
+TEST(TrajectoryFile, ReaderRefusesOtherFiles) {
+  const fs::path dir = fresh_dir("other");
+  EXPECT_THROW(TrajectoryReader(dir / "missing.h5"), InputError);
+  write_file_atomic(dir / "text.h5", "not hdf5");
+  EXPECT_THROW(TrajectoryReader(dir / "text.h5"), InputError);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace swarmagg

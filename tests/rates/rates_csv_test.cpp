@@ -1,0 +1,55 @@
+#include "rates/rates_csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.hpp"
+
+namespace swarmagg {
+namespace {
+
+std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(RatesCsv, ReadsBackWhatItWritesAndFeedsTheMeasuredTerms) {
+  std::vector<RateRow> rows;
+  rows.push_back({"creation",
+                  std::nullopt,
+                  estimate_rate(120, 4.0e5),
+                  {{"bayindir", "original", 3e-4}, {"bayindir", "collision", 2.5e-4}}});
+  rows.push_back({"growth", 2, estimate_rate(30, 1.0e4), {{"bayindir", "original", 2e-3}}});
+  rows.push_back({"growth", 3, estimate_rate(4, 1.0e3), {}});
+  rows.push_back({"initial", 2, estimate_rate(7, 10.0), {}});
+  const std::string text = rates_csv(rows);
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "term,size,events,exposure,rate,ci_low,ci_high,model,variant,model_rate");
+  const std::vector<RateRow> back = read_rates_csv(write_temp("swarmagg-rates-test.csv", text));
+  ASSERT_EQ(back.size(), rows.size());
+  EXPECT_EQ(back[0].models.size(), 2u);
+  EXPECT_EQ(*back[0].estimate.rate, *rows[0].estimate.rate);
+  EXPECT_EQ(*back[0].estimate.high, *rows[0].estimate.high);
+  EXPECT_TRUE(back[2].estimate.too_few());
+  EXPECT_EQ(rates_csv(back), text);
+
+  const MeasuredTerms terms = measured_terms(back);
+  EXPECT_DOUBLE_EQ(*terms.creation, 120 / 4.0e5);
+  EXPECT_DOUBLE_EQ(terms.growth.at(2), 30 / 1.0e4);
+  EXPECT_FALSE(terms.growth.contains(3));      // too few events: the model's term is used
+  EXPECT_DOUBLE_EQ(terms.initial.at(2), 0.7);  // a mean count needs no minimum
+}
+
+TEST(RatesCsv, RejectsAFileThatIsNotRatesCsv) {
+  EXPECT_THROW(read_rates_csv(write_temp("swarmagg-not-rates.csv", "a,b\n1,2\n")), InputError);
+  EXPECT_THROW(read_rates_csv(write_temp("swarmagg-bad-rates.csv",
+                                         "term,size,events,exposure,rate,ci_low,ci_high,model,"
+                                         "variant,model_rate\ncreation,,many,1,,,,,,\n")),
+               InputError);
+}
+
+}  // namespace
+}  // namespace swarmagg

@@ -1,0 +1,159 @@
+#include "run/rate_collector.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "config/world_loader.hpp"
+#include "models/initial_state.hpp"
+#include "models/predictions.hpp"
+#include "models/sample_statistics.hpp"
+#include "rates/rate_rows.hpp"
+#include "run/replicate.hpp"
+#include "run/world_runner.hpp"
+
+namespace swarmagg {
+namespace {
+
+WorldSpec paper_world(const std::string& file, const std::vector<std::string>& overrides) {
+  return load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/paper/" + file, overrides);
+}
+
+RateTally measure(const WorldSpec& spec, RunResult* result = nullptr) {
+  RateCollector collector(spec);
+  RunOptions options;
+  options.observers = [&collector](int index) { return collector.observer(index); };
+  const RunResult run = run_world(spec, options);
+  if (result) *result = run;
+  return collector.total();
+}
+
+TEST(RateCollector, GhostEncountersPerPairMatchKineticTheory) {
+  const WorldSpec spec = paper_world("collision-speed-1.yaml",
+                                     {"run.duration=2500", "run.replicates=2", "run.threads=2"});
+  const RateTally tally = measure(spec);
+  const std::vector<RateRow> rows = measured_rate_rows(spec, tally);
+  ASSERT_EQ(rows.front().term, "creation");
+  const RateEstimate& e = rows.front().estimate;
+  ASSERT_TRUE(e.rate);
+  const double model = 8.0 * 4.0 * 1.0 / (std::numbers::pi * spec.arena.area());
+  const double expected_events = model * e.exposure;
+  ASSERT_GT(expected_events, 1000.0);
+  // Poisson: the count is within 4 sd of its mean (sd = sqrt(mean)) but for 6e-5 of runs;
+  // pairs already within s (a fraction pi s^2 / A = 3.5e-4) cannot newly meet.
+  EXPECT_NEAR(static_cast<double>(e.events), expected_events, 4.0 * std::sqrt(expected_events));
+  // The model value of the collision variant is the same kinetic rate.
+  EXPECT_NEAR(rows.front().models.at(1).rate, model, 1e-15);
+}
+
+TEST(RateCollector, LeaveAttemptsPerMemberStepEqualP) {
+  const WorldSpec spec =
+      paper_world("full-0.0025.yaml", {"run.duration=1500", "run.replicates=2", "run.threads=2"});
+  const RateTally tally = measure(spec);
+  // Every member of a size-m aggregate tries with probability p per step: expected attempts
+  // p * sum_m m * (aggregate steps of size m).
+  double expected = 0.0, attempts = 0.0;
+  for (int m = 2; m <= tally.agents; ++m) {
+    const auto index = static_cast<std::size_t>(m);
+    expected +=
+        spec.controller.p_leave * m * static_cast<double>(tally.leave_aggregate_steps[index]);
+    attempts += static_cast<double>(tally.attempts[index]);
+  }
+  ASSERT_GT(expected, 500.0);
+  EXPECT_NEAR(attempts, expected, 4.0 * std::sqrt(expected));
+  // And per size, each row's model value is m p / dt.
+  for (const RateRow& row : measured_rate_rows(spec, tally)) {
+    if (row.term != "attempt") continue;
+    EXPECT_DOUBLE_EQ(row.models.front().rate, *row.size * spec.controller.p_leave / spec.engine.dt);
+  }
+}
+
+// The pairs the first decision forms, over many seeded placements, against the derivation.
+struct FirstDecisionSample {
+  std::vector<double> pairs, triples;
+};
+
+FirstDecisionSample first_decisions(const WorldSpec& spec, int placements) {
+  FirstDecisionSample sample;
+  for (int index = 0; index < placements; ++index) {
+    Replicate replicate(spec, index);
+    replicate.step();
+    double pairs = 0.0, triples = 0.0;
+    for (const std::int32_t size : replicate.aggregates().sizes()) {
+      pairs += size == 2;
+      triples += size == 3;
+    }
+    sample.pairs.push_back(pairs);
+    sample.triples.push_back(triples);
+  }
+  return sample;
+}
+
+double standard_error(const std::vector<double>& values) {
+  return sample_sd(values) / std::sqrt(static_cast<double>(values.size()));
+}
+
+TEST(RateCollector, ExpectedPlacementPairsMatchTheMeanOverSeededPlacements) {
+  // The 400 agents on 460 x 460 (creation rules), and the same with joining.
+  for (const bool join : {false, true}) {
+    WorldSpec spec = paper_world("creation-150.yaml",
+                                 {"robots.count=400", "arena.width=460", "arena.height=460"});
+    spec.controller.join = join;
+    const FirstDecisionSample sample = first_decisions(spec, 1500);
+    const FirstDecision expected = expected_first_decision(spec);
+    const double se = standard_error(sample.pairs);
+    EXPECT_NEAR(sample_mean(sample.pairs), expected.pairs, 3.0 * se) << "join " << join;
+    if (!join) {
+      // The first-order count (all close pairs, body exclusion included) is measurably off.
+      const double first_order = 400.0 * 399.0 / 2.0 * placement_pair_probability(spec);
+      EXPECT_GT(std::abs(sample_mean(sample.pairs) - first_order), 3.0 * se);
+    }
+  }
+}
+
+TEST(RateCollector, ExpectedPlacementTriplesMatchTheMeanOverSeededPlacements) {
+  // Triples are second order, and four-agent clusters (third order, which the expansion
+  // leaves out) take from them: at 400 agents on 460 x 460 that is ~0.08 of 0.64, so the
+  // check runs where the third order is far below the standard error (200 agents).
+  WorldSpec spec = paper_world("creation-growing-80.yaml",
+                               {"robots.count=200", "arena.width=460", "arena.height=460"});
+  const FirstDecisionSample sample = first_decisions(spec, 3000);
+  const FirstDecision expected = expected_first_decision(spec);
+  EXPECT_NEAR(sample_mean(sample.triples), expected.triples, 3.0 * standard_error(sample.triples));
+  EXPECT_NEAR(sample_mean(sample.pairs), expected.pairs, 3.0 * standard_error(sample.pairs));
+}
+
+// Mean NOA over replicates at each recorded step.
+std::vector<double> mean_noa(const RunResult& result) {
+  std::vector<double> mean(result.replicates.front().rows.size(), 0.0);
+  for (const ReplicateOutcome& r : result.replicates) {
+    for (std::size_t i = 0; i < mean.size(); ++i) mean[i] += r.rows[i].noa;
+  }
+  for (double& m : mean) m /= static_cast<double>(result.replicates.size());
+  return mean;
+}
+
+TEST(RateCollector, MeasuredVariantReproducesACreationOnlyWorld) {
+  const WorldSpec spec =
+      paper_world("creation-150.yaml", {"run.duration=600", "run.replicates=10", "run.threads=2",
+                                        "model.stochastic_replicates=0", "run.record_every=50"});
+  RunResult result;
+  const RateTally tally = measure(spec, &result);
+  const MeasuredTerms terms = measured_terms(measured_rate_rows(spec, tally));
+  WorldSpec measured_start = spec;
+  measured_start.model.initial_state = InitialState::Measured;
+  const std::vector<VariantPrediction> predictions = predict(measured_start, &terms);
+  const VariantPrediction& measured = predictions.back();
+  ASSERT_EQ(measured.variant, "measured");
+  const std::vector<double> simulated = mean_noa(result);
+  ASSERT_EQ(simulated.size(), measured.series.size());
+  for (std::size_t i = 0; i < simulated.size(); ++i) {
+    if (result.replicates.front().rows[i].step < spec.steps() / 10) continue;
+    EXPECT_NEAR(*measured.series[i].noa, simulated[i], 0.03 * simulated[i])
+        << "step " << measured.series[i].step;
+  }
+}
+
+}  // namespace
+}  // namespace swarmagg
