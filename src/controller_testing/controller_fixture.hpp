@@ -16,6 +16,7 @@ struct ControllerFixture {
   NeighbourLists neighbours;
   AggregateTracker aggregates;
   EventCounts events;
+  std::vector<std::uint64_t> growths_by_size;  // [m]: growths of aggregates of m, cumulative
   std::vector<MotionCommand> commands;
   std::vector<std::uint8_t> reflections;
   std::unique_ptr<Controller> controller;
@@ -55,7 +56,9 @@ struct ControllerFixture {
     perceive();
     commands.assign(positions.size(), MotionCommand{});
     reflections.assign(positions.size(), 0);
-    const ControllerInput input{step++, neighbours, reflections, aggregates.facts()};
+    growths_by_size.resize(positions.size() + 1, 0);
+    const ControllerInput input{step++, neighbours, reflections, aggregates.facts(),
+                                growths_by_size};
     controller->decide(input, swarm, CounterRng(11), commands, events);
   }
 };
