@@ -9,11 +9,14 @@
 //  - A WAIT agent that perceives n waiting agents (n >= 0) leaves with probability
 //    leave_probability[n] per step.
 //  - LEAVE as in SPEC 3: away from the agents it perceives for leave_timeout, then GO.
+//  - With compaction (SPEC 3), agents that go on waiting close up under the spring force of
+//    the waiting members of their aggregate they perceive, solid to every body.
 // The last entry of each list holds for larger n. All agents decide at once from the states
 // of the previous step, so the result never depends on agent order.
 #include <cstdint>
 #include <vector>
 
+#include "controllers/compaction.hpp"
 #include "controllers/controller.hpp"
 
 namespace swarmagg {
@@ -25,6 +28,7 @@ struct CockroachParameters {
   double speed = 1.0;
   double dt = 0.1;
   double detection_radius = 4.0;
+  CompactionRule compaction;
 };
 
 class CockroachController final : public Controller {
@@ -46,10 +50,14 @@ class CockroachController final : public Controller {
   };
 
   int waiting_perceived(std::uint32_t agent, const ControllerInput& input) const;
-  void leave(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm);
+  int joined_size(std::uint32_t agent, const ControllerInput& input) const;
+  void leave(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
+             const CounterRng& rng);
   void count_leave(std::uint32_t agent, const ControllerInput& input, EventCounts& events);
   void pair_searchers(SwarmState& swarm, EventCounts& events);
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
+  void compact(const ControllerInput& input, const SwarmState& swarm,
+               std::span<MotionCommand> commands) const;
 
   CockroachParameters parameters_;
   std::vector<AgentState> previous_;

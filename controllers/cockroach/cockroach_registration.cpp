@@ -33,6 +33,7 @@ std::unique_ptr<Controller> make(const WorldSpec& spec) {
   p.speed = spec.robots.speed;
   p.dt = spec.engine.dt;
   p.detection_radius = spec.robots.detection_radius;
+  p.compaction = compaction_rule(spec);
   return std::make_unique<CockroachController>(std::move(p));
 }
 
@@ -44,6 +45,7 @@ ControllerRules rules(const WorldSpec& spec) {
   r.joins = true;
   r.leaves = true;
   r.leaving_happens = std::any_of(leave.begin(), leave.end(), [](double p) { return p > 0.0; });
+  r.compacts = compaction_rule(spec).enabled;
   r.model = ModelFamily::None;  // neither paper model describes it
   return r;
 }

@@ -5,8 +5,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <sstream>
+
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
+#include "control_interface/state_signals.hpp"
 #include "controller_testing/controller_fixture.hpp"
 #include "controller_testing/scenario.hpp"
 #include "core/errors.hpp"
@@ -32,6 +36,16 @@ TEST(CockroachController, ASearcherStopsWithTheProbabilityOfItsWaitingNeighbourC
   EXPECT_EQ(f.swarm.state[two], AgentState::Wait);
   EXPECT_EQ(f.events.growths, 1u);
   EXPECT_EQ(f.events.creations, 0u);
+}
+
+TEST(CockroachController, AGrowthCountsAtTheSizeOfTheAggregateJoined) {
+  ControllerFixture f(cockroach("[1]", "[0]"));
+  f.add(10, 10, AgentState::Wait);
+  f.add(12, 10, AgentState::Wait);
+  f.add(11, 13);  // joins the pair
+  f.decide();
+  EXPECT_EQ(f.growths_by_size[2], 1u);
+  EXPECT_EQ(f.events.growths, 1u);
 }
 
 TEST(CockroachController, ASearcherThatDoesNotStopWalksAwayFromTheWaitingAgents) {
@@ -89,6 +103,56 @@ TEST(CockroachController, ALeaverSearchesAgainAfterItsTimeout) {
   EXPECT_EQ(f.swarm.state[a], AgentState::Go);
 }
 
+// Compaction (SPEC 3) is on by default: a waiting agent that goes on waiting moves under the
+// spring force of the waiting members of its aggregate it perceives, solid to every body.
+TEST(CockroachController, WaitingMembersCloseUpUnderCompaction) {
+  ControllerFixture f(cockroach("[0]", "[0]"));
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Wait);  // 3 apart: spring (3 - 2r) = 1, at v = 1
+  f.decide();
+  EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{1.0, 0.0}));
+  EXPECT_EQ(f.commands[b].velocity, (Vec2{-1.0, 0.0}));
+  const SignalMask solid = mask_of(signal_of(AgentState::Wait)) |
+                           mask_of(signal_of(AgentState::Leave)) |
+                           mask_of(signal_of(AgentState::Go));
+  EXPECT_EQ(f.commands[a].blocked_by, solid);
+
+  ControllerFixture off(scenario_world(
+      "controller: {type: cockroach, stop_probability: [0], leave_probability: [0]}\n",
+      {"controller.compaction.enabled=false"}));
+  off.add(10, 10, AgentState::Wait);
+  off.add(13, 10, AgentState::Wait);
+  off.decide();
+  EXPECT_EQ(off.commands[0].velocity, (Vec2{0.0, 0.0}));
+  EXPECT_EQ(off.commands[0].blocked_by, mask_of(signal_of(AgentState::Wait)));
+}
+
+// A leaver whose neighbours surround it (their offsets nearly cancel) is enclosed: it draws a
+// random heading (SPEC 3) instead of the direction of the small remainder.
+TEST(CockroachController, AnEnclosedLeaverDrawsARandomHeading) {
+  // Only an agent that perceives six waiting agents leaves: the centre of the ring.
+  const auto leaver = [](bool compaction) {
+    ControllerFixture f(scenario_world(
+        "controller: {type: cockroach, stop_probability: [0], "
+        "leave_probability: [0, 0, 0, 0, 0, 0, 1]}\n",
+        {std::string("controller.compaction.enabled=") + (compaction ? "true" : "false")}));
+    const auto centre = f.add(50, 50, AgentState::Wait);
+    for (int k = 0; k < 6; ++k) {
+      const double angle = k * 1.0471975511965976;
+      const double d = k == 0 ? 2.2 : 2.1;  // slightly off-centre: the sum is not zero
+      f.add(50 + d * std::cos(angle), 50 + d * std::sin(angle), AgentState::Wait);
+    }
+    f.decide();
+    EXPECT_EQ(f.swarm.state[centre], AgentState::Leave);
+    return f.swarm.heading[centre];
+  };
+  const Vec2 away = leaver(false);  // away from the nearer side
+  EXPECT_NEAR(away.x, -1.0, 1e-9);
+  EXPECT_NEAR(away.y, 0.0, 1e-9);
+  EXPECT_EQ(leaver(true), random_heading(CounterRng(11), 0, 0, Draw::EnclosedLeave));
+}
+
 TEST(CockroachController, ListsMustHoldProbabilities) {
   const auto message = [](const std::string& key, const std::string& value) {
     try {
@@ -133,6 +197,52 @@ TEST_P(CockroachWorld, AggregatesFormAndMembersLeave) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothEngines, CockroachWorld, ::testing::Values("kinematic", "box2d"));
+
+// A hexagon of seven agents 3 apart (within s, so one aggregate once all wait) on each engine,
+// with the invariants checked every step. With compaction the members close up to touching
+// (2r); without it they stand where they stopped.
+class CockroachCompaction : public ::testing::TestWithParam<const char*> {};
+
+std::vector<double> distances_to_centre(const testing::ScenarioEnd& end) {
+  std::vector<double> out;
+  for (std::size_t i = 1; i < end.positions.size(); ++i)
+    out.push_back(norm(end.positions[i] - end.positions[0]));
+  return out;
+}
+
+testing::ScenarioEnd hexagon_run(const char* engine, bool compaction) {
+  std::ostringstream yaml;
+  yaml.precision(17);
+  yaml << "arena: {width: 60, height: 60, topology: torus}\nrobots:\n  placement: [[30, 30, 0]";
+  for (int k = 0; k < 6; ++k) {
+    const double angle = k * 1.0471975511965976;
+    yaml << ", [" << 30 + 3 * std::cos(angle) << ", " << 30 + 3 * std::sin(angle) << ", 0]";
+  }
+  yaml << "]\ncontroller: {type: cockroach, stop_probability: [1], leave_probability: [0]}\n";
+  const WorldSpec world = scenario_world(
+      yaml.str(),
+      {std::string("engine.type=") + engine,
+       std::string("controller.compaction.enabled=") + (compaction ? "true" : "false")});
+  return run_scenario(world, 300);
+}
+
+TEST_P(CockroachCompaction, WaitingMembersCloseUpToTouching) {
+  const testing::ScenarioEnd end = hexagon_run(GetParam(), true);
+  for (const AgentState state : end.states) EXPECT_EQ(state, AgentState::Wait);
+  EXPECT_EQ(end.aggregate_sizes, std::vector<std::int32_t>{7});
+  for (const double d : distances_to_centre(end)) {
+    EXPECT_GT(d, 1.9) << GetParam();  // bodies do not overlap (Box2D: within its slop)
+    EXPECT_LT(d, 2.2) << GetParam();  // from 3: closed up to about 2r
+  }
+}
+
+TEST_P(CockroachCompaction, WithoutCompactionWaitingMembersStand) {
+  const testing::ScenarioEnd end = hexagon_run(GetParam(), false);
+  for (const AgentState state : end.states) EXPECT_EQ(state, AgentState::Wait);
+  for (const double d : distances_to_centre(end)) EXPECT_GT(d, 2.8) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(BothEngines, CockroachCompaction, ::testing::Values("kinematic", "box2d"));
 
 }  // namespace
 }  // namespace swarmagg
