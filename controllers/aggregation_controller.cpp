@@ -81,18 +81,6 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   }
 }
 
-// Members of one aggregate leaving in the same step are counted one after another: an
-// aggregate of two that both leave dissipates once; of five losing two, shrinks twice.
-void AggregationController::count_leave(std::uint32_t agent, const ControllerInput& input,
-                                        EventCounts& events) {
-  const std::int32_t aggregate = input.aggregates.aggregate_of[agent];
-  if (aggregate < 0) return;
-  std::int32_t& left = leavers_left_[aggregate];
-  if (left >= 3) ++events.shrinks;
-  if (left == 2) ++events.dissipations;
-  --left;
-}
-
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
   if (!rules_.join) return;
@@ -307,7 +295,8 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
   for (const std::uint32_t i : waiters_) {
     update_waiting(i, input, swarm, rng);
-    if (swarm.state[i] == AgentState::Leave) count_leave(i, input, events);
+    if (swarm.state[i] == AgentState::Leave)
+      count_leave(input.aggregates.aggregate_of[i], leavers_left_, events);
   }
   join_waiting(input, swarm, events);
   list_unsettled();

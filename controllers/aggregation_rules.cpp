@@ -25,6 +25,23 @@ double leave_probability(const LeaveRule& rule, int aggregate_size, int perceive
   return leave_probability(rule.law, rule.base, size);
 }
 
+ControllerRules aggregation_controller_rules(const AggregationRules& rules) {
+  ControllerRules r;
+  r.allowed_states = state_bit(AgentState::Go) | state_bit(AgentState::Wait);
+  if (rules.approach_radius) r.allowed_states |= state_bit(AgentState::Approach);
+  if (rules.leave) r.allowed_states |= state_bit(AgentState::Leave);
+  r.joins = rules.join;
+  r.leaves = rules.leave;
+  r.leaving_happens = rules.leave && rules.leave_rule.base > 0.0;
+  r.partners_only = !rules.join;
+  r.compacts = rules.compaction.enabled;
+  return r;
+}
+
+double member_leave_probability(const AggregationRules& rules, int size) {
+  return leave_probability(rules.leave_rule, size, size - 1);
+}
+
 AggregationRules bayindir_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);
   rules.leave_rule = {LeaveLaw::Constant, spec.controller.p_leave, LeaveSize::Aggregate};

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "config/world_spec.hpp"
+#include "control_interface/controller_rules.hpp"
 #include "controllers/compaction.hpp"
 
 namespace swarmagg {
@@ -31,6 +32,15 @@ struct AggregationRules {
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives
 // `perceived` agents within s (which of the two is i is the rule's size_source).
 double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived);
+
+// What a controller built on these rules allows (its registration adds the model and outputs):
+// GO and WAIT, APPROACH with an approach radius, LEAVE when agents may leave; joining,
+// leaving, partners-only linking without joining, and compaction as the rules say.
+ControllerRules aggregation_controller_rules(const AggregationRules& rules);
+
+// A member's leave probability per step in an aggregate of `size` that perceives the other
+// members (ControllerRegistration::leave_probability_at_size).
+double member_leave_probability(const AggregationRules& rules, int size);
 
 AggregationRules bayindir_rules(const WorldSpec& spec);
 AggregationRules soysal_rules(const WorldSpec& spec);

@@ -11,14 +11,7 @@ double detection_radius(const WorldSpec& spec) {
 }
 
 ControllerRules rules(const WorldSpec& spec) {
-  ControllerRules r;
-  r.allowed_states = state_bit(AgentState::Go) | state_bit(AgentState::Wait);
-  if (spec.controller.leave) r.allowed_states |= state_bit(AgentState::Leave);
-  r.joins = spec.controller.join;
-  r.leaves = spec.controller.leave;
-  r.leaving_happens = spec.controller.leave && spec.controller.p_leave > 0.0;
-  r.partners_only = !spec.controller.join;
-  r.compacts = bayindir_rules(spec).compaction.enabled;
+  ControllerRules r = aggregation_controller_rules(bayindir_rules(spec));
   r.model = ModelFamily::Bayindir;
   return r;
 }
@@ -33,7 +26,7 @@ ControllerRegistration bayindir_registration() {
   };
   r.rules = rules;
   r.leave_probability_at_size = [](const WorldSpec& spec, int size) {
-    return leave_probability(bayindir_rules(spec).leave_rule, size, size - 1);
+    return member_leave_probability(bayindir_rules(spec), size);
   };
   return r;
 }

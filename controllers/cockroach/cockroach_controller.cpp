@@ -51,18 +51,6 @@ void CockroachController::leave(std::uint32_t agent, const ControllerInput& inpu
   }
 }
 
-// Members of one aggregate leaving in the same step are counted one after another, as in
-// SPEC 3: an aggregate of two that both leave dissipates once; of five losing two, shrinks twice.
-void CockroachController::count_leave(std::uint32_t agent, const ControllerInput& input,
-                                      EventCounts& events) {
-  const std::int32_t aggregate = input.aggregates.aggregate_of[agent];
-  if (aggregate < 0) return;
-  std::int32_t& left = leavers_left_[aggregate];
-  if (left >= 3) ++events.shrinks;
-  if (left == 2) ++events.dissipations;
-  --left;
-}
-
 void CockroachController::pair_searchers(SwarmState& swarm, EventCounts& events) {
   std::sort(pairs_.begin(), pairs_.end(), [](const SearchPair& x, const SearchPair& y) {
     if (x.distance != y.distance) return x.distance < y.distance;
@@ -145,7 +133,7 @@ void CockroachController::decide(const ControllerInput& input, SwarmState& swarm
         const auto waiting = static_cast<std::size_t>(waiting_perceived(i, input));
         if (rng.uniform(step, i, Draw::Leave) < entry(parameters_.leave_probability, waiting)) {
           leave(i, input, swarm, rng);
-          count_leave(i, input, events);
+          count_leave(input.aggregates.aggregate_of[i], leavers_left_, events);
         }
         break;
       }

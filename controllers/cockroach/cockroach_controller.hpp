@@ -53,7 +53,6 @@ class CockroachController final : public Controller {
   int joined_size(std::uint32_t agent, const ControllerInput& input) const;
   void leave(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
              const CounterRng& rng);
-  void count_leave(std::uint32_t agent, const ControllerInput& input, EventCounts& events);
   void pair_searchers(SwarmState& swarm, EventCounts& events);
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
   void compact(const ControllerInput& input, const SwarmState& swarm,

@@ -21,19 +21,15 @@ double perception_radius(const WorldSpec& spec) {
 }
 
 ControllerRules rules(const WorldSpec& spec) {
-  ControllerRules r;
-  r.model = ModelFamily::Encounters;
   if (ghost(spec)) {
+    ControllerRules r;
     r.allowed_states = state_bit(AgentState::Go);
     r.aggregates = false;
+    r.model = ModelFamily::Encounters;
     return r;
   }
-  r.allowed_states =
-      state_bit(AgentState::Go) | state_bit(AgentState::Wait) | state_bit(AgentState::Leave);
-  r.leaves = true;
-  r.leaving_happens = true;
-  r.partners_only = true;
-  r.compacts = collision_paper_rules(spec).compaction.enabled;
+  ControllerRules r = aggregation_controller_rules(collision_paper_rules(spec));
+  r.model = ModelFamily::Encounters;
   return r;
 }
 

@@ -20,15 +20,7 @@ std::optional<KeyProblem> check(const WorldSpec& spec) {
 }
 
 ControllerRules rules(const WorldSpec& spec) {
-  ControllerRules r;
-  r.allowed_states =
-      state_bit(AgentState::Go) | state_bit(AgentState::Wait) | state_bit(AgentState::Approach);
-  if (spec.controller.leave) r.allowed_states |= state_bit(AgentState::Leave);
-  r.joins = spec.controller.join;
-  r.leaves = spec.controller.leave;
-  r.leaving_happens = spec.controller.leave && spec.controller.p0 > 0.0;
-  r.partners_only = !spec.controller.join;
-  r.compacts = soysal_rules(spec).compaction.enabled;
+  ControllerRules r = aggregation_controller_rules(soysal_rules(spec));
   r.records_partitions = true;
   r.model = ModelFamily::Soysal;
   return r;
@@ -44,7 +36,7 @@ ControllerRegistration soysal_registration() {
   };
   r.rules = rules;
   r.leave_probability_at_size = [](const WorldSpec& spec, int size) {
-    return leave_probability(soysal_rules(spec).leave_rule, size, size - 1);
+    return member_leave_probability(soysal_rules(spec), size);
   };
   return r;
 }

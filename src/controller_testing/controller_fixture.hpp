@@ -29,11 +29,7 @@ struct ControllerFixture {
   // Adds an agent at (x, y) in `state`, heading +x; returns its index.
   std::uint32_t add(double x, double y, AgentState state = AgentState::Go) {
     positions.push_back({x, y});
-    swarm.state.push_back(state);
-    swarm.heading.push_back({1.0, 0.0});
-    swarm.leave_time_left.push_back(0.0);
-    swarm.partner.push_back(kNoPartner);
-    return static_cast<std::uint32_t>(positions.size() - 1);
+    return swarm.add(state);
   }
 
   void perceive() {
