@@ -19,8 +19,8 @@
 #include <span>
 #include <vector>
 
-#include "core/agent_state.hpp"
 #include "control_interface/neighbour_lists.hpp"
+#include "core/agent_state.hpp"
 #include "observers/aggregate_geometry.hpp"
 #include "observers/aggregate_members.hpp"
 #include "observers/aggregate_tracker.hpp"

@@ -9,9 +9,9 @@
 #include <span>
 #include <vector>
 
+#include "control_interface/motion_command.hpp"
 #include "core/agent_array.hpp"
 #include "core/vec2.hpp"
-#include "control_interface/motion_command.hpp"
 
 namespace swarmagg {
 
