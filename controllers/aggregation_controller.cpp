@@ -1,11 +1,8 @@
 #include "controllers/aggregation_controller.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
-
-#include "geometry/free_motion.hpp"
 
 namespace swarmagg {
 namespace {
@@ -17,13 +14,6 @@ namespace {
 // Whether an agent counts as enclosed changes only its heading: the bodies around it decide
 // whether it gets out.
 constexpr double kEnclosedFraction = 0.4;
-
-// Bodies count as touching within this fraction of the contact distance: the kinematic
-// engine halts bodies at contact up to rounding, Box2D keeps touching bodies slightly
-// overlapped.
-constexpr double kTouchingSlack = 1e-6;
-// A hexagonal pack touches 6; Box2D's soft contacts may squeeze in one or two more.
-constexpr std::size_t kMaxContacts = 8;
 
 }  // namespace
 
@@ -221,41 +211,23 @@ std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
 
 // SPEC 3's spring force from the waiting members of the agent's aggregate it perceives
 // (under join: false its partner only), turned into a velocity of at most v; exactly zero
-// when the net force is below the tolerance, or when the part of it that the bodies the agent
-// touches let it act on (free_motion) is: a rim member pulled inwards by the members behind
-// its neighbours presses into them and is at rest, as it would be halted at once.
+// when the net force is below the tolerance.
 Vec2 AggregationController::compaction_velocity(std::uint32_t agent, const ControllerInput& input,
                                                 const SwarmState& swarm) const {
   const CompactionRule& c = rules_.compaction;
   const std::int32_t* aggregate = input.aggregates.aggregate_of().data();
   const std::int32_t own = aggregate[agent];
   const std::int32_t partner = swarm.partner[agent];
-  const std::span<const Neighbour> perceived = input.neighbours.of(agent);
   Vec2 force;
-  for (const Neighbour& nb : perceived) {
+  for (const Neighbour& nb : input.neighbours.of(agent)) {
     if (nb.distance > rules_.detection_radius) break;
-    if (previous_[nb.id] != AgentState::Wait || nb.distance <= 0.0) continue;
     const bool member = rules_.join ? own >= 0 && aggregate[nb.id] == own
                                     : static_cast<std::int32_t>(nb.id) == partner;
-    if (member) force += nb.offset * ((nb.distance - c.spacing) / nb.distance);
+    if (!member || previous_[nb.id] != AgentState::Wait || nb.distance <= 0.0) continue;
+    force += nb.offset * ((nb.distance - c.spacing) / nb.distance);
   }
   const double magnitude = norm(force);
   if (magnitude < c.tolerance || magnitude <= 0.0) return {};
-  // The bodies it touches come first: the neighbours are sorted by distance.
-  const SignalMask solid = waiting_blocked_by();
-  const double touching = c.contact_distance * (1.0 + kTouchingSlack);
-  std::array<Vec2, kMaxContacts> normals;
-  std::size_t contacts = 0;
-  for (const Neighbour& nb : perceived) {
-    if (nb.distance > touching || contacts == kMaxContacts) break;
-    if (nb.distance <= 0.0 || (solid & mask_of(static_cast<Signal>(swarm.state[nb.id]))) == 0) {
-      continue;
-    }
-    normals[contacts++] = nb.offset * (1.0 / nb.distance);
-  }
-  if (contacts > 0 && norm(free_motion(force, std::span(normals.data(), contacts))) < c.tolerance) {
-    return {};
-  }
   return force * (std::min(rules_.speed, c.gain * magnitude) / magnitude);
 }
 
@@ -266,18 +238,6 @@ void AggregationController::compact(const ControllerInput& input, const SwarmSta
     if (swarm.state[i] != AgentState::Wait) continue;
     commands[i].velocity = compaction_velocity(i, input, swarm);
   }
-}
-
-// The bodies solid to a waiting agent. Moving waiting bodies (compaction) respect every body
-// that is solid to them: they must not crush a leaver they enclose, nor a searcher about to
-// join (a contact halts only the bodies it blocks, so both sides of a solid pair need the bit).
-SignalMask AggregationController::waiting_blocked_by() const {
-  constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
-  constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
-  constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
-                                    mask_of(static_cast<Signal>(AgentState::Approach));
-  if (!rules_.compaction.enabled) return kWaiting;
-  return kWaiting | kLeaving | (rules_.join ? kSearching : 0);
 }
 
 // The command of each state, looked up rather than branched on: states of neighbouring
@@ -293,7 +253,13 @@ void AggregationController::write_commands(const SwarmState& swarm,
   };
   const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
   const SignalMask search_block = rules_.join ? kWaiting : 0;
-  const SignalMask wait_block = waiting_blocked_by();
+  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
+  constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
+  // Moving waiting bodies (compaction) respect every body that is solid to them: they must
+  // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
+  // bodies it blocks, so both sides of a solid pair need the bit).
+  const SignalMask wait_block =
+      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
   // other, so neither compaction nor a body engine's shoving can push one through another.

@@ -57,7 +57,6 @@ class AggregationController final : public Controller {
   std::optional<Vec2> escape_direction(std::uint32_t agent, const ControllerInput& input) const;
   Vec2 compaction_velocity(std::uint32_t agent, const ControllerInput& input,
                            const SwarmState& swarm) const;
-  SignalMask waiting_blocked_by() const;
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
   void compact(const ControllerInput& input, const SwarmState& swarm,
                std::span<MotionCommand> commands) const;

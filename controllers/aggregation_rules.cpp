@@ -16,7 +16,7 @@ AggregationRules common_rules(const WorldSpec& spec) {
   rules.detection_radius = spec.robots.detection_radius;
   const CompactionSpec& compaction = spec.controller.compaction;
   rules.compaction = {compaction.enabled, spec.compaction_spacing(), compaction.gain,
-                      compaction.tolerance, 2.0 * spec.robots.radius};
+                      compaction.tolerance};
   return rules;
 }
 

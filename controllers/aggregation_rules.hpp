@@ -15,14 +15,11 @@ struct LeaveRule {
 
 // SPEC 3 "Compaction": a waiting agent moves under F = sum_j (d_ij - spacing) u_ij from the
 // waiting members of its aggregate it perceives, at min(v, gain |F|), standing below tolerance.
-// The force counted against the tolerance is the part its touching bodies let it act on: a
-// member pressed into a wedge of neighbours by the pull of members behind them is at rest.
 struct CompactionRule {
   bool enabled = false;
-  double spacing = 2.0;           // u
-  double gain = 1.0;              // per tu
-  double tolerance = 0.05;        // u
-  double contact_distance = 2.0;  // 2r: centre distance at which bodies touch
+  double spacing = 2.0;     // u
+  double gain = 1.0;        // per tu
+  double tolerance = 0.05;  // u
 };
 
 struct AggregationRules {

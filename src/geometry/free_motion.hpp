@@ -5,8 +5,8 @@
 // nearest such d to v (its projection on that cone): v itself when it presses into nothing,
 // v without its normal component when it presses into one body (it slides along it), zero
 // when it presses into a wedge of bodies (a slide leaves its contact at 1e-9 of the normal
-// speed removed, so that rounding never makes it press in again). Controllers use it to tell
-// whether a body is at rest against its contacts, engines to slide a body along a contact.
+// speed removed, so that rounding never makes it press in again). The kinematic engine slides
+// bodies along their contacts with it.
 #include <span>
 
 #include "core/vec2.hpp"
