@@ -54,8 +54,9 @@ std::string simulation_table(const std::vector<CompactionEffect>& effects) {
 // The values of a quantity over the effects that have it both ways.
 struct Spread {
   std::vector<OnOff> values;
-  int lower_on = 0;   // worlds where the value is lower with compaction on
-  int higher_on = 0;  // and higher
+  int lower_on = 0;                    // worlds where the value is lower with compaction on
+  int higher_on = 0;                   // and higher
+  std::vector<std::string> unchanged;  // the worlds where it is the same both ways
   double min_on = INFINITY, max_on = -INFINITY, min_off = INFINITY, max_off = -INFINITY;
   bool empty() const { return values.empty(); }
   int count() const { return static_cast<int>(values.size()); }
@@ -77,6 +78,7 @@ Spread spread_of(const std::vector<CompactionEffect>& effects, const Quantity& q
     s.values.push_back(v);
     s.lower_on += v.on < v.off ? 1 : 0;
     s.higher_on += v.on > v.off ? 1 : 0;
+    if (v.on == v.off) s.unchanged.push_back(e.world);
     s.min_on = std::min(s.min_on, v.on);
     s.max_on = std::max(s.max_on, v.on);
     s.min_off = std::min(s.min_off, v.off);
@@ -90,52 +92,77 @@ std::string range(double low, double high) {
                                                    : report_number(low) + "-" + report_number(high);
 }
 
+// "a-b with compaction on against c-d off" (ranges over the worlds).
 std::string ranges(const Spread& s) {
   return range(s.min_on, s.max_on) + " with compaction on against " + range(s.min_off, s.max_off) +
          " off";
 }
 
-std::string of_worlds(int count, int total) {
-  return std::to_string(count) + " of " + std::to_string(total);
+// "higher in 3, lower in 2 and unchanged in 1 (creation-50) of 6".
+std::string split(const Spread& s, const std::string& higher, const std::string& lower) {
+  std::string text = higher + " in " + std::to_string(s.higher_on) + ", " + lower + " in " +
+                     std::to_string(s.lower_on);
+  if (!s.unchanged.empty()) {
+    text += " and unchanged in " + std::to_string(s.unchanged.size()) + " (";
+    for (std::size_t i = 0; i < s.unchanged.size(); ++i) text += (i ? ", " : "") + s.unchanged[i];
+    text += ")";
+  }
+  return text + " of " + std::to_string(s.count());
+}
+
+bool leaves(const CompactionEffect& e) {
+  return !std::isnan(e.escape_fraction.on) || !std::isnan(e.escape_fraction.off);
 }
 
 std::string spacing_sentence(const std::vector<CompactionEffect>& effects) {
   const Spread s = spread_of(effects, [](const CompactionEffect& e) { return e.member_spacing; });
   if (s.empty()) return "";
   return "Members of the final aggregates stand " + ranges(s) +
-         " from their nearest fellow member (mean over the members, the range over the "
-         "worlds with aggregates at the end): with compaction they close up to "
+         " from their nearest fellow member (mean over the members; ranges over the worlds with "
+         "aggregates at the end): with compaction they close up to "
          "`controller.compaction.spacing` (2 r, touching), without it they stay about where "
          "they first perceived someone, up to s apart. ";
 }
 
+// Growth is compared where only searchers grow aggregates: where agents leave, a LEAVE attempt
+// that does not get out rejoins its aggregate, and the measured growth counts that too.
 std::string growth_sentence(const std::vector<CompactionEffect>& effects) {
-  const Spread s = spread_of(effects, [](const CompactionEffect& e) { return e.growth_vs_model; });
-  if (s.empty()) return "";
-  std::string text = "Searchers join aggregates at " + ranges(s) +
-                     " times the rate the models' capture radius predicts (growths over "
-                     "expected growths, every size pooled); growth is slower with compaction on "
-                     "in " +
-                     of_worlds(s.lower_on, s.count()) + " worlds that grow (median on / off " +
-                     report_number(s.median_ratio()) + ")";
-  text += 2 * s.lower_on > s.count()
-              ? ": packed aggregates are smaller targets than the loose chains a searcher "
-                "meets without compaction, closer to the packed discs the models assume. "
-              : ": packing the aggregates does not make them smaller targets here. ";
+  const auto quantity = [](const CompactionEffect& e) { return e.growth_vs_model; };
+  const Spread s =
+      spread_of(effects, quantity, [](const CompactionEffect& e) { return !leaves(e); });
+  const Spread with_leaving = spread_of(effects, quantity, leaves);
+  std::string text;
+  if (!s.empty()) {
+    text =
+        "Where nobody leaves, growths over those the models' capture radius predicts for the "
+        "same exposure (every size pooled) are " +
+        ranges(s) + "; growth is " + split(s, "faster", "slower") +
+        " such worlds with compaction on";
+    text += 2 * s.lower_on > s.count()
+                ? ": packed aggregates are smaller targets than the loose aggregates a searcher "
+                  "meets without compaction, closer to the packed discs the models assume. "
+                : ". ";
+  }
+  if (!with_leaving.empty()) {
+    text +=
+        "Where agents leave, failed LEAVE attempts rejoin and count as growths, so the "
+        "ratio is " +
+        split(with_leaving, "higher", "lower") + " such worlds with compaction on. ";
+  }
   return text;
 }
 
 std::string escape_sentence(const std::vector<CompactionEffect>& effects) {
   const Spread s = spread_of(effects, [](const CompactionEffect& e) { return e.escape_fraction; });
   if (s.empty()) return "";
-  std::string text = "Of the LEAVE attempts, " + ranges(s) +
-                     " get out (escapes over attempts); fewer get out with compaction on in " +
-                     of_worlds(s.lower_on, s.count()) + " worlds that leave (median on / off " +
+  std::string text = "Of the LEAVE attempts, " + ranges(s) + " get out (escapes over attempts), " +
+                     split(s, "more", "fewer") +
+                     " worlds that leave with compaction on (median on / off " +
                      report_number(s.median_ratio()) + ")";
   text += 2 * s.lower_on > s.count()
-              ? ": an enclosed member is blocked by the bodies around it and rejoins, so "
-                "aggregates lose members more slowly than the models' leave laws (every member, "
-                "m p, or the periphery) say. "
+              ? ": a leaver enclosed by its aggregate is blocked by the bodies around it and "
+                "rejoins, so an aggregate loses fewer members than try to leave (m p per step), "
+                "which the models' periphery law was meant to capture. "
               : ". ";
   return text;
 }
@@ -143,8 +170,8 @@ std::string escape_sentence(const std::vector<CompactionEffect>& effects) {
 std::string final_noa_sentence(const std::vector<CompactionEffect>& effects) {
   const Spread s = spread_of(effects, [](const CompactionEffect& e) { return e.final_noa; });
   if (s.empty()) return "";
-  return "The final mean NOA is lower with compaction on in " + of_worlds(s.lower_on, s.count()) +
-         " Bayindir worlds (median on / off " + report_number(s.median_ratio()) + "). ";
+  return "The final mean NOA is " + split(s, "higher", "lower") +
+         " Bayindir worlds with compaction on. ";
 }
 
 std::string error_sentence(const std::vector<CompactionEffect>& effects, bool bayindir) {
@@ -153,15 +180,42 @@ std::string error_sentence(const std::vector<CompactionEffect>& effects, bool ba
   for (const std::string& variant :
        {std::string("original"), std::string(bayindir ? "collision" : "peripheral"),
         std::string(kMeasuredVariant)}) {
-    const Spread s = spread_of(
-        effects, [&](const CompactionEffect& e) { return e.error(variant); }, in_model);
+    const auto error = [&](const CompactionEffect& e) { return e.error(variant); };
+    const Spread s = spread_of(effects, error, in_model);
     if (s.empty()) continue;
-    parts += (parts.empty() ? "" : "; ") + variant + " in " + of_worlds(s.higher_on, s.count()) +
+    parts += (parts.empty() ? "" : "; ") + variant + " " + split(s, "larger", "smaller") +
              " (median on / off " + report_number(s.median_ratio()) + ")";
   }
   if (parts.empty()) return "";
-  return std::string(bayindir ? "Bayindir's NOA RMSE" : "Soysal's TV distance") +
-         " is larger with compaction on for " + parts + ". ";
+  // The world whose original-variant error moved most, and what moved with it.
+  const CompactionEffect* most = nullptr;
+  double largest = 0.0;
+  for (const CompactionEffect& e : effects) {
+    const OnOff v = e.error("original");
+    const double change = std::abs(v.on - v.off);
+    if (in_model(e) && std::isfinite(change) && change > largest) {
+      most = &e;
+      largest = change;
+    }
+  }
+  std::string text = std::string(bayindir ? "Bayindir's NOA RMSE" : "Soysal's TV distance") +
+                     " with compaction on, by variant: " + parts + ".";
+  if (most) {
+    text += " The original variant moved most in " + most->world + " (" +
+            report_number(most->error("original").off) + " off, " +
+            report_number(most->error("original").on) + " on)";
+    if (leaves(*most)) {
+      text += ", where " + report_number(most->escape_fraction.on) +
+              " of the LEAVE attempts get out with compaction on against " +
+              report_number(most->escape_fraction.off) + " off";
+    }
+    if (!std::isnan(most->final_noa.on)) {
+      text += (leaves(*most) ? " and" : ", where") + std::string(" the final mean NOA is ") +
+              report_number(most->final_noa.on) + " against " + report_number(most->final_noa.off);
+    }
+    text += ".";
+  }
+  return text + " ";
 }
 
 std::string claim_changes(const std::vector<ClaimCheck>& on, const std::vector<ClaimCheck>& off) {
