@@ -139,14 +139,21 @@ Arm compaction_off_arm(const ReproduceOptions& options) {
           {typed_override("controller.compaction.enabled", false, "reproduce (compaction off)")}};
 }
 
+// The compaction-off result of `figure`, if that arm ran.
+const FigureResult* compaction_off_of(const FigureResult& figure,
+                                      const std::vector<FigureResult>& off) {
+  for (const FigureResult& o : off) {
+    if (o.figure.id == figure.figure.id) return &o;
+  }
+  return nullptr;
+}
+
 // The figures with each compaction-off result in place of its compaction-on one, so the
 // claims can be checked as they stand without compaction.
 std::vector<FigureResult> with_compaction_off(std::vector<FigureResult> figures,
                                               const std::vector<FigureResult>& off) {
   for (FigureResult& figure : figures) {
-    for (const FigureResult& o : off) {
-      if (o.figure.id == figure.figure.id) figure = o;
-    }
+    if (const FigureResult* o = compaction_off_of(figure, off)) figure = *o;
   }
   return figures;
 }
@@ -155,9 +162,8 @@ std::vector<CompactionEffect> compaction_effects(const std::vector<FigureResult>
                                                  const std::vector<FigureResult>& off) {
   std::vector<CompactionEffect> effects;
   for (const FigureResult& figure : figures) {
-    for (const FigureResult& o : off) {
-      if (o.figure.id == figure.figure.id) effects.push_back(compaction_effect(figure, o));
-    }
+    if (const FigureResult* o = compaction_off_of(figure, off))
+      effects.push_back(compaction_effect(figure, *o));
   }
   return effects;
 }
