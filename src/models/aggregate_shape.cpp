@@ -6,17 +6,12 @@
 
 namespace swarmagg {
 
-namespace {
-constexpr double kPackingScale = 1.20;
-constexpr double kPackingExponent = 0.48;
-}  // namespace
-
 double aggregate_radius(double agent_radius, double size) {
-  return agent_radius * kPackingScale * std::pow(size, kPackingExponent);
+  return agent_radius * kPaperPackingScale * std::pow(size, kPaperPackingExponent);
 }
 
 double periphery_agents(double size) {
-  return std::numbers::pi * (kPackingScale * std::pow(size, kPackingExponent) - 1.0);
+  return std::numbers::pi * (kPaperPackingScale * std::pow(size, kPaperPackingExponent) - 1.0);
 }
 
 double capped_periphery_agents(double size) {

@@ -4,6 +4,10 @@
 // agents on its periphery pi (1.20 m^0.48 - 1) (SPEC 5.2, 5.3; the paper prints sqrt(m)).
 namespace swarmagg {
 
+// The paper's fit (Fig 6): R1 = r a m^b and periph = pi (a m^b - 1) with these a, b.
+inline constexpr double kPaperPackingScale = 1.20;
+inline constexpr double kPaperPackingExponent = 0.48;
+
 double aggregate_radius(double agent_radius, double size);
 
 // Uncapped: exceeds m for small m (3.25, 4.19, 5.02 for m = 3, 4, 5).

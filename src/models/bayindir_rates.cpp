@@ -8,6 +8,10 @@
 
 namespace swarmagg {
 
+double bayindir_agent_radius(const WorldSpec& world) {
+  return world.robots.detection_radius / 4.0;
+}
+
 namespace {
 
 std::vector<double> growth_probabilities(const WorldSpec& world) {
@@ -15,7 +19,7 @@ std::vector<double> growth_probabilities(const WorldSpec& world) {
   std::vector<double> growth(n + 1, 0.0);
   if (!world.controller.join) return growth;
   const double s = world.robots.detection_radius;
-  const double effective_radius = s / 4.0;  // SPEC 5.2 [choice]: r_eff = s/4, not robots.radius
+  const double effective_radius = bayindir_agent_radius(world);
   for (int m = 2; m < n; ++m) {
     const double capture_radius = s + aggregate_radius(effective_radius, m) - effective_radius;
     growth[m] = 2.0 * capture_radius * world.robots.speed * world.engine.dt / world.arena.area();

@@ -23,6 +23,10 @@ struct BayindirRates {
   std::vector<double> loss;
 };
 
+// The agent radius the model's aggregate radius R1(m) is built on: r_eff = s/4 (SPEC 5.2
+// [choice]), not robots.radius.
+double bayindir_agent_radius(const WorldSpec& world);
+
 // Throws InputError when a per-step probability exceeds 1 (dt too coarse for the model).
 BayindirRates bayindir_rates(const WorldSpec& world, CreationVariant variant);
 

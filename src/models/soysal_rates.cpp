@@ -8,14 +8,10 @@
 
 namespace swarmagg {
 
-namespace {
-
-double agents_able_to_leave(const WorldSpec& world, LeavingVariant variant, int size) {
+double soysal_leavers(const WorldSpec& world, LeavingVariant variant, int size) {
   if (variant == LeavingVariant::Original) return size;
   return world.model.periphery_cap ? capped_periphery_agents(size) : periphery_agents(size);
 }
-
-}  // namespace
 
 SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant) {
   const int n = world.robots.count;
@@ -33,7 +29,7 @@ SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant) {
       rates.join[i] = sweep_per_length * (aggregate_radius(r, i) + approach - r) * v;
     }
     if (world.controller.leave) {
-      rates.leave[i] = agents_able_to_leave(world, variant, i) *
+      rates.leave[i] = soysal_leavers(world, variant, i) *
                        leave_probability(world.controller.leave_law, world.controller.p0, i);
     }
   }

@@ -19,6 +19,9 @@ struct SoysalRates {
   std::vector<double> leave;  // [i] L(i), per aggregate of size i >= 2
 };
 
+// The agents of a size-i aggregate able to leave: i (original) or its periphery (peripheral).
+double soysal_leavers(const WorldSpec& world, LeavingVariant variant, int size);
+
 SoysalRates soysal_rates(const WorldSpec& world, LeavingVariant variant);
 
 }  // namespace swarmagg

@@ -8,7 +8,10 @@ RateRecorder::RateRecorder(int agents, std::int64_t last_step)
     : tally_(agents),
       last_step_(last_step),
       growths_at_first_(static_cast<std::size_t>(agents) + 1, 0),
-      growths_now_(static_cast<std::size_t>(agents) + 1, 0) {
+      growths_now_(static_cast<std::size_t>(agents) + 1, 0),
+      shapes_by_size_(static_cast<std::size_t>(agents) + 1, 0),
+      radius_sums_(static_cast<std::size_t>(agents) + 1, 0.0),
+      rim_sums_(static_cast<std::size_t>(agents) + 1, 0.0) {
   tally_.replicates = 1;
 }
 
@@ -36,11 +39,20 @@ void RateRecorder::observe(std::int64_t step, int free_agents,
   }
 }
 
+void RateRecorder::observe_shape(int size, double outer_radius, int rim) {
+  const auto m = static_cast<std::size_t>(size);
+  ++shapes_by_size_.at(m);
+  radius_sums_[m] += outer_radius;
+  rim_sums_[m] += rim;
+}
+
 RateTally RateRecorder::finish() const {
   RateTally tally = tally_;
   tally.creations = creations_now_ - creations_at_first_;
   for (std::size_t m = 0; m < tally.growths.size(); ++m) {
     tally.growths[m] = growths_now_[m] - growths_at_first_[m];
+    tally.outer_radius[m].add_cluster(shapes_by_size_[m], radius_sums_[m]);
+    tally.rim[m].add_cluster(shapes_by_size_[m], rim_sums_[m]);
   }
   return tally;
 }

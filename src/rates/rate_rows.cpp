@@ -2,6 +2,7 @@
 
 #include "config/leave_law.hpp"
 #include "core/errors.hpp"
+#include "models/aggregate_shape.hpp"
 #include "models/bayindir_rates.hpp"
 #include "models/initial_state.hpp"
 #include "models/kinetic_rate.hpp"
@@ -151,6 +152,34 @@ void add_leave_rows(const WorldSpec& world, const RateTally& tally, std::vector<
   }
 }
 
+// The mean outer radius R1 and rim count of size-m aggregates, against the laws each variant
+// builds on: R1 = r' 1.20 m^0.48 (r' = s/4 for Bayindir, r for Soysal) and the periphery
+// pi (1.20 m^0.48 - 1) (Bayindir caps it at m in both variants; only Soysal's peripheral
+// variant has one, capped as model.periphery_cap says).
+void add_geometry_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
+  const std::string model = is_soysal(world) ? "soysal" : "bayindir";
+  const double model_radius = is_soysal(world) ? world.robots.radius : bayindir_agent_radius(world);
+  for (const std::string term : {"radius", "rim"}) {
+    const std::vector<ClusteredMean>& means = term == "radius" ? tally.outer_radius : tally.rim;
+    for (int m = 2; m <= tally.agents; ++m) {
+      const ClusteredMean& mean = means[static_cast<std::size_t>(m)];
+      if (mean.observations() == 0) continue;
+      RateRow row{.term = term, .size = m, .estimate = mean.estimate()};
+      if (term == "radius") {
+        for (const std::string& name : variant_names(world))
+          row.models.push_back({model, name, aggregate_radius(model_radius, m)});
+      } else if (is_soysal(world)) {
+        row.models.push_back({model, leaving_variant_name(LeavingVariant::Peripheral),
+                              soysal_leavers(world, LeavingVariant::Peripheral, m)});
+      } else {
+        for (const std::string& name : variant_names(world))
+          row.models.push_back({model, name, capped_periphery_agents(m)});
+      }
+      rows.push_back(row);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally) {
@@ -159,6 +188,7 @@ std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally&
   if (world.controller.join) add_growth_rows(world, tally, rows);
   if (world.controller.leave) add_leave_rows(world, tally, rows);
   add_initial_rows(world, tally, rows);
+  add_geometry_rows(world, tally, rows);
   return rows;
 }
 

@@ -12,7 +12,9 @@ RateTally::RateTally(int agent_count)
       initial_aggregates(static_cast<std::size_t>(agent_count) + 1, 0),
       attempts(static_cast<std::size_t>(agent_count) + 1, 0),
       escapes(static_cast<std::size_t>(agent_count) + 1, 0),
-      leave_aggregate_steps(static_cast<std::size_t>(agent_count) + 1, 0) {}
+      leave_aggregate_steps(static_cast<std::size_t>(agent_count) + 1, 0),
+      outer_radius(static_cast<std::size_t>(agent_count) + 1),
+      rim(static_cast<std::size_t>(agent_count) + 1) {}
 
 void RateTally::merge(const RateTally& other) {
   if (other.agents != agents) throw std::invalid_argument("RateTally::merge: agent counts differ");
@@ -28,6 +30,8 @@ void RateTally::merge(const RateTally& other) {
     attempts[m] += other.attempts[m];
     escapes[m] += other.escapes[m];
     leave_aggregate_steps[m] += other.leave_aggregate_steps[m];
+    outer_radius[m].merge(other.outer_radius[m]);
+    rim[m].merge(other.rim[m]);
   }
 }
 

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "rates/clustered_mean.hpp"
+
 namespace swarmagg {
 
 struct RateTally {
@@ -23,6 +25,9 @@ struct RateTally {
   // LEAVE episodes by the size m of the aggregate left (observers/leave_episodes.hpp): the
   // attempts, the escapes and their exposure (aggregates of size m at each decision).
   std::vector<std::uint64_t> attempts, escapes, leave_aggregate_steps;
+  // [m] the geometry of size-m aggregates (SPEC 4) observed at the recorded steps after the
+  // first decision, one cluster per replicate: outer radius R1 and rim count.
+  std::vector<ClusteredMean> outer_radius, rim;
 
   explicit RateTally(int agent_count = 0);
   void merge(const RateTally& other);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/measured_rates.hpp"
+#include "rates/geometry_fits.hpp"
 
 namespace swarmagg {
 
@@ -50,7 +51,9 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
       {"units",
        "rates per tu: creation/pairup per searcher pair, growth/join per (searcher, size-m "
        "aggregate) pair, attempt/escape per size-m aggregate; initial: aggregates per "
-       "replicate after the first decision"},
+       "replicate after the first decision; radius (u) and rim (members): means over the "
+       "size-m aggregates seen at the recorded steps, events = exposure = observations, 95% "
+       "t interval with each replicate one cluster"},
       {"searchers", collision ? "every agent (a collision world's agents all keep moving)"
                               : "every agent in no aggregate, as the models count them "
                                 "(LEAVE agents included: the models have no leave timeout)"},
@@ -60,11 +63,10 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
       {"minimum_events", kMinimumEvents},
       {"interval", "exact Poisson (Garwood) 95%, given the exposure"},
       {"terms", terms},
-      {"not_measured",
-       {{"radius", "aggregate geometry is observed (summary.json) but not yet fitted here"},
-        {"rim", "aggregate geometry is observed (summary.json) but not yet fitted here"}}},
-      {"geometry_fits", nullptr},
   };
+  if (!collision) {
+    json["geometry_fits"] = geometry_fits_json(fit_geometry_laws(rows, world.robots.radius));
+  }
   if (!collision) json["measured_variant"] = measured_variant_note(world, measured_terms(rows));
   return json.dump(2) + "\n";
 }

@@ -1,13 +1,17 @@
 #include "rates/rates_plot.hpp"
 
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 
 #include "analysis/csv_text.hpp"
 #include "models/kinetic_rate.hpp"
 #include "output/atomic_file.hpp"
+#include "output/format_text.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/png_terminal.hpp"
+#include "rates/geometry_fits.hpp"
 
 namespace swarmagg {
 
@@ -23,6 +27,8 @@ std::string term_label(const std::string& term) {
   if (term == "creation" || term == "pairup") return "per searcher pair per tu";
   if (term == "growth" || term == "join") return "per searcher per aggregate per tu";
   if (term == "attempt" || term == "escape") return "per aggregate per tu";
+  if (term == "radius") return "mean outer radius R1 (u)";
+  if (term == "rim") return "mean rim members";
   return "aggregates per replicate after the first decision";
 }
 
@@ -101,10 +107,29 @@ void plot_single(const WorldSpec& world, const RateRow& row, const std::filesyst
   run_gnuplot(folder / (name + ".gp"), script);
 }
 
+// The radius and rim rows with the fitted law as one more curve beside the models'.
+std::vector<RateRow> with_geometry_fits(const WorldSpec& world, const std::vector<RateRow>& rows) {
+  const GeometryFits fits = fit_geometry_laws(rows, world.robots.radius);
+  std::vector<RateRow> plotted = rows;
+  for (RateRow& row : plotted) {
+    const PowerLawFit* fit = row.term == "radius" ? &fits.radius
+                             : row.term == "rim"  ? &fits.rim
+                                                  : nullptr;
+    if (!fit || !fit->fitted() || !row.size) continue;
+    const double power = fit->a->value * std::pow(*row.size, fit->b->value);
+    const double value =
+        row.term == "radius" ? world.robots.radius * power : std::numbers::pi * (power - 1.0);
+    row.models.push_back(
+        {"fit", format_text("a=%.3g b=%.3g", fit->a->value, fit->b->value), value});
+  }
+  return plotted;
+}
+
 }  // namespace
 
-void plot_rates(const WorldSpec& world, const std::vector<RateRow>& rows,
+void plot_rates(const WorldSpec& world, const std::vector<RateRow>& measured,
                 const std::filesystem::path& folder) {
+  const std::vector<RateRow> rows = with_geometry_fits(world, measured);
   std::map<std::string, std::vector<const RateRow*>> sized;
   for (const RateRow& row : rows) {
     if (row.size) {

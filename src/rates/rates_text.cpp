@@ -12,8 +12,9 @@ std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
     if (!e.rate) {
       line += "too few events (" + std::to_string(e.events) + ")";
     } else {
+      const bool geometry = row.term == "radius" || row.term == "rim";
       line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high) + " from " +
-              std::to_string(e.events) + " events";
+              std::to_string(e.events) + (geometry ? " observations" : " events");
       for (const ModelTerm& m : row.models) {
         if (m.rate <= 0.0) continue;
         line +=

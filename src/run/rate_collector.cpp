@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "observers/aggregate_geometry.hpp"
 #include "rates/rate_recorder.hpp"
+#include "run/recorded_steps.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
@@ -14,7 +16,8 @@ class RateObserver final : public ReplicateObserver {
   RateObserver(const WorldSpec& spec, std::optional<RateTally>& slot)
       : recorder_(spec.robots.count, spec.steps()),
         slot_(slot),
-        collision_(spec.controller.type == ControllerType::Collision) {}
+        collision_(spec.controller.type == ControllerType::Collision),
+        shape_rules_(ShapeRules::for_world(spec)) {}
 
   void observe(const Replicate& replicate) override {
     replicate_ = &replicate;  // alive until finish(): run_replicate owns it
@@ -27,6 +30,9 @@ class RateObserver final : public ReplicateObserver {
     recorder_.observe(replicate.steps_done(), free, sizes,
                       collision_ ? events.encounters : events.creations,
                       replicate.growths_by_size());
+    const std::int64_t step = replicate.steps_done();
+    if (!collision_ && step >= 1 && is_recorded_step(replicate.spec(), step))
+      observe_shapes(replicate);
   }
   void finish() override {
     RateTally tally = recorder_.finish();
@@ -45,10 +51,22 @@ class RateObserver final : public ReplicateObserver {
     copy(leave.aggregate_steps_by_size, tally.leave_aggregate_steps);
   }
 
+  // The aggregates' geometry (SPEC 4), measured as summary.json's final aggregates are, at
+  // the recorded steps only (O(m^2) per aggregate).
+  void observe_shapes(const Replicate& replicate) {
+    members_.build(replicate.aggregates());
+    for (const AggregateShape& shape :
+         measure_aggregates(members_, replicate.engine().positions(), shape_rules_)) {
+      recorder_.observe_shape(shape.size, shape.outer_radius, shape.rim);
+    }
+  }
+
   RateRecorder recorder_;
   const Replicate* replicate_ = nullptr;
   std::optional<RateTally>& slot_;
   bool collision_;
+  ShapeRules shape_rules_;
+  AggregateMembers members_;
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "run/interrupt.hpp"
 #include "run/parallel_for.hpp"
 #include "run/progress_line.hpp"
+#include "run/recorded_steps.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
@@ -63,7 +64,7 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   for (std::int64_t k = 1; k <= steps; ++k) {
     replicate.step();
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
-    if (k % spec.run.record_every == 0 || k == steps) record(replicate, outcome);
+    if (is_recorded_step(spec, k)) record(replicate, outcome);
     if (observer) observer->observe(replicate);
     if ((k & 1023) == 0) throw_if_interrupted();
   }

@@ -9,6 +9,7 @@
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
 #include "plot/gnuplot.hpp"
+#include "testing/scratch_dir.hpp"
 
 namespace swarmagg {
 namespace {
@@ -39,8 +40,8 @@ TEST(EngineComparison, RunsBothEnginesWithTheSameSeeds) {
 TEST(EngineComparison, WritesTheFolder) {
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not installed";
   const EngineComparison result = compare_engines(tiny_world());
-  const auto out = std::filesystem::temp_directory_path() / "swarmagg-compare-test";
-  std::filesystem::remove_all(out);
+  const testing::ScratchDir scratch("compare-test");
+  const auto& out = scratch.path();
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   for (const char* name :
        {"summary.txt", "compare.json", "noa.csv", "noa.gp", "noa.png", "final_noa.csv", "sizes.csv",
@@ -48,7 +49,6 @@ TEST(EngineComparison, WritesTheFolder) {
         "kinematic/timeseries.csv", "box2d/timeseries.csv"}) {
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
   }
-  std::filesystem::remove_all(out);
 }
 
 TEST(ComparePlots, HistogramCountsEachValueOfEachArm) {

@@ -1,8 +1,8 @@
 #pragma once
 // Helpers for the render tests: a world built in code, snapshots with agents at chosen
-// places, pixel access, PNG reading (libpng) and scratch directories.
+// places, pixel access, PNG reading (libpng); scratch directories come from
+// testing/scratch_dir.hpp.
 #include <png.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstdint>
@@ -19,6 +19,7 @@
 #include "observers/swarm_snapshot.hpp"
 #include "render/frame_layout.hpp"
 #include "render/palette.hpp"
+#include "testing/scratch_dir.hpp"
 
 namespace swarmagg::testing {
 
@@ -140,26 +141,5 @@ inline Image read_png(const std::filesystem::path& path) {
   }
   return out;
 }
-
-// A fresh directory under the system temp dir, removed with its content at scope exit.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& name) {
-    path_ = std::filesystem::temp_directory_path() /
-            ("swarmagg-render-" + name + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace swarmagg::testing

@@ -6,9 +6,14 @@
 #include <numbers>
 
 #include "config/world_loader.hpp"
+#include "models/aggregate_shape.hpp"
 #include "models/initial_state.hpp"
 #include "models/predictions.hpp"
 #include "models/sample_statistics.hpp"
+#include "observers/aggregate_geometry.hpp"
+#include "observers/observer_scene.hpp"
+#include "rates/geometry_fits.hpp"
+#include "rates/rate_recorder.hpp"
 #include "rates/rate_rows.hpp"
 #include "run/replicate.hpp"
 #include "run/world_runner.hpp"
@@ -153,6 +158,88 @@ TEST(RateCollector, MeasuredVariantReproducesACreationOnlyWorld) {
     EXPECT_NEAR(*measured.series[i].noa, simulated[i], 0.03 * simulated[i])
         << "step " << measured.series[i].step;
   }
+}
+
+// Hand-built hexagonal packs at spacing 2r (r = 1) measured as the collector measures them
+// and fed through the recorder: the radius and rim rows hold R1 = 2 rings + r (the corners
+// of the outer ring) and the outer ring's 6 rings members, with no spread between replicates.
+TEST(RateCollector, HexagonalPacksGiveTheirRadiusAndRimRows) {
+  WorldSpec spec = paper_world("full-0.0025.yaml", {"robots.count=40"});
+  const ShapeRules rules = ShapeRules::for_world(spec);
+  ASSERT_DOUBLE_EQ(rules.rim.reach, 2.4);
+  RateTally tally(40);
+  for (int replicate = 0; replicate < 2; ++replicate) {
+    RateRecorder recorder(40, 100);
+    for (const int rings : {1, 2, 3}) {
+      testing::Scene scene;
+      scene.add_hexagon(50.0, 50.0, rings, 2.0);
+      std::vector<AgentId> members(scene.positions.size());
+      for (std::size_t i = 0; i < members.size(); ++i) members[i] = static_cast<AgentId>(i);
+      const AggregateShape shape =
+          measure_aggregate(members, scene.positions, {scene.arena, 1.0, rules.rim});
+      for (int observation = 0; observation < 5; ++observation)
+        recorder.observe_shape(shape.size, shape.outer_radius, shape.rim);
+    }
+    tally.merge(recorder.finish());
+  }
+  const std::map<int, std::pair<double, double>> expected{
+      {7, {3.0, 6.0}}, {19, {5.0, 12.0}}, {37, {7.0, 18.0}}};
+  int checked = 0;
+  for (const RateRow& row : measured_rate_rows(spec, tally)) {
+    if (row.term != "radius" && row.term != "rim") continue;
+    ASSERT_TRUE(expected.contains(*row.size)) << *row.size;
+    const auto [radius, rim] = expected.at(*row.size);
+    const double value = row.term == "radius" ? radius : rim;
+    ASSERT_TRUE(row.estimate.rate) << row.term << " " << *row.size;
+    EXPECT_EQ(row.estimate.events, 10u);
+    EXPECT_NEAR(*row.estimate.rate, value, 1e-9) << row.term << " " << *row.size;
+    // No spread; the interval's summed squares cancel to rounding (relative 1e-16, then a
+    // square root).
+    EXPECT_NEAR(*row.estimate.high - *row.estimate.low, 0.0, 1e-5);
+    // Both Bayindir variants, with the paper's law on r_eff = s/4 = 1.
+    ASSERT_EQ(row.models.size(), 2u);
+    const double model = row.term == "radius" ? aggregate_radius(1.0, *row.size)
+                                              : capped_periphery_agents(*row.size);
+    EXPECT_DOUBLE_EQ(row.models.front().rate, model);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+// A dense world with compaction: every aggregate observed at a recorded step after the
+// first decision is one observation (their count is the NOA summed over those rows), an
+// aggregate of at most 6 has no interior member (it would need 6 fellows), and a pair
+// holds together within s, so its R1 lies between r + spacing / 2 and r + s / 2.
+TEST(RateCollector, SamplesTheGeometryOfEveryAggregateAtTheRecordedSteps) {
+  const WorldSpec spec =
+      load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/compact.yaml",
+                 {"robots.count=200", "run.duration=300", "run.replicates=2", "run.threads=2"});
+  RunResult result;
+  const RateTally tally = measure(spec, &result);
+  std::uint64_t aggregates = 0;
+  for (const ReplicateOutcome& r : result.replicates) {
+    for (const TimeseriesRow& row : r.rows) aggregates += row.step >= 1 ? row.noa : 0;
+  }
+  std::uint64_t observations = 0;
+  for (int m = 2; m <= tally.agents; ++m) {
+    observations += tally.outer_radius[m].observations();
+    EXPECT_EQ(tally.rim[m].observations(), tally.outer_radius[m].observations());
+  }
+  EXPECT_GT(aggregates, 100u);
+  EXPECT_EQ(observations, aggregates);
+  int small_sizes = 0;
+  for (const RateRow& row : measured_rate_rows(spec, tally)) {
+    if (!row.size || !row.estimate.rate) continue;
+    if (row.term == "rim" && *row.size <= 6) {
+      EXPECT_DOUBLE_EQ(*row.estimate.rate, *row.size);
+      ++small_sizes;
+    }
+    if (row.term == "radius" && *row.size == 2) {
+      EXPECT_GE(*row.estimate.rate, 2.0 - 0.05);
+      EXPECT_LE(*row.estimate.rate, 3.0);
+    }
+  }
+  EXPECT_GE(small_sizes, 3);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "run/initial_placement.hpp"
 #include "run/replicate.hpp"
 #include "run/run_folder.hpp"
+#include "testing/scratch_dir.hpp"
 
 namespace swarmagg {
 namespace {
@@ -178,8 +179,8 @@ run: {duration: 1500, replicates: 6, seed: 3, record_every: 1000}
 TEST(RunFolder, WritesEveryOutputAndAResolvedWorldThatLoadsBack) {
   WorldSpec spec = full_model_world();
   spec.run.replicates = 2;
-  const auto out = std::filesystem::temp_directory_path() / "swarmagg-run-folder-test";
-  std::filesystem::remove_all(out);
+  const testing::ScratchDir scratch("run-folder-test");
+  const auto& out = scratch.path();
   write_run_folder(spec, run_with_threads(spec, 2), out);
   for (const char* file : {"timeseries.csv", "summary.json", "world.resolved.yaml"}) {
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
@@ -195,7 +196,6 @@ TEST(RunFolder, WritesEveryOutputAndAResolvedWorldThatLoadsBack) {
     EXPECT_EQ(entry.path().extension(),
               entry.path().extension() == ".tmp" ? ".none" : entry.path().extension());
   }
-  std::filesystem::remove_all(out);
 }
 
 }  // namespace

@@ -1,0 +1,56 @@
+#include "reproduce/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace swarmagg {
+namespace {
+
+RateEstimate mean_of(double value) {
+  return {.events = 40, .exposure = 40.0, .rate = value, .low = value, .high = value};
+}
+
+// A figure whose run measured aggregates of sizes 2, 4, 8 and 16 packed as R1 = r 1.2 m^0.48
+// (r = 1) with every member on the rim.
+FigureResult measured_geometry(const std::string& figures, const std::string& world,
+                               const std::vector<int>& sizes) {
+  FigureResult result;
+  result.figure = {.id = "fig" + figures, .figures = figures, .title = world, .worlds = {world}};
+  result.worlds.emplace_back();
+  result.worlds.back().name = world;
+  for (const int m : sizes) {
+    result.rates.push_back({"radius", m, mean_of(1.2 * std::pow(m, 0.48)), {}});
+    result.rates.push_back({"rim", m, mean_of(m), {}});
+  }
+  return result;
+}
+
+std::string line_of(const std::string& text, const std::string& start) {
+  const auto at = text.find(start);
+  if (at == std::string::npos) return "";
+  return text.substr(at, text.find('\n', at) - at);
+}
+
+TEST(Report, SetsTheFittedGeometryLawsAgainstThePapers) {
+  const std::vector<FigureResult> results{measured_geometry("18", "packed", {2, 4, 8, 16}),
+                                          measured_geometry("9", "pairs", {2})};
+  const std::string report = report_markdown({"quick", "kinematic", 1.0}, results, {});
+  // R1: exactly the paper's law. Rim = m: log(m / pi + 1) is no power law, so its fit has
+  // a spread, and the rim share at the largest size is 1.
+  const std::string row =
+      line_of(report, "| 18 | packed | 4 | 1.2 [1.2, 1.2] | 0.48 [0.48, 0.48] |");
+  ASSERT_FALSE(row.empty()) << report;
+  EXPECT_NE(row.find("| 1 (m = 16) |"), std::string::npos) << row;
+  EXPECT_TRUE(line_of(report, "| 9 | pairs |").empty());  // pairs only: no fit
+}
+
+TEST(Report, SaysSoWhenNoExperimentHasEnoughSizes) {
+  const std::string report =
+      report_markdown({"quick", "kinematic", 1.0}, {measured_geometry("9", "pairs", {2, 3})}, {});
+  EXPECT_NE(report.find("No experiment formed aggregates of enough sizes"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swarmagg
