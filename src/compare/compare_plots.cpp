@@ -7,6 +7,7 @@
 
 #include "controllers/aggregation_rules.hpp"
 #include "models/aggregate_shape.hpp"
+#include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
 
@@ -99,6 +100,14 @@ double member_leave_probability(const WorldSpec& spec, int size) {
   return leave_probability(rules.leave_rule, size, size - 1);
 }
 
+// periph(m) as the world's model counts it: Soysal's peripheral variant honours
+// model.periphery_cap (the paper worlds leave it off), Bayindir's shrink always caps at m.
+double periphery_leavers(const WorldSpec& spec, int size) {
+  return spec.controller.type == ControllerType::Soysal
+             ? soysal_leavers(spec, LeavingVariant::Peripheral, size)
+             : capped_periphery_agents(size);
+}
+
 void write_rate(std::ostringstream& csv, const LeaveTally& leave, int size, double dt) {
   const double exposure = leave.aggregate_time(size, dt);
   const auto k = static_cast<std::size_t>(size);
@@ -130,7 +139,7 @@ std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Compar
     write_rate(csv, c.a.leave, m, dt);
     write_rate(csv, c.b.leave, m, b.spec.engine.dt);
     const double p_per_tu = member_leave_probability(a.spec, m) / dt;
-    csv << ',' << m * p_per_tu << ',' << capped_periphery_agents(m) * p_per_tu << '\n';
+    csv << ',' << m * p_per_tu << ',' << periphery_leavers(a.spec, m) * p_per_tu << '\n';
   }
   return csv.str();
 }
