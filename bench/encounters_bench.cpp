@@ -42,8 +42,12 @@ struct StepInput {
     make_controller(spec)->decide(input, swarm, CounterRng(r.seed()), commands, events);
     signals.resize(swarm.size());
     write_signals(swarm.state, signals);
-    limits = {spec.robots.detection_radius * (1.0 - 1e-9), 2.0 * spec.robots.radius,
-              spec.engine.dt};
+    limits = {spec.robots.detection_radius * (1.0 - 1e-9),
+              2.0 * spec.robots.radius,
+              spec.engine.dt,
+              spec.engine.contact,
+              false,
+              {}};
   }
 };
 
@@ -88,8 +92,10 @@ void BM_BayindirGuardedStep(benchmark::State& state) {
         motion.resolve(input.search.candidates(), input.commands, input.signals, input.limits);
     benchmark::DoNotOptimize(encounters);
   }
-  std::size_t halted = 0;
-  for (const double t : motion.stop_times()) halted += t < input.limits.dt;
+  std::size_t halted = 0;  // halted or slid: moved other than commanded
+  for (std::uint32_t a = 0; a < input.commands.size(); ++a) {
+    halted += motion.displacement(a) != input.commands[a].velocity * input.limits.dt;
+  }
   state.counters["candidates"] = static_cast<double>(input.search.candidates().size());
   state.counters["halted"] = static_cast<double>(halted);
   count_items(state, input.commands.size());

@@ -7,6 +7,7 @@
 
 #include "controllers/controller_registry.hpp"
 #include "models/aggregate_shape.hpp"
+#include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
 
@@ -97,6 +98,14 @@ double member_leave_probability(const WorldSpec& spec, int size) {
   return registration_of(spec.controller.type).leave_probability_at_size(spec, size);
 }
 
+// periph(m) as the world's model counts it: Soysal's peripheral variant honours
+// model.periphery_cap (the paper worlds leave it off), Bayindir's shrink always caps at m.
+double periphery_leavers(const WorldSpec& spec, int size) {
+  return controller_rules(spec).model == ModelFamily::Soysal
+             ? soysal_leavers(spec, LeavingVariant::Peripheral, size)
+             : capped_periphery_agents(size);
+}
+
 void write_rate(std::ostringstream& csv, const LeaveTally& leave, int size, double dt) {
   const double exposure = leave.aggregate_time(size, dt);
   const auto k = static_cast<std::size_t>(size);
@@ -128,7 +137,7 @@ std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Compar
     write_rate(csv, c.a.leave, m, dt);
     write_rate(csv, c.b.leave, m, b.spec.engine.dt);
     const double p_per_tu = member_leave_probability(a.spec, m) / dt;
-    csv << ',' << m * p_per_tu << ',' << capped_periphery_agents(m) * p_per_tu << '\n';
+    csv << ',' << m * p_per_tu << ',' << periphery_leavers(a.spec, m) * p_per_tu << '\n';
   }
   return csv.str();
 }

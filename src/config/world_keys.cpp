@@ -311,6 +311,9 @@ std::vector<WorldKey> build_keys() {
                            {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
   keys.push_back(real_key(
       "engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive));
+  keys.push_back(enum_key<ContactResponse>(
+      "engine.contact", [](WorldSpec& w) -> ContactResponse& { return w.engine.contact; },
+      {{"slide", ContactResponse::Slide}, {"stop", ContactResponse::Stop}}));
   keys.push_back(real_key(
       "engine.box2d.repulsion_gain",
       [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative));

@@ -340,6 +340,11 @@ void check_world(const WorldSpec& spec) {
                    " but must be below robots.detection_radius (" + format_number(s) +
                    "); set it, or controller.compaction.enabled: false");
   }
+  // Box2D's solver always slides bodies along their contacts.
+  if (spec.engine.type == EngineType::Box2D && spec.engine.contact == ContactResponse::Stop) {
+    impossible(spec, "engine.contact",
+               "is stop, which only the kinematic engine offers (Box2D's contacts slide)");
+  }
   // Compared before rounding: steps() cannot represent a count beyond 2^63.
   if (spec.run.duration / spec.engine.dt > 1e12) {
     impossible(spec, "run.duration", "needs more than 10^12 steps of engine.dt");

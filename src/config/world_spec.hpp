@@ -19,6 +19,9 @@ enum class LeaveLaw { Constant, Inverse, InverseSquare };
 enum class LeaveSize { Aggregate, Neighbours };
 enum class CollisionMode { Ghost, Paper };
 enum class EngineType { Kinematic, Box2D };
+// How a body moving into a body solid to it goes on (kinematic engine; Box2D's contacts
+// always slide): along the contact for the rest of the step, or halted there.
+enum class ContactResponse { Slide, Stop };
 enum class Kappa { Kinetic, Maxwell, Paper };
 enum class CreationVariant { Original, Collision };
 enum class LeavingVariant { Original, Peripheral };
@@ -89,6 +92,7 @@ struct Box2DSpec {
 struct EngineSpec {
   EngineType type = EngineType::Kinematic;
   double dt = 0.1;
+  ContactResponse contact = ContactResponse::Slide;
   Box2DSpec box2d;
 };
 

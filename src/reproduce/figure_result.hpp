@@ -20,6 +20,7 @@ struct FigureResult {
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
   std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
+  std::optional<double> member_spacing;           // Noa / Partition: summary.json's final, pooled
   std::string plot;  // the figure's PNG, relative to the report's folder ("plots/<id>.png")
   int reused = 0;    // worlds whose run folder was reused
   double wall_seconds = 0.0;

@@ -1,14 +1,18 @@
 #include "reproduce/reproduce.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
+#include "controllers/controller_registry.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"
 #include "rates/rates_csv.hpp"
 #include "reproduce/claims.hpp"
+#include "reproduce/compaction_effect.hpp"
+#include "reproduce/compaction_report.hpp"
 #include "reproduce/encounter_plot.hpp"
 #include "reproduce/noa_plot.hpp"
 #include "reproduce/report.hpp"
@@ -42,11 +46,13 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
     case FigureKind::Noa:
       result.noa = compare_noa(runs / figure.worlds.front());
       result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
+      result.member_spacing = final_member_spacing(runs / figure.worlds.front());
       plot_noa(files, figure.title, *result.noa);
       break;
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
       result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
+      result.member_spacing = final_member_spacing(runs / figure.worlds.front());
       plot_partitions(files, figure.title, *result.partitions);
       break;
   }
@@ -58,13 +64,18 @@ std::string errors_text(const std::vector<VariantError>& errors, const char* mea
   return text;
 }
 
-std::string summary_line(const FigureResult& r) {
+std::string errors_text(const FigureResult& r) {
+  if (r.noa) return errors_text(r.noa->errors, "NOA RMSE");
+  if (r.partitions) return errors_text(r.partitions->errors, "TV distance");
+  return "";
+}
+
+std::string summary_line(const FigureResult& r, const FigureResult* compaction_off) {
   std::string line = "Fig " + r.figure.figures + " (" + r.figure.id +
                      "): " + std::to_string(r.worlds.size()) + " world(s), " +
                      std::to_string(r.reused) + " reused, " + report_number(r.wall_seconds) +
                      " s; ";
-  if (r.noa) line += errors_text(r.noa->errors, "NOA RMSE");
-  if (r.partitions) line += errors_text(r.partitions->errors, "TV distance");
+  line += errors_text(r);
   if (!r.encounters.empty()) {
     double deviation = 0.0;
     for (const EncounterPoint& p : r.encounters)
@@ -72,14 +83,26 @@ std::string summary_line(const FigureResult& r) {
     line += "mean |deviation| from kinetic theory " +
             report_number(100 * deviation / r.encounters.size()) + " %";
   }
+  if (compaction_off) {
+    line += "; compaction off (" + report_number(compaction_off->wall_seconds) +
+            " s): " + errors_text(*compaction_off);
+  }
   return line;
 }
 
-FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure& figure) {
+// One arm of the reproduction: the folder that holds its runs/ and plots/, and what it
+// changes in every world after reproduce_overrides.
+struct Arm {
+  std::filesystem::path root;
+  std::vector<WorldOverride> overrides;
+};
+
+FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure& figure,
+                              const Arm& arm) {
   const auto start = Clock::now();
   FigureResult result;
   result.figure = figure;
-  const std::filesystem::path runs = options.out / "runs";
+  const std::filesystem::path runs = arm.root / "runs";
   RunOptions run_options;
   run_options.threads = options.threads;
   run_options.progress = options.progress;
@@ -87,16 +110,63 @@ FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure
     const std::string path = (options.worlds / (name + ".yaml")).string();
     WorldSpec world = load_world(path);
     for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
+    for (const WorldOverride& o : arm.overrides) apply_override(world, o);
     check_world(world);
     result.reused += ensure_run(world, runs / name, run_options) ? 1 : 0;
     result.worlds.push_back(std::move(world));
   }
-  const FigureFiles files{options.out / kPlotFolder, figure.id, options.plot_size, ""};
+  const FigureFiles files{arm.root / kPlotFolder, figure.id, options.plot_size, ""};
   std::filesystem::create_directories(files.folder);
   compare_and_plot(result, runs, files);
-  result.plot = (std::filesystem::path(kPlotFolder) / files.png_name()).generic_string();
+  // Relative to the report, which sits in options.out.
+  result.plot = (arm.root.lexically_relative(options.out) / kPlotFolder / files.png_name())
+                    .lexically_normal()
+                    .generic_string();
   result.wall_seconds = seconds_since(start);
   return result;
+}
+
+// Compaction changes the Bayindir and Soysal experiments whose worlds compact; the collision
+// checks have no waiting agents, and a world already run without compaction has no other arm.
+bool compaction_applies(const FigureResult& result) {
+  const FigureKind kind = result.figure.kind;
+  if (kind != FigureKind::Noa && kind != FigureKind::Partition) return false;
+  return std::all_of(result.worlds.begin(), result.worlds.end(),
+                     [](const WorldSpec& w) { return controller_rules(w).compacts; });
+}
+
+Arm compaction_off_arm(const ReproduceOptions& options) {
+  return {options.out / kCompactionOffFolder,
+          {typed_override("controller.compaction.enabled", false, "reproduce (compaction off)")}};
+}
+
+// The compaction-off result of `figure`, if that arm ran.
+const FigureResult* compaction_off_of(const FigureResult& figure,
+                                      const std::vector<FigureResult>& off) {
+  for (const FigureResult& o : off) {
+    if (o.figure.id == figure.figure.id) return &o;
+  }
+  return nullptr;
+}
+
+// The figures with each compaction-off result in place of its compaction-on one, so the
+// claims can be checked as they stand without compaction.
+std::vector<FigureResult> with_compaction_off(std::vector<FigureResult> figures,
+                                              const std::vector<FigureResult>& off) {
+  for (FigureResult& figure : figures) {
+    if (const FigureResult* o = compaction_off_of(figure, off)) figure = *o;
+  }
+  return figures;
+}
+
+std::vector<CompactionEffect> compaction_effects(const std::vector<FigureResult>& figures,
+                                                 const std::vector<FigureResult>& off) {
+  std::vector<CompactionEffect> effects;
+  for (const FigureResult& figure : figures) {
+    if (const FigureResult* o = compaction_off_of(figure, off))
+      effects.push_back(compaction_effect(figure, *o));
+  }
+  return effects;
 }
 
 }  // namespace
@@ -120,8 +190,14 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
   const auto start = Clock::now();
   ReproduceOutcome outcome;
   for (const PaperFigure& figure : select_worlds(paper_figures(), options.only)) {
-    outcome.figures.push_back(reproduce_figure(options, figure));
-    summary << summary_line(outcome.figures.back()) << std::endl;
+    outcome.figures.push_back(reproduce_figure(options, figure, Arm{options.out, {}}));
+    const FigureResult* off = nullptr;
+    if (compaction_applies(outcome.figures.back())) {
+      outcome.compaction_off.push_back(
+          reproduce_figure(options, figure, compaction_off_arm(options)));
+      off = &outcome.compaction_off.back();
+    }
+    summary << summary_line(outcome.figures.back(), off) << std::endl;
   }
   outcome.wall_seconds = seconds_since(start);
   std::string mode = options.quick ? "quick" : "full";
@@ -130,8 +206,16 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
   const ReportContext context{mode, options.engine.empty() ? "as in each world" : options.engine,
                               outcome.wall_seconds};
   outcome.report = options.out / "REPORT.md";
+  const std::vector<ClaimCheck> claims = check_claims(outcome.figures);
+  const std::vector<CompactionEffect> effects =
+      compaction_effects(outcome.figures, outcome.compaction_off);
+  write_file_atomic(options.out / kCompactionCsv, compaction_csv(effects));
   write_file_atomic(outcome.report,
-                    report_markdown(context, outcome.figures, check_claims(outcome.figures)));
+                    report_markdown(context, outcome.figures, claims) + "\n" +
+                        compaction_section(effects, claims,
+                                           check_claims(with_compaction_off(
+                                               outcome.figures, outcome.compaction_off)),
+                                           kCompactionOffFolder));
   return outcome;
 }
 

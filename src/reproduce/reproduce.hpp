@@ -3,6 +3,9 @@
 // <out>/runs/<world>/ with the model outputs beside it, compares each experiment with the
 // models, draws one PNG per paper figure into <out>/plots/ and writes <out>/REPORT.md.
 // --quick is the same path with fewer replicates and shorter runs, applied as overrides.
+// Every Bayindir and Soysal experiment whose world compacts (SPEC 3, the default) runs a
+// second time with controller.compaction.enabled=false into <out>/compaction-off/{runs,
+// plots}/; the report sets the two side by side and <out>/compaction.csv holds the numbers.
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -35,8 +38,13 @@ inline constexpr double kQuickDurationDivisor = 25.0;
 std::vector<WorldOverride> reproduce_overrides(const ReproduceOptions& options,
                                                const WorldSpec& world);
 
+// Under --out: the compaction-off arm's runs/ and plots/, and the on/off table.
+inline constexpr const char* kCompactionOffFolder = "compaction-off";
+inline constexpr const char* kCompactionCsv = "compaction.csv";
+
 struct ReproduceOutcome {
-  std::vector<FigureResult> figures;
+  std::vector<FigureResult> figures;         // every world as it says (compaction on)
+  std::vector<FigureResult> compaction_off;  // the NOA and partition figures, compaction off
   std::filesystem::path report;
   double wall_seconds = 0.0;
 };

@@ -87,5 +87,29 @@ TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
   EXPECT_THAT(ten, ::testing::StartsWith("10,0,0,NaN,NaN,9,50,0.18,0.1176,0.1,0.0824"));
 }
 
+// Soysal's paper worlds set model.periphery_cap: false, and their model then lets periph(3) =
+// pi (1.2 3^0.48 - 1) = 3.246 agents leave a 3-aggregate: the plotted law must be the model's.
+TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
+  WorldSpec spec = tiny_world();
+  spec.controller.type = "soysal";
+  spec.controller.p0 = 0.001;
+  spec.model.periphery_cap = false;
+  const ArmResult a{"a", spec, {}};
+  Comparison c;
+  c.a.label = c.b.label = "a";
+  for (LeaveTally* t : {&c.a.leave, &c.b.leave}) t->resize(8);
+  c.a.leave.aggregate_steps_by_size[3] = 1000;
+  const auto periphery_law = [&] {
+    const std::string csv = escape_rate_csv(a, a, c);
+    const std::string row = csv.substr(csv.find('\n') + 1);
+    return std::stod(row.substr(row.rfind(',') + 1));
+  };
+  EXPECT_NEAR(periphery_law(), 3.2459 * 0.001 / spec.engine.dt, 1e-5);
+  spec.model.periphery_cap = true;
+  const ArmResult capped{"a", spec, {}};
+  const std::string csv = escape_rate_csv(capped, capped, c);
+  EXPECT_THAT(csv, ::testing::EndsWith(",0.03,0.03\n"));
+}
+
 }  // namespace
 }  // namespace swarmagg

@@ -104,6 +104,16 @@ TEST(WorldLoader, CompactionDefaultsToTouchingSpacingAndFollowsTheRadius) {
       2.25);
 }
 
+// engine.contact: slide (the default) or stop, which the kinematic engine alone offers.
+TEST(WorldLoaderErrors, ContactResponseIsCheckedAgainstTheEngine) {
+  EXPECT_THAT(error_of("engine: {contact: bounce}\n"),
+              HasSubstr("engine.contact: expected one of: slide, stop, got 'bounce'"));
+  EXPECT_THAT(error_of("engine: {type: box2d, contact: stop}\n"),
+              HasSubstr("engine.contact: is stop, which only the kinematic engine offers"));
+  EXPECT_EQ(error_of("engine: {contact: stop}\n"), "no error");
+  EXPECT_EQ(error_of("engine: {type: box2d, contact: slide}\n"), "no error");
+}
+
 TEST(WorldLoaderErrors, CompactionValuesAreChecked) {
   EXPECT_THAT(error_of("controller: {compaction: {spacing: 0}}\n"),
               HasSubstr("controller.compaction.spacing: expected a positive number"));

@@ -179,6 +179,72 @@ TEST_F(ReproduceTest, ASecondRunReusesEveryRunFolder) {
   const ReproduceOutcome second = reproduce(reduced_options(out_), summary);
   for (const FigureResult& r : second.figures)
     EXPECT_EQ(r.reused, static_cast<int>(r.worlds.size())) << r.figure.id;
+  ASSERT_EQ(second.compaction_off.size(), 2u);
+  for (const FigureResult& r : second.compaction_off)
+    EXPECT_EQ(r.reused, static_cast<int>(r.worlds.size())) << r.figure.id;
+}
+
+// CSV value of compaction.csv for (world, compaction, quantity).
+std::string compaction_value(const std::string& csv, const std::string& world,
+                             const std::string& arm, const std::string& quantity) {
+  std::stringstream lines(csv);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    std::string c;
+    while (std::getline(stream, c, ',')) cells.push_back(c);
+    if (cells.size() >= 4 && cells[1] == world && cells[2] == arm && cells[3] == quantity)
+      return cells.size() > 4 ? cells[4] : "";
+  }
+  return "missing";
+}
+
+TEST_F(ReproduceTest, BayindirAndSoysalWorldsAlsoRunWithCompactionOff) {
+  // The collision checks have no waiting agents: no second arm for them.
+  ASSERT_EQ(first_->compaction_off.size(), 2u);
+  EXPECT_EQ(first_->compaction_off[0].figure.id, "fig09-creation-50");
+  EXPECT_EQ(first_->compaction_off[1].figure.id, "fig20-21-soysal-5-constant");
+  for (const char* world : {"creation-50", "soysal-5-constant"}) {
+    const auto on = out_ / "runs" / world / "world.resolved.yaml";
+    const auto off = out_ / "compaction-off" / "runs" / world / "world.resolved.yaml";
+    EXPECT_NE(read_text(on).find("enabled: true"), std::string::npos) << world;
+    EXPECT_NE(read_text(off).find("enabled: false"), std::string::npos) << world;
+    EXPECT_TRUE(png_size(out_ / "compaction-off" / "plots" /
+                         (world == std::string("creation-50") ? "fig09-creation-50.png"
+                                                              : "fig20-21-soysal-5-constant.png"))
+                    .has_value())
+        << world;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out_ / "compaction-off" / "runs" / "collision-count-100"));
+}
+
+TEST_F(ReproduceTest, CompactionTableHoldsBothArmsOfEachExperiment) {
+  const std::string report = read_text(first_->report);
+  const std::string csv = read_text(out_ / "compaction.csv");
+  ASSERT_NE(report.find("## Compaction on and off"), std::string::npos);
+  // | Fig | world | error | original on | original off | second on | off | measured on | off |
+  const auto creation =
+      report_row(report.substr(report.find("## Compaction on and off")), "creation-50");
+  ASSERT_GE(creation.size(), 10u);
+  EXPECT_EQ(creation[3], "NOA RMSE");
+  // The on column is the error of the report's main table (compaction on is the primary).
+  EXPECT_EQ(creation[4], report_row(report, "creation-50")[6]);
+  for (std::size_t i = 4; i <= 9; ++i) EXPECT_NO_THROW(std::stod(creation[i])) << creation[i];
+  EXPECT_NEAR(std::stod(creation[5]),
+              std::stod(compaction_value(csv, "creation-50", "off", "error:original")),
+              1e-3 * std::stod(creation[5]) + 1e-9);
+  const auto soysal =
+      report_row(report.substr(report.find("## Compaction on and off")), "soysal-5-constant");
+  ASSERT_GE(soysal.size(), 10u);
+  EXPECT_EQ(soysal[3], "TV");
+  for (const char* arm : {"on", "off"}) {
+    for (const char* world : {"creation-50", "soysal-5-constant"}) {
+      EXPECT_NE(compaction_value(csv, world, arm, "error:original"), "missing") << world << arm;
+      EXPECT_NE(compaction_value(csv, world, arm, "error:measured"), "missing") << world << arm;
+    }
+  }
+  EXPECT_EQ(compaction_value(csv, "collision-count-100", "on", "error:original"), "missing");
 }
 
 TEST_F(ReproduceTest, AChangedWorldIsRunAgain) {

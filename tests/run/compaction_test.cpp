@@ -227,13 +227,15 @@ TEST_P(Compaction, AnEnclosedLeaverNeverGetsOut) {
 }
 
 // A rim agent (one of the twelve, by trial) heads away from the pack with nothing in its way.
-// On Box2D it slides along the rim neighbours it touches and should get out nearly always
-// (at least 90 of 100). The kinematic engine has no sliding: a body pressed into one it
-// touches halts for the step. Six of the twelve rim agents sit mid-edge, with the rim
-// neighbours they touch at right angles to their way out; the jitter tilts that way into one
-// of them about half the time, which holds the leaver for its whole timeout. So about 75 of
-// 100 get out (76 measured; 20 of the 24 held were mid-edge); 60 is 3.5 binomial standard
-// deviations below that.
+// Both engines slide it along the rim neighbours it touches (Box2D by its contact solver, the
+// kinematic engine by engine.contact: slide), so it should get out nearly always: 100 of 100
+// measured on Box2D and 91 of 100 on the kinematic engine, whose exact contacts hold a
+// mid-edge leaver whose jittered heading presses it into the wedge between two neighbours
+// (pressed inwards themselves, they give no way). Both must reach 80, almost four binomial
+// standard deviations (2.9 at p = 0.91) below the kinematic count. (Halting at contact,
+// engine.contact: stop, let only 76 out: six of the twelve rim agents sit mid-edge with the
+// neighbours they touch at right angles to their way out, and the jitter tilts that way into
+// one of them about half the time.)
 TEST_P(Compaction, ARimLeaverGetsOutInMostTrials) {
   int escaped = 0;
   for (int trial = 0; trial < kTrials; ++trial) {
@@ -242,7 +244,7 @@ TEST_P(Compaction, ARimLeaverGetsOutInMostTrials) {
     const auto rim = static_cast<AgentId>(7 + trial % 12);
     escaped += escapes(spec, start, rim, 2000 + trial) ? 1 : 0;
   }
-  EXPECT_GE(escaped, GetParam() == EngineType::Box2D ? 90 : 60) << engine_name(GetParam());
+  EXPECT_GE(escaped, 80) << engine_name(GetParam());
   std::cout << engine_name(GetParam()) << ": " << escaped << " of " << kTrials
             << " rim leavers got out\n";
 }

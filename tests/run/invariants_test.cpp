@@ -329,13 +329,14 @@ std::vector<std::string> with(std::vector<std::string> base, std::vector<std::st
 
 TEST(InvariantsInRuns, FullModelKinematicTorusAndWalls) {
   expect_run_keeps_invariants(kFullModel, 3000);
-  // KNOWN ISSUE (issue 15): with compaction on walls, the kinematic engine mirrors a body
-  // that crossed the wall band after the guarded move, and that mirrored excess is not
-  // guarded: at step 1471 of this run a waiting body sank 0.005 u further into a searcher it
-  // already overlapped (the two had passed over each other as leavers). Checked here with
-  // compaction off until the reflection is guarded; the torus run above has it on.
-  expect_run_keeps_invariants(
-      with(kFullModel, {"arena.topology=walls", "controller.compaction.enabled=false"}), 3000);
+  // Compaction on (the default) between walls: bodies solid to others meet the walls inside
+  // the guarded move. (Mirrored after it, unguarded, a waiting body once sank 0.005 u further
+  // into a searcher it already overlapped, at step 1471 of this run.)
+  expect_run_keeps_invariants(with(kFullModel, {"arena.topology=walls"}), 3000);
+  // Halting at contacts as before sliding, and without compaction, between walls too.
+  expect_run_keeps_invariants(with(kFullModel, {"arena.topology=walls", "engine.contact=stop",
+                                                "controller.compaction.enabled=false"}),
+                              3000);
 }
 
 TEST(InvariantsInRuns, CreationAndDissipationWithPartners) {

@@ -3,24 +3,32 @@
 #include <algorithm>
 #include <limits>
 
+#include "geometry/free_motion.hpp"
 #include "geometry/swept_contact.hpp"
 
 namespace swarmagg {
 namespace {
 
 constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
+// Bodies and walls within this fraction of contact count as touching when a body slides:
+// contact times are roots of quadratics, exact up to rounding.
+constexpr double kTouchingSlack = 1e-9;
 
 }  // namespace
 
-// Earliest event first; simultaneous events by their pair's agent ids (i, then j), then by
-// kind, so the order never depends on how the heap or the pair list is arranged.
+// Earliest event first; simultaneous events by their pair's agent ids (i, then j; a wall
+// event as the pair (agent, no one)), then by kind, so the order never depends on how the
+// heap or the pair list is arranged.
 bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
   if (a.time != b.time) return a.time > b.time;
-  if (a.pair != b.pair) {
-    const CandidatePair& p = pairs[a.pair];
-    const CandidatePair& q = pairs[b.pair];
-    if (p.i != q.i) return p.i > q.i;
-    return p.j > q.j;
+  const bool wall_a = a.kind == Kind::Wall, wall_b = b.kind == Kind::Wall;
+  if (a.pair != b.pair || wall_a != wall_b) {
+    const std::uint32_t ai = wall_a ? a.pair : pairs[a.pair].i;
+    const std::uint32_t bi = wall_b ? b.pair : pairs[b.pair].i;
+    if (ai != bi) return ai > bi;
+    const std::uint32_t aj = wall_a ? kNoEnd : pairs[a.pair].j;
+    const std::uint32_t bj = wall_b ? kNoEnd : pairs[b.pair].j;
+    return aj > bj;
   }
   return a.kind > b.kind;
 }
@@ -33,22 +41,18 @@ bool GuardedMotion::halts_for(std::uint32_t mover, std::uint32_t other) const {
   return (commands_[mover].halt_on & mask_of(signals_[other])) != 0;
 }
 
-Vec2 GuardedMotion::displacement_travelled(std::uint32_t agent, double time) const {
-  return commands_[agent].velocity * std::min(time, stop_time_[agent]);
-}
-
-Vec2 GuardedMotion::velocity_after(std::uint32_t agent, double time) const {
-  return stop_time_[agent] > time ? commands_[agent].velocity : Vec2{};
+bool GuardedMotion::meets_walls(std::uint32_t agent) const {
+  return limits_.walls && commands_[agent].blocked_by != 0;
 }
 
 void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
   const CandidatePair& pair = pairs_[index];
-  const Vec2 offset = pair.offset + displacement_travelled(pair.j, from_time) -
-                      displacement_travelled(pair.i, from_time);
-  const Vec2 relative = velocity_after(pair.j, from_time) - velocity_after(pair.i, from_time);
+  const Vec2 relative = velocity_after(pair.j) - velocity_after(pair.i);
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests below say the same, at a cost paid by every pair of a waiting aggregate).
   if (relative.x == 0.0 && relative.y == 0.0) return;
+  const Vec2 offset = pair.offset + displacement_travelled(pair.j, from_time) -
+                      displacement_travelled(pair.i, from_time);
   auto push = [&](double time, Kind kind) {
     heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
     std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
@@ -67,6 +71,22 @@ void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
   }
 }
 
+// The first time from `from_time` at which the agent is at a wall moving into it.
+void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
+  const Vec2 at = positions_[agent] + displacement_travelled(agent, from_time);
+  const Vec2 v = velocity_after(agent);
+  double first = std::numeric_limits<double>::infinity();
+  auto axis = [&](double x, double speed, double low, double high) {
+    if (speed < 0.0) first = std::min(first, from_time + std::max(0.0, (low - x) / speed));
+    if (speed > 0.0) first = std::min(first, from_time + std::max(0.0, (high - x) / speed));
+  };
+  axis(at.x, v.x, limits_.bounds.low.x, limits_.bounds.high.x);
+  axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
+  if (first > limits_.dt) return;
+  heap_.push_back({first, agent, Kind::Wall, version_[agent], version_[agent]});
+  std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
+}
+
 // Each pair is linked into the lists of both its agents. The lists come out in reverse
 // pair order, which is harmless: the heap order is total, whatever the push order.
 void GuardedMotion::build_incidence() {
@@ -83,54 +103,151 @@ void GuardedMotion::build_incidence() {
   incidence_built_ = true;
 }
 
-void GuardedMotion::halt(std::uint32_t agent, double time) {
-  if (stop_time_[agent] <= time) return;
-  if (!incidence_built_) build_incidence();
-  if (stop_time_[agent] == limits_.dt) halted_.push_back(agent);
-  stop_time_[agent] = time;
+void GuardedMotion::reschedule(std::uint32_t agent, double time) {
   ++version_[agent];
+  if (meets_walls(agent)) schedule_wall(agent, time);
   if (head_stamp_[agent] != stamp_) return;
   for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
     schedule_pair(end >> 1, time);
   }
 }
 
-// Stop times are dt except where the last step halted someone: only those are reset.
-void GuardedMotion::reset(std::size_t agents, double dt) {
-  if (stop_time_.size() != agents || limits_.dt != dt) {
-    stop_time_.assign(agents, dt);
+void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) {
+  if (!incidence_built_) build_incidence();
+  const Vec2 origin = displacement_travelled(agent, time);
+  if (!bent(agent)) {
+    leg_stamp_[agent] = step_stamp_;
+    slides_[agent] = 0;
+    walls_touched_[agent] = 0;
+  }
+  leg_[agent] = {time, origin, velocity};
+  reschedule(agent, time);
+}
+
+// An agent halted once stands for the rest of the step; a halt at the step's end changes
+// nothing (and keeps the events due then).
+void GuardedMotion::halt(std::uint32_t agent, double time) {
+  if (time >= limits_.dt) return;
+  const Vec2 v = velocity_after(agent);
+  if (v.x == 0.0 && v.y == 0.0) return;  // standing already
+  change_leg(agent, time, Vec2{});
+}
+
+// The walls the agent touches at `time`, as WallContact bits, with their normals appended.
+std::uint8_t GuardedMotion::touched_walls(std::uint32_t agent, double time,
+                                          std::vector<Vec2>& normals) const {
+  if (!meets_walls(agent)) return 0;
+  const Vec2 at = positions_[agent] + displacement_travelled(agent, time);
+  const double slack = kTouchingSlack * limits_.contact_distance;
+  const WallBounds& b = limits_.bounds;
+  std::uint8_t walls = 0;
+  auto touch = [&](bool touching, Vec2 normal, WallContact bit) {
+    if (!touching) return;
+    normals.push_back(normal);
+    walls |= bit;
+  };
+  touch(at.x <= b.low.x + slack, {-1.0, 0.0}, WallX);
+  touch(at.x >= b.high.x - slack, {1.0, 0.0}, WallX);
+  touch(at.y <= b.low.y + slack, {0.0, -1.0}, WallY);
+  touch(at.y >= b.high.y - slack, {0.0, 1.0}, WallY);
+  return walls;
+}
+
+// The unit normals towards the bodies solid to the agent that it touches at `time`, in the
+// order of their ids: ties between equally long slides are broken by that order, so the
+// result does not depend on how the pairs are listed.
+void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals) {
+  contacts_.clear();
+  if (head_stamp_[agent] == stamp_) {
+    const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
+    for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
+      const CandidatePair& pair = pairs_[end >> 1];
+      const std::uint32_t other = (end & 1) ? pair.i : pair.j;
+      if (!blocks(agent, other)) continue;
+      const Vec2 from_i =
+          pair.offset + displacement_travelled(pair.j, time) - displacement_travelled(pair.i, time);
+      const Vec2 towards = (end & 1) ? Vec2{} - from_i : from_i;
+      const double distance = norm(towards);
+      if (distance > touching || distance <= 0.0) continue;
+      contacts_.push_back({other, towards * (1.0 / distance)});
+    }
+  }
+  std::sort(contacts_.begin(), contacts_.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& contact : contacts_) normals.push_back(contact.second);
+}
+
+// The agent touches a body solid to it or a wall and presses into it. Sliding, it goes on
+// with the part of its commanded velocity that everything it touches now lets through; when
+// that is nothing, or what it already does (the contact presses into it, not it into the
+// contact), or it slid too often this step, it halts.
+void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
+  if (time >= limits_.dt) return;
+  if (!incidence_built_) build_incidence();
+  normals_.clear();
+  const std::uint8_t walls = touched_walls(agent, time, normals_);
+  if (limits_.response == ContactResponse::Stop || (bent(agent) && slides_[agent] >= kMaxSlides)) {
+    halt(agent, time);
+  } else {
+    touched_bodies(agent, time, normals_);
+    const Vec2 slide = free_motion(commands_[agent].velocity, normals_);
+    const Vec2 now = velocity_after(agent);
+    if (slide.x == now.x && slide.y == now.y) {
+      halt(agent, time);
+    } else {
+      change_leg(agent, time, slide);
+      if (slide.x != 0.0 || slide.y != 0.0) ++slides_[agent];
+    }
+  }
+  if (bent(agent)) walls_touched_[agent] |= walls;
+}
+
+// Legs are valid only where stamped with this step's stamp: nothing is reset per agent.
+void GuardedMotion::reset(std::size_t agents) {
+  if (leg_.size() != agents) {
+    leg_.assign(agents, Leg{});
+    leg_stamp_.assign(agents, 0u);
+    slides_.assign(agents, 0);
+    walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
     head_.assign(agents, 0u);
     head_stamp_.assign(agents, 0u);
     stamp_ = 0;
-    // Every agent halts at most once a step: room for all, so that a swarm whose halts
-    // keep growing (waiting agents pressing into packed aggregates) never reallocates.
-    halted_.reserve(agents);
-  } else {
-    for (const std::uint32_t agent : halted_) stop_time_[agent] = dt;
+    step_stamp_ = 0;
   }
-  halted_.clear();
-}
-
-std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
-                                     std::span<const MotionCommand> commands,
-                                     std::span<const Signal> signals, const MotionLimits& limits) {
-  reset(commands.size(), limits.dt);
-  pairs_ = pairs;
-  commands_ = commands;
-  signals_ = signals;
-  limits_ = limits;
-  incidence_built_ = false;
+  if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
+    std::fill(leg_stamp_.begin(), leg_stamp_.end(), 0u);
+    step_stamp_ = 0;
+  }
+  ++step_stamp_;
   if (stamp_ == std::numeric_limits<std::uint32_t>::max()) {
     std::fill(head_stamp_.begin(), head_stamp_.end(), 0u);
     stamp_ = 0;
   }
+}
+
+std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
+                                     std::span<const MotionCommand> commands,
+                                     std::span<const Signal> signals, const MotionLimits& limits,
+                                     std::span<const Vec2> positions) {
+  reset(commands.size());
+  pairs_ = pairs;
+  commands_ = commands;
+  signals_ = signals;
+  positions_ = positions;
+  limits_ = limits;
+  incidence_built_ = false;
   heap_.clear();
-  // Each pair schedules at most two events at the start and two more per halt of either
+  // Each pair schedules at most two events at the start and two more per change of either
   // agent; room for twice the pairs up front keeps the heap from growing step by step as
   // aggregates densify.
   if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
   for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
+  if (limits_.walls) {
+    for (std::uint32_t a = 0; a < commands.size(); ++a) {
+      if (meets_walls(a)) schedule_wall(a, 0.0);
+    }
+  }
 
   std::uint64_t encounters = 0;
   const Later later{pairs_.data()};
@@ -138,6 +255,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     std::pop_heap(heap_.begin(), heap_.end(), later);
     const Event event = heap_.back();
     heap_.pop_back();
+    if (event.kind == Kind::Wall) {
+      if (event.version_i == version_[event.pair]) respond_to_contact(event.pair, event.time);
+      continue;
+    }
     const CandidatePair& pair = pairs_[event.pair];
     if (event.version_i != version_[pair.i] || event.version_j != version_[pair.j]) continue;
     if (event.kind == Kind::Perceive) {
@@ -147,10 +268,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       if (halt_i) halt(pair.i, event.time);
       if (halt_j) halt(pair.j, event.time);
     } else {
-      const bool halt_i = blocks(pair.i, pair.j);
-      const bool halt_j = blocks(pair.j, pair.i);
-      if (halt_i) halt(pair.i, event.time);
-      if (halt_j) halt(pair.j, event.time);
+      const bool blocked_i = blocks(pair.i, pair.j);
+      const bool blocked_j = blocks(pair.j, pair.i);
+      if (blocked_i) respond_to_contact(pair.i, event.time);
+      if (blocked_j) respond_to_contact(pair.j, event.time);
     }
   }
   return encounters;

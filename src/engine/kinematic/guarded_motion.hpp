@@ -1,14 +1,19 @@
 #pragma once
 // Resolves one kinematic step exactly. Agents move with constant commanded velocities; the
 // pair events of the step (centres reaching the detection radius s, bodies reaching contact
-// at 2r) are processed in time order. An agent halts at the instant an event its command
-// cares about fires (halt_on, blocked_by); its later events are then recomputed from its
-// new, stationary trajectory. Every first contact within s is counted as an encounter.
-// When no command guards its move, nothing can halt and the encounters are simply counted.
+// at 2r) and, between walls, bodies reaching a wall are processed in time order. An agent
+// halts at the instant an event its command halts on fires (halt_on). At a contact with a
+// body solid to it (blocked_by) or a wall it slides (ContactResponse::Slide): it goes on
+// with the part of its commanded velocity that all the bodies and walls it touches let
+// through (free_motion), at most kMaxSlides times a step, then halts; or it halts there
+// (ContactResponse::Stop). After each change its later events are recomputed from its new
+// trajectory. Every first contact within s is counted as an encounter. When no command
+// guards its move, nothing can halt and the encounters are simply counted.
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "config/world_spec.hpp"
 #include "control_interface/motion_command.hpp"
 #include "core/agent_array.hpp"
 #include "core/vec2.hpp"
@@ -24,21 +29,43 @@ struct CandidatePair {
   Vec2 offset;
 };
 
+// Walls hold body centres within [low, high] on both axes.
+struct WallBounds {
+  Vec2 low;
+  Vec2 high;
+};
+
 struct MotionLimits {
   double detection_radius = 4.0;  // s
   double contact_distance = 2.0;  // 2r
   double dt = 0.1;
+  ContactResponse response = ContactResponse::Slide;
+  // Between walls, bodies solid to something (blocked_by) meet the walls as contacts; the
+  // others (point particles passing over everything) are reflected by the engine.
+  bool walls = false;
+  WallBounds bounds;
 };
+
+// Bits of wall_contacts(): the walls an agent touched during the step.
+enum WallContact : std::uint8_t { WallX = 1, WallY = 2 };
 
 class GuardedMotion {
  public:
+  // A body meets few contacts within one step: it slides at most this often, then halts.
+  static constexpr int kMaxSlides = 4;
+
   // Resolves the step for agents that guard their moves (some command has halt_on or
-  // blocked_by bits) and returns the number of encounters; stop_times() then holds when
-  // each agent stopped (dt when it moved the whole step).
+  // blocked_by bits) and returns the number of encounters; displacement() then gives how
+  // far each agent moved. `positions` (the step's start) are needed only between walls.
   std::uint64_t resolve(std::span<const CandidatePair> pairs,
                         std::span<const MotionCommand> commands, std::span<const Signal> signals,
-                        const MotionLimits& limits);
-  std::span<const double> stop_times() const { return stop_time_; }
+                        const MotionLimits& limits, std::span<const Vec2> positions = {});
+  // The displacement of `agent` over the step resolved last.
+  Vec2 displacement(std::uint32_t agent) const { return displacement_travelled(agent, limits_.dt); }
+  // The walls `agent` touched during the step resolved last (WallContact bits).
+  std::uint8_t wall_contacts(std::uint32_t agent) const {
+    return leg_stamp_[agent] == step_stamp_ ? walls_touched_[agent] : 0;
+  }
 
   // The encounters of a step in which no agent halts: every agent moves the whole step.
   static std::uint64_t count_encounters(std::span<const CandidatePair> pairs,
@@ -46,10 +73,10 @@ class GuardedMotion {
                                         const MotionLimits& limits);
 
  private:
-  enum class Kind : std::uint8_t { Perceive, Contact };
+  enum class Kind : std::uint8_t { Perceive, Contact, Wall };
   struct Event {
     double time;
-    std::uint32_t pair;
+    std::uint32_t pair;  // for Wall events, the agent
     Kind kind;
     std::uint32_t version_i;
     std::uint32_t version_j;
@@ -58,33 +85,66 @@ class GuardedMotion {
     const CandidatePair* pairs;
     bool operator()(const Event& a, const Event& b) const;
   };
+  // An agent's motion after its last change within the step: from `start` on it is at
+  // `origin` (displacement from its step start) plus velocity * (t - start).
+  struct Leg {
+    double start;
+    Vec2 origin;
+    Vec2 velocity;
+  };
 
-  void reset(std::size_t agents, double dt);
+  void reset(std::size_t agents);
   void schedule_pair(std::uint32_t pair, double from_time);
+  void schedule_wall(std::uint32_t agent, double from_time);
+  void reschedule(std::uint32_t agent, double time);
+  void change_leg(std::uint32_t agent, double time, Vec2 velocity);
   void halt(std::uint32_t agent, double time);
+  void respond_to_contact(std::uint32_t agent, double time);
+  std::uint8_t touched_walls(std::uint32_t agent, double time, std::vector<Vec2>& normals) const;
+  void touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals);
   void build_incidence();
+  bool bent(std::uint32_t agent) const { return leg_stamp_[agent] == step_stamp_; }
   bool blocks(std::uint32_t mover, std::uint32_t other) const;
   bool halts_for(std::uint32_t mover, std::uint32_t other) const;
-  Vec2 displacement_travelled(std::uint32_t agent, double time) const;
-  Vec2 velocity_after(std::uint32_t agent, double time) const;
+  bool meets_walls(std::uint32_t agent) const;
+  // Written so that an agent that moved straight or halted once gets exactly the bits of
+  // velocity * min(time, stop time): ContactResponse::Stop reproduces the halting engine.
+  Vec2 displacement_travelled(std::uint32_t agent, double time) const {
+    if (!bent(agent)) return commands_[agent].velocity * time;
+    const Leg& leg = leg_[agent];
+    if (leg.velocity.x == 0.0 && leg.velocity.y == 0.0) return leg.origin;
+    return leg.origin + leg.velocity * (time - leg.start);
+  }
+  // The velocity of the agent's current leg (events are processed in time order).
+  Vec2 velocity_after(std::uint32_t agent) const {
+    return bent(agent) ? leg_[agent].velocity : commands_[agent].velocity;
+  }
 
   std::span<const CandidatePair> pairs_;
   std::span<const MotionCommand> commands_;
   std::span<const Signal> signals_;
+  std::span<const Vec2> positions_;
   MotionLimits limits_;
-  AgentArray<double> stop_time_;
-  std::vector<std::uint32_t> halted_;  // agents whose stop time is below dt
   std::vector<Event> heap_;
-  // An agent halts at most once per step (later events are never earlier), so versions
-  // only need to differ within a step: they count up across steps and are never reset.
+  // Legs of the agents whose motion changed this step (leg_stamp_ == step_stamp_); the
+  // others move with their commanded velocity all step.
+  std::uint32_t step_stamp_ = 0;
+  AgentArray<Leg> leg_;
+  AgentArray<std::uint32_t> leg_stamp_;
+  AgentArray<std::uint8_t> slides_;
+  AgentArray<std::uint8_t> walls_touched_;
+  // Versions tell stale events from current ones: they count up across steps and are never
+  // reset.
   AgentArray<std::uint32_t> version_;
-  // Pairs of each agent, built on the first halt of a step: linked lists through the pair
+  // Pairs of each agent, built on the first change of a step: linked lists through the pair
   // ends (2 * pair + end), whose heads are valid only where head_stamp_ is this step's.
   bool incidence_built_ = false;
   std::uint32_t stamp_ = 0;
   AgentArray<std::uint32_t> head_;
   AgentArray<std::uint32_t> head_stamp_;
   AgentArray<std::uint32_t> next_end_;
+  std::vector<std::pair<std::uint32_t, Vec2>> contacts_;  // of the agent sliding, by id
+  std::vector<Vec2> normals_;
 };
 
 }  // namespace swarmagg

@@ -48,8 +48,14 @@ class KinematicEngine final : public Engine {
   KinematicEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
       : arena_(spec.arena.geometry()),
         // Halting a hair inside s guarantees the halted pair perceives each other afterwards.
-        limits_{spec.robots.detection_radius * (1.0 - 1e-9), 2.0 * spec.robots.radius,
-                spec.engine.dt},
+        limits_{spec.robots.detection_radius * (1.0 - 1e-9),
+                2.0 * spec.robots.radius,
+                spec.engine.dt,
+                spec.engine.contact,
+                !arena_.torus(),
+                WallBounds{
+                    {spec.robots.radius, spec.robots.radius},
+                    {arena_.width() - spec.robots.radius, arena_.height() - spec.robots.radius}}},
         body_radius_(spec.robots.radius),
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
@@ -67,8 +73,9 @@ class KinematicEngine final : public Engine {
     if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false);
     StepReport report;
     if (summary.guarded) {
-      report.encounters = motion_.resolve(search_.candidates(), commands, signals, limits_);
-      move_and_rebuild(commands, motion_.stop_times().data(), summary.fastest);
+      report.encounters =
+          motion_.resolve(search_.candidates(), commands, signals, limits_, positions_);
+      move_and_rebuild(commands, &motion_, summary.fastest);
     } else {
       report.encounters = GuardedMotion::count_encounters(search_.candidates(), commands, limits_);
       move_and_rebuild(commands, nullptr, summary.fastest);
@@ -86,9 +93,10 @@ class KinematicEngine final : public Engine {
   void set_threads(int threads) override { threads_.resize(std::max(1, threads)); }
 
  private:
-  // Moves every agent for its stop time (dt for all when `stop_time` is null), then finds
-  // the pairs for the next step and what each agent perceives.
-  void move_and_rebuild(std::span<const MotionCommand> commands, const double* stop_time,
+  // Moves every agent as `motion` resolved it (with its commanded velocity for all of dt
+  // when `motion` is null), then finds the pairs for the next step and what each agent
+  // perceives.
+  void move_and_rebuild(std::span<const MotionCommand> commands, const GuardedMotion* motion,
                         double fastest) {
     const std::size_t n = positions_.size();
     const int tasks = static_cast<int>(std::clamp<std::size_t>(
@@ -96,11 +104,18 @@ class KinematicEngine final : public Engine {
     auto move = [&](int task) {
       const std::size_t first = StepThreads::slice_begin(n, task, tasks);
       const std::size_t last = StepThreads::slice_begin(n, task + 1, tasks);
-      if (stop_time == nullptr) {
+      if (motion == nullptr) {
         const double dt = limits_.dt;
-        move_range(commands, first, last, [dt](std::size_t) { return dt; });
+        move_range(
+            first, last, [commands, dt](std::size_t i) { return commands[i].velocity * dt; },
+            [](std::size_t) { return std::uint8_t{0}; });
       } else {
-        move_range(commands, first, last, [stop_time](std::size_t i) { return stop_time[i]; });
+        move_range(
+            first, last,
+            [motion](std::size_t i) { return motion->displacement(static_cast<std::uint32_t>(i)); },
+            [motion](std::size_t i) {
+              return motion->wall_contacts(static_cast<std::uint32_t>(i));
+            });
       }
     };
     threads_.run(tasks, move);
@@ -108,24 +123,27 @@ class KinematicEngine final : public Engine {
   }
 
   // Plain loops over raw arrays (nothing the stores could alias), wrapping only the few
-  // agents that crossed an edge.
-  template <typename StopTime>
-  void move_range(std::span<const MotionCommand> commands, std::size_t first, std::size_t last,
-                  StopTime stop_time) {
+  // agents that crossed an edge. Between walls, bodies the guarded motion stopped or slid at
+  // a wall report it as a reflection; point particles that crossed a wall are mirrored.
+  template <typename Displacement, typename WallContacts>
+  void move_range(std::size_t first, std::size_t last, Displacement displacement,
+                  WallContacts wall_contacts) {
     Vec2* position = positions_.data();
-    const MotionCommand* command = commands.data();
     if (arena_.torus()) {
       const double width = arena_.width(), height = arena_.height();
       for (std::size_t i = first; i < last; ++i) {
-        const Vec2 p = position[i] + command[i].velocity * stop_time(i);
+        const Vec2 p = position[i] + displacement(i);
         const bool inside = (p.x >= 0.0) & (p.x < width) & (p.y >= 0.0) & (p.y < height);
         position[i] = inside ? p : arena_.wrap(p);
       }
       return;
     }
     for (std::size_t i = first; i < last; ++i) {
-      position[i] += command[i].velocity * stop_time(i);
-      reflections_[i] = reflect_off_walls(position[i]);
+      position[i] += displacement(i);
+      const std::uint8_t walls = wall_contacts(i);
+      reflections_[i] = static_cast<std::uint8_t>(reflect_off_walls(position[i]) |
+                                                  ((walls & WallX) ? ReflectedX : 0) |
+                                                  ((walls & WallY) ? ReflectedY : 0));
     }
   }
 

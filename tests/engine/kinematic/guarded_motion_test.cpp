@@ -11,7 +11,8 @@ namespace {
 
 constexpr Signal kGo = 0;
 constexpr Signal kWait = 1;
-constexpr MotionLimits kLimits{4.0, 2.0, 1.0};  // s = 4, 2r = 2, dt = 1
+// s = 4, 2r = 2, dt = 1, sliding at contacts, no walls.
+constexpr MotionLimits kLimits{4.0, 2.0, 1.0, ContactResponse::Slide, false, {}};
 
 MotionCommand moving(Vec2 velocity, SignalMask halt_on = 0, SignalMask blocked_by = 0) {
   return MotionCommand{velocity, halt_on, blocked_by, 0};
@@ -24,8 +25,8 @@ TEST(GuardedMotion, HaltsAtTheExactInstantTheDetectionRadiusIsReached) {
   const std::vector<Signal> signals{kGo, kWait};
   GuardedMotion motion;
   EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), 1u);
-  EXPECT_DOUBLE_EQ(motion.stop_times()[0], 0.6);
-  EXPECT_DOUBLE_EQ(motion.stop_times()[1], 1.0);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 6.0);  // 0.6 tu at 10 u/tu
+  EXPECT_EQ(motion.displacement(1), (Vec2{}));
 }
 
 TEST(GuardedMotion, ABlockedBodyStopsAtContactAndUnguardedOnesPass) {
@@ -35,11 +36,11 @@ TEST(GuardedMotion, ABlockedBodyStopsAtContactAndUnguardedOnesPass) {
   // Blocked by waiting bodies only: contact (distance 2) after 3 of the 5 units.
   const std::vector<MotionCommand> blocked{moving({5.0, 0.0}, 0, mask_of(kWait)), moving({})};
   EXPECT_EQ(motion.resolve(pairs, blocked, signals, kLimits), 1u);
-  EXPECT_DOUBLE_EQ(motion.stop_times()[0], 0.6);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 3.0);
   // Unguarded: moves the whole step, the encounter is still counted.
   const std::vector<MotionCommand> free{moving({5.0, 0.0}), moving({})};
   EXPECT_EQ(motion.resolve(pairs, free, signals, kLimits), 1u);
-  EXPECT_DOUBLE_EQ(motion.stop_times()[0], 1.0);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 5.0);
   EXPECT_EQ(GuardedMotion::count_encounters(pairs, free, kLimits), 1u);
 }
 
@@ -51,7 +52,7 @@ TEST(GuardedMotion, AnAgentHaltedEarlyMissesWhatLayBeyondItsStop) {
   const std::vector<Signal> signals{kGo, kWait, kWait};
   GuardedMotion motion;
   EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), 1u);
-  EXPECT_DOUBLE_EQ(motion.stop_times()[0], 0.2);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 2.0);
 }
 
 // Simultaneous events break ties on the pair's ids, so the result must not depend on the
@@ -84,15 +85,21 @@ TEST(GuardedMotion, ResultsDoNotDependOnTheOrderOfThePairs) {
   }
   GuardedMotion reference;
   const std::uint64_t encounters = reference.resolve(pairs, commands, signals, kLimits);
-  const std::vector<double> stops(reference.stop_times().begin(), reference.stop_times().end());
+  auto displacements = [&](const GuardedMotion& m) {
+    std::vector<Vec2> d;
+    for (std::uint32_t a = 0; a < positions.size(); ++a) d.push_back(m.displacement(a));
+    return d;
+  };
+  const std::vector<Vec2> moved = displacements(reference);
   EXPECT_GT(encounters, 0u);
-  EXPECT_TRUE(std::any_of(stops.begin(), stops.end(), [](double t) { return t < 1.0; }));
+  int changed = 0;  // halted or slid
+  for (std::size_t a = 0; a < moved.size(); ++a) changed += moved[a] != commands[a].velocity;
+  EXPECT_GT(changed, 0);
   GuardedMotion motion;  // reused, as the engine does
   for (int shuffle = 0; shuffle < 5; ++shuffle) {
     std::shuffle(pairs.begin(), pairs.end(), gen);
     EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), encounters);
-    const std::vector<double> again(motion.stop_times().begin(), motion.stop_times().end());
-    EXPECT_EQ(again, stops);
+    EXPECT_EQ(displacements(motion), moved);
   }
 }
 

@@ -131,20 +131,50 @@ TEST(KinematicEngine, TwoBlockedBodiesMovingTogetherStopAtContact) {
   EXPECT_NEAR(engine->positions()[1].x, 51.0, 1e-9);
 }
 
-// Bodies already touching and pressed towards each other do not move at all (they halt at
-// the start of the step), while one pushed sideways along the other slides.
-TEST(KinematicEngine, TouchingBlockedBodiesPressedTogetherHaltAtOnce) {
-  WorldSpec spec = arena_world(100.0, 100.0);
+// Two pairs of touching waiting bodies: 0 and 1 pressed into each other (0 at a slant), 2
+// pushed sideways along 3.
+struct PressedPairs {
   const std::vector<Vec2> start{{49.0, 50.0}, {51.0, 50.0}, {60.0, 50.0}, {62.0, 50.0}};
-  auto engine = make_kinematic_engine(spec, start);
   const std::vector<Signal> signals{kWait, kWait, kWait, kWait};
-  const SignalMask solid = mask_of(kWait);
+  static constexpr SignalMask kSolid = mask_of(kWait);
   const std::vector<MotionCommand> pressed{
-      moving({0.5, 0.1}, 0, solid), moving({-0.5, 0.0}, 0, solid),  // into each other
-      moving({0.0, 1.0}, 0, solid), moving({}, 0, solid)};          // along the other
-  for (int k = 0; k < 10; ++k) engine->step(pressed, signals);
-  EXPECT_EQ(engine->positions()[0], start[0]);
-  EXPECT_EQ(engine->positions()[1], start[1]);
+      moving({0.5, 0.1}, 0, kSolid), moving({-0.5, 0.0}, 0, kSolid),  // into each other
+      moving({0.0, 1.0}, 0, kSolid), moving({}, 0, kSolid)};          // along the other
+};
+
+// Halting at contacts, bodies already touching and pressed towards each other do not move at
+// all (they halt at the start of the step), while one pushed sideways along the other slides.
+TEST(KinematicEngine, TouchingBlockedBodiesPressedTogetherHaltAtOnceWhenContactsStop) {
+  const PressedPairs scene;
+  WorldSpec spec = arena_world(100.0, 100.0);
+  spec.engine.contact = ContactResponse::Stop;
+  auto engine = make_kinematic_engine(spec, scene.start);
+  for (int k = 0; k < 10; ++k) engine->step(scene.pressed, scene.signals);
+  EXPECT_EQ(engine->positions()[0], scene.start[0]);
+  EXPECT_EQ(engine->positions()[1], scene.start[1]);
+  EXPECT_NEAR(engine->positions()[2].y, 51.0, 1e-9);
+}
+
+// Sliding (the default), a body pressed into another keeps the part of its velocity along
+// the contact; pressed head on it has none and halts, like both bodies under `stop`.
+TEST(KinematicEngine, TouchingBlockedBodiesSlideAlongEachOtherOrHaltHeadOn) {
+  const PressedPairs scene;
+  auto engine = make_kinematic_engine(arena_world(100.0, 100.0), scene.start);
+  const SignalMask solid = PressedPairs::kSolid;
+  const std::vector<MotionCommand> head_on{moving({0.5, 0.0}, 0, solid),
+                                           moving({-0.5, 0.0}, 0, solid), moving({}, 0, solid),
+                                           moving({}, 0, solid)};
+  engine->step(head_on, scene.signals);
+  EXPECT_NEAR(engine->positions()[0].x, scene.start[0].x, 1e-9);
+  EXPECT_NEAR(engine->positions()[1].x, scene.start[1].x, 1e-9);
+  for (int k = 0; k < 10; ++k) engine->step(scene.pressed, scene.signals);
+  const Vec2 p0 = engine->positions()[0], p1 = engine->positions()[1];
+  // 0 slides up round 1; once off its line, 1 slides down round 0. They keep touching and
+  // never sink into each other.
+  EXPECT_GT(p0.y, scene.start[0].y + 0.05);
+  EXPECT_LT(p1.y, scene.start[1].y);
+  EXPECT_GE(norm(p1 - p0), 2.0 - 1e-9);
+  EXPECT_LT(norm(p1 - p0), 2.0 + 1e-3);  // straight slides drift off the circle to second order
   EXPECT_NEAR(engine->positions()[2].y, 51.0, 1e-9);
 }
 
@@ -172,6 +202,32 @@ TEST(KinematicEngine, WallsReflectBodiesAndReportWhichAxis) {
   engine->step(commands, std::vector<Signal>{kGo});
   EXPECT_NEAR(engine->positions()[0].x, 48.5, 1e-12);  // 49.5 reflected off 49 (= 50 - r)
   EXPECT_EQ(engine->reflections()[0], ReflectedX);
+}
+
+// A body solid to others meets a wall inside the guarded move, where a mirrored excess could
+// sink it into a body next to the wall: it slides along the wall (or halts, under stop) and
+// reports the axis so that its controller turns.
+TEST(KinematicEngine, SolidBodiesMeetWallsInsideTheGuardedMove) {
+  for (const ContactResponse response : {ContactResponse::Slide, ContactResponse::Stop}) {
+    WorldSpec spec = arena_world(50.0, 50.0, Topology::Walls);
+    spec.engine.contact = response;
+    // Agent 0 reaches the wall at x = 49 (= 50 - r) at t = 0.05, y = 24.5. Mirrored after
+    // the move, it would end at (48.9, 24), 1.96 from agent 1, which is solid to it.
+    auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{48.9, 25.0}, {47.0, 23.5}});
+    const std::vector<MotionCommand> commands{moving({2.0, -10.0}, 0, mask_of(kWait)), moving({})};
+    engine->step(commands, std::vector<Signal>{kGo, kWait});
+    const Vec2 p = engine->positions()[0];
+    EXPECT_LE(p.x, 49.0 + 1e-12);
+    EXPECT_GE(norm(p - engine->positions()[1]), 2.0 - 1e-9);
+    EXPECT_EQ(engine->reflections()[0], ReflectedX);
+    if (response == ContactResponse::Stop) {
+      EXPECT_NEAR(p.x, 49.0, 1e-12);  // halted where it reached the wall
+      EXPECT_NEAR(p.y, 24.5, 1e-12);
+    } else {
+      EXPECT_NEAR(p.x, 49.0, 1e-9);  // slid down the wall for the remaining 0.05 tu
+      EXPECT_NEAR(p.y, 24.0, 1e-9);
+    }
+  }
 }
 
 }  // namespace
