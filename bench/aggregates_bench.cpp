@@ -12,8 +12,7 @@ namespace swarmagg::bench {
 namespace {
 
 void BM_AggregateTrackerUpdate(benchmark::State& state) {
-  const SteppedWorld world(static_cast<int>(state.range(0)), ControllerType::Bayindir,
-                           kWarmUpSteps);
+  const SteppedWorld world(static_cast<int>(state.range(0)), "bayindir", kWarmUpSteps);
   const Replicate& r = *world.replicate;
   AggregateTracker tracker;
   for (auto _ : state) {

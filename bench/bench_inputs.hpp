@@ -25,7 +25,7 @@ struct SteppedWorld {
   WorldSpec spec;
   std::unique_ptr<Replicate> replicate;
 
-  SteppedWorld(int n, ControllerType type, int steps)
+  SteppedWorld(int n, const std::string& type, int steps)
       : spec(paper_density_world(n, type)), replicate(std::make_unique<Replicate>(spec, 0)) {
     replicate->set_checking(false);
     for (int k = 0; k < steps; ++k) replicate->step();

@@ -12,12 +12,12 @@
 namespace swarmagg::bench {
 namespace {
 
-void decide_repeatedly(benchmark::State& state, ControllerType type, int warm_up) {
+void decide_repeatedly(benchmark::State& state, const std::string& type, int warm_up) {
   const SteppedWorld world(static_cast<int>(state.range(0)), type, warm_up);
   const Replicate& r = *world.replicate;
   const auto controller = make_controller(world.spec);
   const ControllerInput input{r.steps_done(), r.engine().neighbours(), r.engine().reflections(),
-                              r.aggregates()};
+                              r.aggregates().facts()};
   const CounterRng rng(r.seed());
   std::vector<MotionCommand> commands(r.swarm().size());
   SwarmState swarm;
@@ -33,12 +33,12 @@ void decide_repeatedly(benchmark::State& state, ControllerType type, int warm_up
 }
 
 void BM_BayindirDecide(benchmark::State& state) {
-  decide_repeatedly(state, ControllerType::Bayindir, kWarmUpSteps);
+  decide_repeatedly(state, "bayindir", kWarmUpSteps);
 }
 BENCHMARK(BM_BayindirDecide)->Apply(agent_counts);
 
 void BM_GhostDecide(benchmark::State& state) {
-  decide_repeatedly(state, ControllerType::Collision, 0);
+  decide_repeatedly(state, "collision", 0);
 }
 BENCHMARK(BM_GhostDecide)->Apply(agent_counts);
 

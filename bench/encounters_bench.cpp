@@ -25,7 +25,7 @@ struct StepInput {
   std::vector<Signal> signals;
   MotionLimits limits;
 
-  StepInput(int n, ControllerType type, int steps) : world(n, type, steps) {
+  StepInput(int n, const std::string& type, int steps) : world(n, type, steps) {
     const WorldSpec& spec = world.spec;
     const Replicate& r = *world.replicate;
     StepThreads threads;
@@ -38,9 +38,10 @@ struct StepInput {
     commands.resize(swarm.size());
     EventCounts events;
     const ControllerInput input{r.steps_done(), r.engine().neighbours(), r.engine().reflections(),
-                                r.aggregates()};
+                                r.aggregates().facts()};
     make_controller(spec)->decide(input, swarm, CounterRng(r.seed()), commands, events);
-    for (const AgentState s : swarm.state) signals.push_back(static_cast<Signal>(s));
+    signals.resize(swarm.size());
+    write_signals(swarm.state, signals);
     limits = {spec.robots.detection_radius * (1.0 - 1e-9),
               2.0 * spec.robots.radius,
               spec.engine.dt,
@@ -51,7 +52,7 @@ struct StepInput {
 };
 
 void BM_FirstContactTime(benchmark::State& state) {
-  const StepInput input(10000, ControllerType::Collision, 0);
+  const StepInput input(10000, "collision", 0);
   const auto pairs = input.search.candidates();
   std::size_t met = 0;
   for (auto _ : state) {
@@ -69,7 +70,7 @@ void BM_FirstContactTime(benchmark::State& state) {
 BENCHMARK(BM_FirstContactTime)->Unit(benchmark::kMicrosecond);
 
 void BM_GhostEncounters(benchmark::State& state) {
-  const StepInput input(static_cast<int>(state.range(0)), ControllerType::Collision, 0);
+  const StepInput input(static_cast<int>(state.range(0)), "collision", 0);
   std::uint64_t encounters = 0;
   for (auto _ : state) {
     encounters =
@@ -83,7 +84,7 @@ void BM_GhostEncounters(benchmark::State& state) {
 BENCHMARK(BM_GhostEncounters)->Apply(agent_counts);
 
 void BM_BayindirGuardedStep(benchmark::State& state) {
-  const StepInput input(static_cast<int>(state.range(0)), ControllerType::Bayindir, kWarmUpSteps);
+  const StepInput input(static_cast<int>(state.range(0)), "bayindir", kWarmUpSteps);
   GuardedMotion motion;
   std::uint64_t encounters = 0;
   for (auto _ : state) {

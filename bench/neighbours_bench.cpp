@@ -24,8 +24,7 @@ struct GhostPositions {
   ArenaGeometry arena;
   std::vector<Vec2> now, next;
 
-  explicit GhostPositions(int n)
-      : world(n, ControllerType::Collision, 0), arena(world.spec.arena.geometry()) {
+  explicit GhostPositions(int n) : world(n, "collision", 0), arena(world.spec.arena.geometry()) {
     const auto p = world.replicate->engine().positions();
     now.assign(p.begin(), p.end());
     next = moved_one_step(world);

@@ -5,17 +5,6 @@
 #include <cmath>
 
 namespace swarmagg {
-namespace {
-
-// A leaver counts as enclosed when the vectors to the agents it perceives (s = 2 spacing)
-// sum to less than this fraction of their lengths. In hexagonal packs at spacing 2r the
-// fraction is 0.50 on a straight rim and 0.66 to 0.72 on the rim of a 19-pack, against 0 at
-// the centre, 0.23 one row inside a straight rim and 0.37 one ring inside a 19-pack's rim.
-// Whether an agent counts as enclosed changes only its heading: the bodies around it decide
-// whether it gets out.
-constexpr double kEnclosedFraction = 0.4;
-
-}  // namespace
 
 bool AggregationController::searching(std::uint32_t agent) const {
   return previous_[agent] == AgentState::Go || previous_[agent] == AgentState::Approach;
@@ -77,7 +66,7 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   if (!rules_.leave) return;
   const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
   const LeaveRule& rule = rules_.leave_rule;
-  const int size = input.aggregates.size_of_agent()[agent];
+  const int size = input.aggregates.size_of_agent[agent];
   const bool counts_neighbours =
       rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
   const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
@@ -92,24 +81,6 @@ void AggregationController::update_waiting(std::uint32_t agent, const Controller
   }
 }
 
-// Members of one aggregate leaving in the same step are counted one after another: an
-// aggregate of two that both leave dissipates once; of five losing two, shrinks twice.
-void AggregationController::count_leave(std::uint32_t agent, const ControllerInput& input,
-                                        EventCounts& events) {
-  const std::int32_t aggregate = input.aggregates.aggregate_of()[agent];
-  if (aggregate < 0) return;
-  std::int32_t& left = leavers_left_[aggregate];
-  if (left >= 3) ++events.shrinks;
-  if (left == 2) ++events.dissipations;
-  --left;
-}
-
-void AggregationController::count_growth(const ControllerInput& input, int joined_size) {
-  if (input.growths_by_size.empty()) return;
-  const auto last = static_cast<int>(input.growths_by_size.size()) - 1;
-  ++input.growths_by_size[static_cast<std::size_t>(std::clamp(joined_size, 0, last))];
-}
-
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
   if (!rules_.join) return;
@@ -120,7 +91,7 @@ void AggregationController::join_waiting(const ControllerInput& input, SwarmStat
       swarm.state[i] = AgentState::Wait;
       settled_[i] = 1;
       ++events.growths;
-      count_growth(input, input.aggregates.size_of_agent()[nb.id]);
+      count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
       break;
     }
   }
@@ -156,7 +127,7 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
       settled_[agent] = 1;
       swarm.state[agent] = AgentState::Wait;
       ++events.growths;
-      count_growth(input, 2);
+      count_growth_by_size(input.growths_by_size, 2);
     }
   }
 }
@@ -188,47 +159,32 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
   }
 }
 
-// Away from the agents it perceives. Deep in a packed aggregate (compaction) the vectors to
-// them cancel and their sum points nowhere in particular: the agent is enclosed
-// (kEnclosedFraction): no direction is returned, and the agent keeps its heading, which at
-// the start of the episode is drawn uniformly at random (SPEC 3). Nothing here asks where the agent
-// stands: the bodies around it stop it or let it through. Without compaction only an exactly zero
-// sum counts.
+// Away from the agents it perceives. Deep in a packed aggregate (compaction) the agent is
+// enclosed: no direction is returned, and the agent keeps its heading, which at the start of
+// the episode is drawn uniformly at random (SPEC 3). Nothing here asks where the agent
+// stands: the bodies around it stop it or let it through.
 std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
                                                             const ControllerInput& input) const {
-  Vec2 towards;
-  double lengths = 0.0;
-  for (const Neighbour& nb : input.neighbours.of(agent)) {
-    if (nb.distance > rules_.detection_radius) break;
-    towards += nb.offset;
-    lengths += nb.distance;
-  }
-  const double length = norm(towards);
-  const double enclosed = rules_.compaction.enabled ? kEnclosedFraction * lengths : 0.0;
-  if (length > 1e-12 && length > enclosed) return towards * (-1.0 / length);
-  return std::nullopt;
+  return heading_away(input.neighbours.of(agent), rules_.detection_radius,
+                      enclosed_fraction(rules_.compaction));
 }
 
 // SPEC 3's spring force from the waiting members of the agent's aggregate it perceives
-// (under join: false its partner only), turned into a velocity of at most v; exactly zero
-// when the net force is below the tolerance.
+// (under join: false its partner only).
 Vec2 AggregationController::compaction_velocity(std::uint32_t agent, const ControllerInput& input,
                                                 const SwarmState& swarm) const {
-  const CompactionRule& c = rules_.compaction;
-  const std::int32_t* aggregate = input.aggregates.aggregate_of().data();
+  const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
   const std::int32_t own = aggregate[agent];
   const std::int32_t partner = swarm.partner[agent];
-  Vec2 force;
-  for (const Neighbour& nb : input.neighbours.of(agent)) {
-    if (nb.distance > rules_.detection_radius) break;
-    const bool member = rules_.join ? own >= 0 && aggregate[nb.id] == own
-                                    : static_cast<std::int32_t>(nb.id) == partner;
-    if (!member || previous_[nb.id] != AgentState::Wait || nb.distance <= 0.0) continue;
-    force += nb.offset * ((nb.distance - c.spacing) / nb.distance);
-  }
-  const double magnitude = norm(force);
-  if (magnitude < c.tolerance || magnitude <= 0.0) return {};
-  return force * (std::min(rules_.speed, c.gain * magnitude) / magnitude);
+  const AgentState* previous = previous_.data();
+  const bool join = rules_.join;
+  return swarmagg::compaction_velocity(rules_.compaction, input.neighbours.of(agent),
+                                       rules_.detection_radius, rules_.speed, [=](AgentId id) {
+                                         const bool member =
+                                             join ? own >= 0 && aggregate[id] == own
+                                                  : static_cast<std::int32_t>(id) == partner;
+                                         return member && previous[id] == AgentState::Wait;
+                                       });
 }
 
 // Overwrites the standing command of each agent that waited and goes on waiting.
@@ -331,7 +287,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   // assign() reallocates to the exact size whenever it grows, which is every step while
   // aggregates form; room for the most there can be (two members each) is reserved once.
   if (leavers_left_.capacity() < n / 2) leavers_left_.reserve(n / 2);
-  leavers_left_.assign(input.aggregates.sizes().begin(), input.aggregates.sizes().end());
+  leavers_left_.assign(input.aggregates.sizes.begin(), input.aggregates.sizes.end());
   turn_at_walls(input.reflections, swarm);
   list_by_state(n);
   // Leaving and waiting agents decide from the previous states only, so each group can be
@@ -339,7 +295,8 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
   for (const std::uint32_t i : waiters_) {
     update_waiting(i, input, swarm, rng);
-    if (swarm.state[i] == AgentState::Leave) count_leave(i, input, events);
+    if (swarm.state[i] == AgentState::Leave)
+      count_leave(input.aggregates.aggregate_of[i], leavers_left_, events);
   }
   join_waiting(input, swarm, events);
   list_unsettled();

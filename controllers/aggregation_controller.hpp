@@ -49,8 +49,6 @@ class AggregationController final : public Controller {
                       const CounterRng& rng);
   void update_waiting(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
                       const CounterRng& rng);
-  void count_leave(std::uint32_t agent, const ControllerInput& input, EventCounts& events);
-  static void count_growth(const ControllerInput& input, int joined_size);
   void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);

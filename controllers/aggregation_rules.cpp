@@ -14,9 +14,7 @@ AggregationRules common_rules(const WorldSpec& spec) {
   rules.speed = spec.robots.speed;
   rules.dt = spec.engine.dt;
   rules.detection_radius = spec.robots.detection_radius;
-  const CompactionSpec& compaction = spec.controller.compaction;
-  rules.compaction = {compaction.enabled, spec.compaction_spacing(), compaction.gain,
-                      compaction.tolerance};
+  rules.compaction = compaction_rule(spec);
   return rules;
 }
 
@@ -25,6 +23,23 @@ AggregationRules common_rules(const WorldSpec& spec) {
 double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived) {
   const int size = rule.size_source == LeaveSize::Neighbours ? perceived + 1 : aggregate_size;
   return leave_probability(rule.law, rule.base, size);
+}
+
+ControllerRules aggregation_controller_rules(const AggregationRules& rules) {
+  ControllerRules r;
+  r.allowed_states = state_bit(AgentState::Go) | state_bit(AgentState::Wait);
+  if (rules.approach_radius) r.allowed_states |= state_bit(AgentState::Approach);
+  if (rules.leave) r.allowed_states |= state_bit(AgentState::Leave);
+  r.joins = rules.join;
+  r.leaves = rules.leave;
+  r.leaving_happens = rules.leave && rules.leave_rule.base > 0.0;
+  r.partners_only = !rules.join;
+  r.compacts = rules.compaction.enabled;
+  return r;
+}
+
+double member_leave_probability(const AggregationRules& rules, int size) {
+  return leave_probability(rules.leave_rule, size, size - 1);
 }
 
 AggregationRules bayindir_rules(const WorldSpec& spec) {

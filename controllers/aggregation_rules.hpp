@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "config/world_spec.hpp"
+#include "control_interface/controller_rules.hpp"
+#include "controllers/compaction.hpp"
 
 namespace swarmagg {
 
@@ -11,15 +13,6 @@ struct LeaveRule {
   LeaveLaw law = LeaveLaw::Constant;
   double base = 0.0;  // p (Bayindir) or p0 (Soysal): probability per step at size 1
   LeaveSize size_source = LeaveSize::Aggregate;
-};
-
-// SPEC 3 "Compaction": a waiting agent moves under F = sum_j (d_ij - spacing) u_ij from the
-// waiting members of its aggregate it perceives, at min(v, gain |F|), standing below tolerance.
-struct CompactionRule {
-  bool enabled = false;
-  double spacing = 2.0;     // u
-  double gain = 1.0;        // per tu
-  double tolerance = 0.05;  // u
 };
 
 struct AggregationRules {
@@ -39,6 +32,15 @@ struct AggregationRules {
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives
 // `perceived` agents within s (which of the two is i is the rule's size_source).
 double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived);
+
+// What a controller built on these rules allows (its registration adds the model and outputs):
+// GO and WAIT, APPROACH with an approach radius, LEAVE when agents may leave; joining,
+// leaving, partners-only linking without joining, and compaction as the rules say.
+ControllerRules aggregation_controller_rules(const AggregationRules& rules);
+
+// A member's leave probability per step in an aggregate of `size` that perceives the other
+// members (ControllerRegistration::leave_probability_at_size).
+double member_leave_probability(const AggregationRules& rules, int size);
 
 AggregationRules bayindir_rules(const WorldSpec& spec);
 AggregationRules soysal_rules(const WorldSpec& spec);

@@ -5,28 +5,17 @@
 // an engine.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "config/world_spec.hpp"
+#include "control_interface/controller_input.hpp"
+#include "control_interface/event_counts.hpp"
+#include "control_interface/motion_command.hpp"
 #include "core/agent_state.hpp"
 #include "core/rng.hpp"
-#include "engine/motion_command.hpp"
-#include "engine/neighbour_lists.hpp"
-#include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
 
 namespace swarmagg {
-
-struct ControllerInput {
-  std::int64_t step = 0;
-  const NeighbourLists& neighbours;
-  std::span<const std::uint8_t> reflections;  // engine.hpp's Reflection bits
-  const AggregateTracker& aggregates;         // of the states the decision starts from
-  // Cumulative growths by the size of the aggregate joined ([m]; a searcher that joins a
-  // pair formed in the same decision counts at m = 2), counted when not empty. Observers
-  // (measured rates) read them; no decision depends on them.
-  std::span<std::uint64_t> growths_by_size = {};
-};
 
 class Controller {
  public:
@@ -37,6 +26,7 @@ class Controller {
                       std::span<MotionCommand> commands, EventCounts& events) = 0;
 };
 
+// The controller `spec.controller.type` registered (controllers/controller_registry.hpp).
 std::unique_ptr<Controller> make_controller(const WorldSpec& spec);
 
 // A uniformly random unit heading for `agent` at `step`.
@@ -45,6 +35,13 @@ inline Vec2 random_heading(const CounterRng& rng, std::int64_t step, std::uint32
   constexpr double kTwoPi = 6.283185307179586;
   return from_angle(kTwoPi * rng.uniform(static_cast<std::uint64_t>(step), agent, purpose));
 }
+
+// The unit vector away from the agents within `radius` among `neighbours` (nearest first):
+// opposite the sum of the offsets to them. None when they cancel out: when the sum is zero,
+// or shorter than `enclosed_fraction` of the summed distances (an agent deep in a packed
+// aggregate, whose sum points nowhere in particular; controllers/compaction.hpp).
+std::optional<Vec2> heading_away(std::span<const Neighbour> neighbours, double radius,
+                                 double enclosed_fraction);
 
 // Mirrors headings the walls reflected during the last step.
 void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm);

@@ -1,7 +1,5 @@
-#include "controllers/aggregation_controller.hpp"
+#include "control_interface/wall_contacts.hpp"
 #include "controllers/controller.hpp"
-#include "controllers/ghost_controller.hpp"
-#include "engine/engine.hpp"
 
 namespace swarmagg {
 
@@ -12,19 +10,18 @@ void turn_at_walls(std::span<const std::uint8_t> reflections, SwarmState& swarm)
   }
 }
 
-std::unique_ptr<Controller> make_controller(const WorldSpec& spec) {
-  switch (spec.controller.type) {
-    case ControllerType::Bayindir:
-      return std::make_unique<AggregationController>(bayindir_rules(spec));
-    case ControllerType::Soysal:
-      return std::make_unique<AggregationController>(soysal_rules(spec));
-    case ControllerType::Collision:
-      if (spec.controller.collision_mode == CollisionMode::Ghost) {
-        return std::make_unique<GhostController>(spec.robots.speed, spec.controller.tumble);
-      }
-      return std::make_unique<AggregationController>(collision_paper_rules(spec));
+std::optional<Vec2> heading_away(std::span<const Neighbour> neighbours, double radius,
+                                 double enclosed_fraction) {
+  Vec2 towards;
+  double lengths = 0.0;
+  for (const Neighbour& nb : neighbours) {
+    if (nb.distance > radius) break;
+    towards += nb.offset;
+    lengths += nb.distance;
   }
-  return nullptr;
+  const double length = norm(towards);
+  if (length > 1e-12 && length > enclosed_fraction * lengths) return towards * (-1.0 / length);
+  return std::nullopt;
 }
 
 }  // namespace swarmagg

@@ -69,7 +69,7 @@ double time_ours(const Scene& scene, int steps, bool solid) {
   spec.robots.radius = kRadius;
   spec.robots.detection_radius = kDetection;
   spec.robots.speed = kSpeed;
-  spec.controller.type = ControllerType::Collision;
+  spec.controller.type = "collision";
   spec.engine.type = EngineType::Box2D;
   spec.engine.dt = kDt;
   const std::size_t n = scene.positions.size();

@@ -11,9 +11,8 @@
 namespace swarmagg {
 
 WorldSpec bench_world(int n, BenchScenario scenario) {
-  return paper_density_world(n, scenario == BenchScenario::GhostWorstCase
-                                    ? ControllerType::Collision
-                                    : ControllerType::Bayindir);
+  return paper_density_world(n,
+                             scenario == BenchScenario::GhostWorstCase ? "collision" : "bayindir");
 }
 
 namespace {

@@ -7,7 +7,7 @@
 
 namespace swarmagg {
 
-WorldSpec paper_density_world(int n, ControllerType type) {
+WorldSpec paper_density_world(int n, const std::string& type) {
   WorldSpec spec;
   spec.name = "paper-density-" + std::to_string(n);
   spec.source = spec.name;
@@ -15,8 +15,8 @@ WorldSpec paper_density_world(int n, ControllerType type) {
   spec.arena = {side, side, Topology::Torus};
   spec.robots.count = n;
   spec.controller.type = type;
-  if (type == ControllerType::Collision) spec.controller.collision_mode = CollisionMode::Ghost;
-  if (type == ControllerType::Bayindir) spec.controller.p_leave = 0.001;
+  if (type == "collision") spec.controller.collision_mode = CollisionMode::Ghost;
+  if (type == "bayindir") spec.controller.p_leave = 0.001;
   spec.run.replicates = 1;
   check_world(spec);
   return spec;

@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -143,7 +144,7 @@ int run_command(const RunCommandOptions& options) {
   if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);
   if (!options.quiet && options.rates) {
     for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
-    if (spec.controller.type != ControllerType::Collision)
+    if (controller_rules(spec).model != ModelFamily::Encounters)
       std::cout << measured_variant_note(spec, *measured) << "\n";
   }
   if (!options.quiet) print_summary(spec, result, out);

@@ -1,21 +1,9 @@
 #include "compare/arm_comparison.hpp"
 
+#include "controllers/controller_registry.hpp"
 #include "run/aggregate_summary.hpp"
 
 namespace swarmagg {
-
-bool world_has_leaving(const WorldSpec& spec) {
-  if (!spec.controller.leave) return false;
-  switch (spec.controller.type) {
-    case ControllerType::Bayindir:
-      return spec.controller.p_leave > 0.0;
-    case ControllerType::Soysal:
-      return spec.controller.p0 > 0.0;
-    case ControllerType::Collision:
-      return spec.controller.collision_mode == CollisionMode::Paper;
-  }
-  return false;
-}
 
 ArmSummary summarize_arm(const ArmResult& arm) {
   ArmSummary s;
@@ -40,7 +28,8 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   c.noa_difference = welch_interval(c.a.final_noa, c.b.final_noa);
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
-  c.has_leaving = world_has_leaving(a.spec) || world_has_leaving(b.spec);
+  c.has_leaving =
+      controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;
   return c;
 }
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "controllers/aggregation_rules.hpp"
+#include "controllers/controller_registry.hpp"
 #include "models/aggregate_shape.hpp"
 #include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
@@ -93,17 +93,15 @@ std::string escape_rate_script(const std::string& world_name, const Comparison& 
   return gp.str();
 }
 
-// An agent's leave probability per step in an aggregate of `size` (Bayindir or Soysal).
+// An agent's leave probability per step in an aggregate of `size`, as its controller says.
 double member_leave_probability(const WorldSpec& spec, int size) {
-  const AggregationRules rules =
-      spec.controller.type == ControllerType::Soysal ? soysal_rules(spec) : bayindir_rules(spec);
-  return leave_probability(rules.leave_rule, size, size - 1);
+  return registration_of(spec.controller.type).leave_probability_at_size(spec, size);
 }
 
 // periph(m) as the world's model counts it: Soysal's peripheral variant honours
 // model.periphery_cap (the paper worlds leave it off), Bayindir's shrink always caps at m.
 double periphery_leavers(const WorldSpec& spec, int size) {
-  return spec.controller.type == ControllerType::Soysal
+  return controller_rules(spec).model == ModelFamily::Soysal
              ? soysal_leavers(spec, LeavingVariant::Peripheral, size)
              : capped_periphery_agents(size);
 }
@@ -181,8 +179,9 @@ void write_comparison_plots(const std::string& world_name, const ArmResult& a, c
                     histogram_csv("size", c.a.label, c.a.final_sizes, c.b.label, c.b.final_sizes));
   run_gnuplot(out / "noa.gp", noa_script(world_name, a, b));
   run_gnuplot(out / "final.gp", final_script(world_name, c));
-  const ControllerType type = a.spec.controller.type;
-  if (c.has_leaving && (type == ControllerType::Bayindir || type == ControllerType::Soysal)) {
+  // The escape-rate curves are the controller's leave law by aggregate size (Bayindir's,
+  // Soysal's), for controllers whose leaving follows from the size.
+  if (c.has_leaving && registration_of(a.spec.controller.type).leave_probability_at_size) {
     write_file_atomic(out / "escape_rate.csv", escape_rate_csv(a, b, c));
     run_gnuplot(out / "escape_rate.gp", escape_rate_script(world_name, c));
   }

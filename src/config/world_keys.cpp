@@ -6,6 +6,8 @@
 #include <limits>
 #include <optional>
 
+#include "config/controller_catalog.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -57,7 +59,7 @@ WorldKey real_key(std::string path, Access<double> access, const RealBounds& bou
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(format_number(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), bounds.expected, read, write};
+  return {std::move(path), bounds.expected, read, write, {}, {}};
 }
 
 template <typename Int>
@@ -72,7 +74,7 @@ WorldKey integer_key(std::string path, Access<Int> access, long long low, long l
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), expected, read, write};
+  return {std::move(path), expected, read, write, {}, {}};
 }
 
 WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
@@ -87,7 +89,7 @@ WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), expected, read, write};
+  return {std::move(path), expected, read, write, {}, {}};
 }
 
 WorldKey bool_key(std::string path, Access<bool> access) {
@@ -105,7 +107,7 @@ WorldKey bool_key(std::string path, Access<bool> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)) ? "true" : "false");
   };
-  return {std::move(path), expected, read, write};
+  return {std::move(path), expected, read, write, {}, {}};
 }
 
 template <typename Enum>
@@ -132,7 +134,7 @@ WorldKey enum_key(std::string path, Access<Enum> access,
     }
     return YAML::Node();
   };
-  return {std::move(path), expected, read, write};
+  return {std::move(path), expected, read, write, {}, {}};
 }
 
 WorldKey string_key(std::string path, Access<std::string> access) {
@@ -149,7 +151,7 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)));
   };
-  return {std::move(path), expected, read, write};
+  return {std::move(path), expected, read, write, {}, {}};
 }
 
 // A positive length whose default follows another key (written back resolved).
@@ -161,7 +163,7 @@ WorldKey optional_length_key(std::string path, Access<std::optional<double>> acc
     access(w) = v;
   };
   auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
-  return {std::move(path), kPositive.expected, read, write};
+  return {std::move(path), kPositive.expected, read, write, {}, {}};
 }
 
 WorldKey name_key() {
@@ -176,7 +178,7 @@ WorldKey name_key() {
     w.name = text;
   };
   auto write = [](const WorldSpec& w) { return YAML::Node(w.name); };
-  return {"name", expected, read, write};
+  return {"name", expected, read, write, {}, {}};
 }
 
 WorldKey placement_key() {
@@ -208,7 +210,27 @@ WorldKey placement_key() {
     }
     return list;
   };
-  return {"robots.placement", expected, read, write};
+  return {"robots.placement", expected, read, write, {}, {}};
+}
+
+// Any registered controller (controller_catalog.hpp), named in the message.
+WorldKey controller_type_key() {
+  std::string expected = "one of:";
+  for (const ControllerCatalogEntry& entry : controller_catalog()) {
+    expected += (expected.back() == ':' ? " " : ", ") + entry.type;
+  }
+  auto read = [expected](WorldSpec& w, const YAML::Node& node) {
+    const std::string text = scalar_text(node, expected);
+    for (const ControllerCatalogEntry& entry : controller_catalog()) {
+      if (entry.type == text) {
+        w.controller.type = text;
+        return;
+      }
+    }
+    throw KeyValueError{expected};
+  };
+  auto write = [](const WorldSpec& w) { return YAML::Node(w.controller.type); };
+  return {"controller.type", expected, read, write, "", {}};
 }
 
 std::vector<WorldKey> build_keys() {
@@ -233,11 +255,7 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(real_key(
       "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative));
   keys.push_back(placement_key());
-  keys.push_back(enum_key<ControllerType>(
-      "controller.type", [](WorldSpec& w) -> ControllerType& { return w.controller.type; },
-      {{"bayindir", ControllerType::Bayindir},
-       {"soysal", ControllerType::Soysal},
-       {"collision", ControllerType::Collision}}));
+  keys.push_back(controller_type_key());
   keys.push_back(real_key(
       "controller.p_leave", [](WorldSpec& w) -> double& { return w.controller.p_leave; },
       kProbability));
@@ -284,6 +302,10 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(real_key(
       "controller.compaction.tolerance",
       [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative));
+  // Each registered controller's own keys follow the shared controller keys.
+  for (const ControllerCatalogEntry& entry : controller_catalog()) {
+    keys.insert(keys.end(), entry.keys.begin(), entry.keys.end());
+  }
   keys.push_back(
       enum_key<EngineType>("engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
                            {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
@@ -351,6 +373,40 @@ std::vector<WorldKey> build_keys() {
 }
 
 }  // namespace
+
+WorldKey number_list_key(std::string path, std::vector<double> defaults, double low, double high,
+                         std::string controller) {
+  const std::string expected = "a list of one or more numbers from " + format_number(low) + " to " +
+                               format_number(high) + ", e.g. [" + format_number(low) + ", " +
+                               format_number(high) + "]";
+  auto read = [path, low, high, expected](WorldSpec& w, const YAML::Node& node) {
+    if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
+    std::vector<double> values;
+    for (const YAML::Node& item : node) {
+      const double v = read_real(item, expected);
+      if (!(v >= low && v <= high)) throw KeyValueError{expected};
+      values.push_back(v);
+    }
+    w.controller.parameters[path] = std::move(values);
+  };
+  auto write = [path, defaults](const WorldSpec& w) {
+    const auto found = w.controller.parameters.find(path);
+    const std::vector<double>& values =
+        found == w.controller.parameters.end() ? defaults : found->second;
+    YAML::Node list(YAML::NodeType::Sequence);
+    list.SetStyle(YAML::EmitterStyle::Flow);
+    for (const double v : values) list.push_back(format_number(v));
+    return list;
+  };
+  WorldKey key{std::move(path), expected, read, write, std::move(controller), {}};
+  key.list_defaults = std::move(defaults);
+  return key;
+}
+
+const std::vector<double>& number_list(const WorldSpec& spec, const WorldKey& key) {
+  const auto found = spec.controller.parameters.find(key.path);
+  return found == spec.controller.parameters.end() ? key.list_defaults : found->second;
+}
 
 std::string format_number(double value) {
   // Plain decimals read best in world files (0.0001, not 1e-04); very large or very small

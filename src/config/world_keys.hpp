@@ -22,6 +22,9 @@ struct WorldKey {
   std::string expected;  // e.g. "a whole number >= 1"
   std::function<void(WorldSpec&, const YAML::Node&)> read;
   std::function<YAML::Node(const WorldSpec&)> write;
+  // Non-empty for a registered controller's own key: written back only for its worlds.
+  std::string controller;
+  std::vector<double> list_defaults;  // number_list_key's defaults
 };
 
 const std::vector<WorldKey>& world_keys();
@@ -29,6 +32,13 @@ const WorldKey* find_world_key(const std::string& path);
 // Blocks that hold keys ("arena", "engine", "engine.box2d", ...), in writing order.
 const std::vector<std::string>& world_blocks();
 std::vector<std::string> world_key_paths();
+
+// A registered controller's key holding a list of numbers (ControllerSpec::parameters), each
+// in [low, high], at least one; `defaults` when the world does not name it.
+WorldKey number_list_key(std::string path, std::vector<double> defaults, double low, double high,
+                         std::string controller);
+// The values of such a key in `spec`, or its defaults.
+const std::vector<double>& number_list(const WorldSpec& spec, const WorldKey& key);
 
 // Shortest decimal text that reads back to the same double.
 std::string format_number(double value);

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "config/controller_catalog.hpp"
 #include "config/did_you_mean.hpp"
 #include "config/world_keys.hpp"
 #include "core/errors.hpp"
@@ -324,9 +325,11 @@ void check_world(const WorldSpec& spec) {
                    " cover " + format_number(std::round(coverage * 100.0)) +
                    "% of the arena; at most 50% can be placed without overlap");
   }
-  if (spec.controller.type == ControllerType::Soysal && spec.controller.approach_radius <= s) {
-    impossible(spec, "controller.approach_radius",
-               "must exceed robots.detection_radius (" + format_number(s) + ")");
+  const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
+  if (controller.check) {
+    if (const std::optional<KeyProblem> problem = controller.check(spec)) {
+      impossible(spec, problem->key, problem->why);
+    }
   }
   // Compaction pulls only members an agent perceives: a spacing at or beyond s would pull
   // every perceived member in and push none out, so the aggregate could never settle.

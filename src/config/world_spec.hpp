@@ -3,9 +3,9 @@
 // shared read-only by every replicate, engine, controller, observer and model. Every field
 // has the default SPEC.md section 7 gives; the key registry (config/world_keys) maps the
 // dotted YAML key paths onto these fields.
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +14,6 @@
 
 namespace swarmagg {
 
-enum class ControllerType { Bayindir, Soysal, Collision };
 enum class IsolatedWait { Resume, Stay };
 enum class LeaveLaw { Constant, Inverse, InverseSquare };
 enum class LeaveSize { Aggregate, Neighbours };
@@ -64,9 +63,9 @@ struct CompactionSpec {
 };
 
 struct ControllerSpec {
-  ControllerType type = ControllerType::Bayindir;
-  double p_leave = 0.0;         // bayindir: per step
-  double leave_timeout = 10.0;  // tu
+  std::string type = "bayindir";  // a registered controller (config/controller_catalog.hpp)
+  double p_leave = 0.0;           // bayindir: per step
+  double leave_timeout = 10.0;    // tu
   bool join = true;
   bool leave = true;
   IsolatedWait isolated_wait = IsolatedWait::Resume;
@@ -77,6 +76,9 @@ struct ControllerSpec {
   CollisionMode collision_mode = CollisionMode::Ghost;
   double tumble = 0.0;  // collision: heading redraw probability per step
   CompactionSpec compaction;
+  // The keys of controllers registered with their own keys (controller.<name> -> values), so a
+  // new controller adds no field here. Absent: the key's default.
+  std::map<std::string, std::vector<double>> parameters;
 };
 
 struct Box2DSpec {
@@ -137,20 +139,12 @@ struct WorldSpec {
   }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }
-  // The largest radius any sensor of this world's controller reads.
-  double sensing_radius() const {
-    return controller.type == ControllerType::Soysal
-               ? std::max(robots.detection_radius, controller.approach_radius)
-               : robots.detection_radius;
-  }
+  // The largest radius any sensor of this world's controller reads (the controller says).
+  double sensing_radius() const;
   // How far agents perceive one another: 0 when the controller reads no neighbours (ghost
   // collisions only count encounters, which the engine detects), so that an engine need not
   // build lists nobody reads.
-  double perception_radius() const {
-    const bool ghost = controller.type == ControllerType::Collision &&
-                       controller.collision_mode == CollisionMode::Ghost;
-    return ghost ? 0.0 : sensing_radius();
-  }
+  double perception_radius() const;
 };
 
 }  // namespace swarmagg

@@ -23,7 +23,11 @@ void insert(YAML::Node root, const std::string& path, const YAML::Node& value) {
 
 std::string world_to_yaml(const WorldSpec& spec) {
   YAML::Node root(YAML::NodeType::Map);
-  for (const WorldKey& key : world_keys()) insert(root, key.path, key.write(spec));
+  for (const WorldKey& key : world_keys()) {
+    // Another registered controller's own keys mean nothing to this world.
+    if (!key.controller.empty() && key.controller != spec.controller.type) continue;
+    insert(root, key.path, key.write(spec));
+  }
   YAML::Emitter out;
   out << root;
   return std::string(out.c_str()) + "\n";

@@ -42,6 +42,14 @@ struct SwarmState {
     partner.assign(n, kNoPartner);
   }
   std::size_t size() const { return state.size(); }
+  // Appends an agent in `s`, heading +x, outside any pair; returns its index (test scenes).
+  std::uint32_t add(AgentState s) {
+    state.push_back(s);
+    heading.push_back({1.0, 0.0});
+    leave_time_left.push_back(0.0);
+    partner.push_back(kNoPartner);
+    return static_cast<std::uint32_t>(state.size() - 1);
+  }
 };
 
 }  // namespace swarmagg

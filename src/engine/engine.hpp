@@ -8,15 +8,12 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "control_interface/motion_command.hpp"
+#include "control_interface/neighbour_lists.hpp"
+#include "control_interface/wall_contacts.hpp"
 #include "core/vec2.hpp"
-#include "engine/motion_command.hpp"
-#include "engine/neighbour_lists.hpp"
 
 namespace swarmagg {
-
-// Bumper bits an engine sets when a wall reflected an agent during the last step, so the
-// controller can turn its heading the same way.
-enum Reflection : std::uint8_t { ReflectedX = 1, ReflectedY = 2 };
 
 struct StepReport {
   // Pairs whose centres came within the detection radius s during the step, having been
@@ -37,7 +34,7 @@ class Engine {
   // Agents within the sensing radius of each agent, as of the end of the last step (or
   // the initial placement before the first step).
   virtual const NeighbourLists& neighbours() const = 0;
-  virtual std::span<const std::uint8_t> reflections() const = 0;
+  virtual std::span<const std::uint8_t> reflections() const = 0;  // Reflection bits
 
   // Threads the engine may use inside one step (results must not depend on it).
   virtual void set_threads(int /*threads*/) {}

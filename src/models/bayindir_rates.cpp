@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/aggregate_shape.hpp"
 
@@ -61,7 +62,8 @@ void check_probabilities(const BayindirRates& rates) {
 BayindirRates bayindir_rates(const WorldSpec& world, CreationVariant variant) {
   BayindirRates rates;
   rates.agents = world.robots.count;
-  rates.forms_aggregates = world.controller.type != ControllerType::Collision;
+  // The collision check's worlds are modelled by their encounters only.
+  rates.forms_aggregates = controller_rules(world).model != ModelFamily::Encounters;
   rates.creation = creation_per_step(world, variant);
   if (rates.forms_aggregates) {
     rates.growth = growth_probabilities(world);

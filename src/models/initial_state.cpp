@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 
 namespace swarmagg {
@@ -78,7 +79,7 @@ FirstDecision expected_first_decision(const WorldSpec& world) {
 
 std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured) {
   const int n = world.robots.count;
-  const bool aggregating = world.controller.type != ControllerType::Collision;
+  const bool aggregating = controller_rules(world).model != ModelFamily::Encounters;
   switch (world.model.initial_state) {
     case InitialState::AllSearching:
       return {};

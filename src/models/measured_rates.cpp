@@ -1,5 +1,7 @@
 #include "models/measured_rates.hpp"
 
+#include "controllers/controller_registry.hpp"
+
 namespace swarmagg {
 
 namespace {
@@ -74,7 +76,8 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
     note += ", growth measured at " + std::to_string(growth_sizes_used(world, terms)) +
             " aggregate sizes (the model's capture radius elsewhere)";
   }
-  if (world.controller.leave && world.controller.type != ControllerType::Collision) {
+  const ControllerRules rules = controller_rules(world);
+  if (rules.leaves && rules.model != ModelFamily::Encounters) {
     note += ", leaving at the measured LEAVE attempt rate at " +
             std::to_string(leave_sizes_used(world, terms)) +
             " aggregate sizes (attempts that do not escape come back as growths; the model's "

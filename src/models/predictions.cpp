@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "controllers/controller_registry.hpp"
 #include "models/bayindir_expected.hpp"
 #include "models/bayindir_stochastic.hpp"
 #include "models/initial_state.hpp"
@@ -116,7 +117,9 @@ std::string stationary_summary(const VariantPrediction& prediction) {
 }  // namespace
 
 std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured) {
-  if (world.controller.type != ControllerType::Soysal) return bayindir_predictions(world, measured);
+  const ModelFamily model = controller_rules(world).model;
+  if (model == ModelFamily::None) return {};
+  if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured);
   const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const LeavingVariant variant : {LeavingVariant::Original, LeavingVariant::Peripheral}) {
@@ -136,7 +139,9 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
 std::vector<std::string> model_caveats(const WorldSpec& world) {
   std::vector<std::string> caveats;
   const ControllerSpec& controller = world.controller;
-  if (controller.type == ControllerType::Collision) {
+  const ControllerRules rules = controller_rules(world);
+  if (rules.model == ModelFamily::None) return caveats;
+  if (rules.model == ModelFamily::Encounters) {
     caveats.push_back(
         "the encounter prediction assumes all N agents keep moving at speed v with uniform "
         "headings (collision_mode: ghost); in collision_mode: paper the leave runs after each "
@@ -148,16 +153,15 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
         "model.initial_state: placement expects a random placement; with given positions the "
         "models start from all searching");
   }
-  if (controller.leave) {
+  if (rules.leaves) {
     caveats.push_back(
         "the models have no LEAVE timeout: an agent that leaves is counted as free at once");
   }
-  if (controller.type == ControllerType::Bayindir &&
-      controller.isolated_wait == IsolatedWait::Stay) {
+  if (rules.model == ModelFamily::Bayindir && controller.isolated_wait == IsolatedWait::Stay) {
     caveats.push_back(
         "the Bayindir model assumes isolated_wait: resume (a dissolved pair frees both agents)");
   }
-  if (controller.type == ControllerType::Soysal && controller.leave_size == LeaveSize::Neighbours) {
+  if (rules.model == ModelFamily::Soysal && controller.leave_size == LeaveSize::Neighbours) {
     caveats.push_back(
         "the partition model takes P_l(i) from the aggregate size i, not from the neighbour "
         "count (leave_size: neighbours)");

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "core/vec2.hpp"
-#include "engine/neighbour_lists.hpp"
 #include "geometry/arena_geometry.hpp"
 #include "observers/aggregate_members.hpp"
 

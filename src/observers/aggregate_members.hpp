@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "observers/aggregate_tracker.hpp"
 
 namespace swarmagg {

@@ -7,8 +7,9 @@
 #include <span>
 #include <vector>
 
+#include "control_interface/aggregate_facts.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "core/agent_state.hpp"
-#include "engine/neighbour_lists.hpp"
 #include "observers/union_find.hpp"
 
 namespace swarmagg {
@@ -29,6 +30,8 @@ class AggregateTracker {
   std::span<const std::int32_t> size_of_agent() const { return size_of_agent_; }
   // Size of every aggregate, by aggregate index.
   std::span<const std::int32_t> sizes() const { return sizes_; }
+  // What a controller may read of these (control_interface/aggregate_facts.hpp).
+  AggregateFacts facts() const { return {sizes_, aggregate_of_, size_of_agent_}; }
   // The agents in an aggregate, in index order.
   std::span<const std::uint32_t> aggregated_agents() const { return labelled_; }
 

@@ -19,8 +19,8 @@
 #include <span>
 #include <vector>
 
+#include "control_interface/neighbour_lists.hpp"
 #include "core/agent_state.hpp"
-#include "engine/neighbour_lists.hpp"
 #include "observers/aggregate_geometry.hpp"
 #include "observers/aggregate_members.hpp"
 #include "observers/aggregate_tracker.hpp"

@@ -2,8 +2,8 @@
 // One recorded row of a replicate's time series (SPEC 7, timeseries.csv).
 #include <cstdint>
 
+#include "control_interface/event_counts.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
 #include "observers/swarm_snapshot.hpp"
 
 namespace swarmagg {

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "controllers/controller_registry.hpp"
 #include "plot/gnuplot.hpp"
 
 namespace swarmagg {
@@ -12,7 +13,8 @@ bool always(const RunFiles&) {
 }
 
 bool forms_aggregates(const RunFiles& run) {
-  return run.world.controller.type != ControllerType::Collision;
+  // The collision check's worlds are about encounters (SPEC 5.1), not aggregates.
+  return controller_rules(run.world).model != ModelFamily::Encounters;
 }
 
 bool has_partitions(const RunFiles& run) {

@@ -3,6 +3,7 @@
 
 #include "analysis/csv_text.hpp"
 #include "analysis/step_series.hpp"
+#include "controllers/controller_registry.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/run_plot.hpp"
@@ -29,7 +30,7 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
   std::vector<StateLine> states{{"searching", "searching (GO)", palette::kGo},
                                 {"waiting", "waiting (WAIT)", palette::kWait},
                                 {"leaving", "leaving (LEAVE)", palette::kLeave}};
-  if (run.world.controller.type == ControllerType::Soysal)
+  if (controller_rules(run.world).allows(AgentState::Approach))
     states.push_back({"approaching", "approaching (APPROACH)", palette::kApproach});
   std::vector<StepSeries> series;
   for (const StateLine& state : states)

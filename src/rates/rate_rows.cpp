@@ -1,6 +1,6 @@
 #include "rates/rate_rows.hpp"
 
-#include "config/leave_law.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/aggregate_shape.hpp"
 #include "models/bayindir_rates.hpp"
@@ -22,8 +22,19 @@ std::string creation_variant_name(CreationVariant variant) {
   return variant == CreationVariant::Original ? "original" : "collision";
 }
 
+// Which model the measured terms are set beside: the world's controller says (its rules).
+ModelFamily model_of(const WorldSpec& world) {
+  return controller_rules(world).model;
+}
+
 bool is_soysal(const WorldSpec& world) {
-  return world.controller.type == ControllerType::Soysal;
+  return model_of(world) == ModelFamily::Soysal;
+}
+
+// Bayindir's NOA model and the encounter check share the creation terms.
+bool is_bayindir(const WorldSpec& world) {
+  const ModelFamily model = model_of(world);
+  return model == ModelFamily::Bayindir || model == ModelFamily::Encounters;
 }
 
 // Per-step model probabilities, or none when the model refuses the world (dt too coarse):
@@ -51,7 +62,7 @@ std::vector<std::string> variant_names(const WorldSpec& world) {
   std::vector<std::string> names;
   if (is_soysal(world)) {
     for (const LeavingVariant v : kLeavingVariants) names.push_back(leaving_variant_name(v));
-  } else {
+  } else if (is_bayindir(world)) {
     for (const CreationVariant v : kCreationVariants) names.push_back(creation_variant_name(v));
   }
   return names;
@@ -65,7 +76,7 @@ RateRow creation_row(const WorldSpec& world, const RateTally& tally) {
   if (is_soysal(world)) {
     for (const auto& [name, rates] : soysal_variants(world))
       row.models.push_back({"soysal", name, rates.pair_up / dt});
-  } else {
+  } else if (is_bayindir(world)) {
     for (const CreationVariant v : kCreationVariants) {
       // Expected creations per step coefficient * y (y - 1) (or y^2): per pair per tu, 2 c / dt.
       row.models.push_back({"bayindir", creation_variant_name(v),
@@ -78,7 +89,7 @@ RateRow creation_row(const WorldSpec& world, const RateTally& tally) {
 void add_growth_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
   const double dt = world.engine.dt;
   const auto bayindir =
-      is_soysal(world) ? decltype(bayindir_variants(world)){} : bayindir_variants(world);
+      is_bayindir(world) ? bayindir_variants(world) : decltype(bayindir_variants(world)){};
   const auto soysal =
       is_soysal(world) ? soysal_variants(world) : decltype(soysal_variants(world)){};
   for (int m = 2; m < tally.agents; ++m) {
@@ -123,12 +134,11 @@ void add_initial_rows(const WorldSpec& world, const RateTally& tally, std::vecto
 void add_leave_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
   const double dt = world.engine.dt;
   const auto bayindir =
-      is_soysal(world) ? decltype(bayindir_variants(world)){} : bayindir_variants(world);
+      is_bayindir(world) ? bayindir_variants(world) : decltype(bayindir_variants(world)){};
   const auto soysal =
       is_soysal(world) ? soysal_variants(world) : decltype(soysal_variants(world)){};
   const std::string model = is_soysal(world) ? "soysal" : "bayindir";
-  const double base = is_soysal(world) ? world.controller.p0 : world.controller.p_leave;
-  const LeaveLaw law = is_soysal(world) ? world.controller.leave_law : LeaveLaw::Constant;
+  const auto at_size = registration_of(world.controller.type).leave_probability_at_size;
   for (const std::string term : {"attempt", "escape"}) {
     const std::vector<std::uint64_t>& events = term == "attempt" ? tally.attempts : tally.escapes;
     for (int m = 2; m <= tally.agents; ++m) {
@@ -138,10 +148,10 @@ void add_leave_rows(const WorldSpec& world, const RateTally& tally, std::vector<
                   .size = m,
                   .estimate = estimate_rate(
                       events[index], static_cast<double>(tally.leave_aggregate_steps[index]) * dt)};
-      if (term == "attempt") {
+      if (term == "attempt" && at_size) {
         for (const std::string& name : variant_names(world))
-          row.models.push_back({model, name, m * leave_probability(law, base, m) / dt});
-      } else {
+          row.models.push_back({model, name, m * at_size(world, m) / dt});
+      } else if (term == "escape") {
         for (const auto& [name, rates] : bayindir)
           row.models.push_back({"bayindir", name, rates.loss[index] / dt});
         for (const auto& [name, rates] : soysal)
@@ -184,9 +194,10 @@ void add_geometry_rows(const WorldSpec& world, const RateTally& tally, std::vect
 
 std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally) {
   std::vector<RateRow> rows{creation_row(world, tally)};
-  if (world.controller.type == ControllerType::Collision) return rows;
-  if (world.controller.join) add_growth_rows(world, tally, rows);
-  if (world.controller.leave) add_leave_rows(world, tally, rows);
+  const ControllerRules rules = controller_rules(world);
+  if (rules.model == ModelFamily::Encounters) return rows;
+  if (rules.joins) add_growth_rows(world, tally, rows);
+  if (rules.leaves) add_leave_rows(world, tally, rows);
   add_initial_rows(world, tally, rows);
   add_geometry_rows(world, tally, rows);
   return rows;

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "controllers/controller_registry.hpp"
 #include "models/measured_rates.hpp"
 #include "rates/geometry_fits.hpp"
 
@@ -42,7 +43,8 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
                        const std::vector<RateRow>& rows) {
   nlohmann::json terms = nlohmann::json::array();
   for (const RateRow& row : rows) terms.push_back(row_json(row));
-  const bool collision = world.controller.type == ControllerType::Collision;
+  // The encounter check's agents all keep moving: every agent counts as searching.
+  const bool collision = controller_rules(world).model == ModelFamily::Encounters;
   nlohmann::json json = {
       {"world", world.name},
       {"replicates", tally.replicates},

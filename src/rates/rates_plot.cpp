@@ -1,5 +1,6 @@
 #include "rates/rates_plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdio>
 
+#include "controllers/controller_registry.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/palette.hpp"
 
@@ -26,7 +27,7 @@ bool draw_frame_header(std::span<std::uint8_t> rgba, const FrameLayout& layout,
   std::array<AgentState, kAgentStateCount> states{AgentState::Go, AgentState::Approach,
                                                   AgentState::Wait, AgentState::Leave};
   const bool approach =
-      snapshot.spec != nullptr && snapshot.spec->controller.type == ControllerType::Soysal;
+      snapshot.spec != nullptr && controller_rules(*snapshot.spec).allows(AgentState::Approach);
   const int swatch = kGlyphHeight * k;
   const int gap = 2 * k;
   const int spacing = 8 * k;

@@ -1,5 +1,6 @@
 #include "reproduce/paper_predictions.hpp"
 
+#include "controllers/controller_registry.hpp"
 #include "models/predictions.hpp"
 
 namespace swarmagg {
@@ -7,7 +8,7 @@ namespace swarmagg {
 std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
                                                  const MeasuredTerms* measured) {
   std::vector<VariantPrediction> predictions = predict(world, measured);
-  if (world.controller.type == ControllerType::Soysal || world.model.kappa == Kappa::Paper) {
+  if (controller_rules(world).model == ModelFamily::Soysal || world.model.kappa == Kappa::Paper) {
     return predictions;
   }
   WorldSpec fitted = world;

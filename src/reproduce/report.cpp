@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "controllers/controller_registry.hpp"
 #include "models/aggregate_shape.hpp"
 #include "rates/geometry_fits.hpp"
 #include "reproduce/paper_predictions.hpp"
@@ -122,7 +123,7 @@ std::string partition_table(const std::vector<FigureResult>& results) {
 // else the first variant's.
 const ModelTerm* chosen_term(const WorldSpec& world, const RateRow& row) {
   const std::string chosen =
-      world.controller.type == ControllerType::Soysal
+      controller_rules(world).model == ModelFamily::Soysal
           ? (world.model.leaving == LeavingVariant::Original ? "original" : "peripheral")
           : (world.model.creation == CreationVariant::Original ? "original" : "collision");
   for (const ModelTerm& m : row.models) {

@@ -6,6 +6,7 @@
 
 #include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
+#include "controllers/controller_registry.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"
 #include "rates/rates_csv.hpp"
@@ -131,7 +132,7 @@ bool compaction_applies(const FigureResult& result) {
   const FigureKind kind = result.figure.kind;
   if (kind != FigureKind::Noa && kind != FigureKind::Partition) return false;
   return std::all_of(result.worlds.begin(), result.worlds.end(),
-                     [](const WorldSpec& w) { return w.controller.compaction.enabled; });
+                     [](const WorldSpec& w) { return controller_rules(w).compacts; });
 }
 
 Arm compaction_off_arm(const ReproduceOptions& options) {

@@ -33,24 +33,6 @@ std::string agent(const CheckedState& s, std::size_t i) {
 bool box2d(const WorldSpec& spec) {
   return spec.engine.type == EngineType::Box2D;
 }
-bool ghost(const WorldSpec& spec) {
-  return spec.controller.type == ControllerType::Collision &&
-         spec.controller.collision_mode == CollisionMode::Ghost;
-}
-bool collision_paper(const WorldSpec& spec) {
-  return spec.controller.type == ControllerType::Collision && !ghost(spec);
-}
-// The rules as the controllers apply them (controllers/aggregation_rules.cpp).
-bool may_join(const WorldSpec& spec) {
-  return spec.controller.type != ControllerType::Collision && spec.controller.join;
-}
-bool may_leave(const WorldSpec& spec) {
-  return collision_paper(spec) || spec.controller.leave;
-}
-// As the replicate links aggregates (run/replicate.cpp).
-bool partners_only(const WorldSpec& spec) {
-  return !spec.controller.join || collision_paper(spec);
-}
 
 double longest_side(const WorldSpec& spec) {
   return std::max({spec.arena.width, spec.arena.height, 1.0});
@@ -92,20 +74,10 @@ void check_positions(const CheckedState& s) {
   }
 }
 
-// Bit k set: AgentState k may occur under the world's rules.
-unsigned allowed_states(const WorldSpec& spec) {
-  const auto bit = [](AgentState a) { return 1u << static_cast<unsigned>(a); };
-  if (ghost(spec)) return bit(AgentState::Go);
-  unsigned allowed = bit(AgentState::Go) | bit(AgentState::Wait);
-  if (may_leave(spec)) allowed |= bit(AgentState::Leave);
-  if (spec.controller.type == ControllerType::Soysal) allowed |= bit(AgentState::Approach);
-  return allowed;
-}
-
-void check_agent(const CheckedState& s, std::size_t i, unsigned allowed) {
+void check_agent(const CheckedState& s, std::size_t i) {
   const AgentState state = s.swarm.state[i];
   if (static_cast<int>(state) >= kAgentStateCount) violated(s, agent(s, i) + " has no valid state");
-  if ((allowed & (1u << static_cast<unsigned>(state))) == 0) {
+  if (!s.rules.allows(state)) {
     violated(s, agent(s, i) + " is in a state this world's rules never enter");
   }
   const Vec2 h = s.swarm.heading[i];
@@ -129,14 +101,13 @@ void check_agent(const CheckedState& s, std::size_t i, unsigned allowed) {
 }
 
 void check_agents(const CheckedState& s) {
-  const unsigned allowed = allowed_states(s.spec);
-  for (std::size_t i = 0; i < s.swarm.size(); ++i) check_agent(s, i, allowed);
+  for (std::size_t i = 0; i < s.swarm.size(); ++i) check_agent(s, i);
 }
 
 // Linked WAIT agents must share an aggregate (the tracker's links, observers/aggregate_tracker).
 void check_links(const CheckedState& s) {
   const auto label = s.aggregates.aggregate_of();
-  const bool partners = partners_only(s.spec);
+  const bool partners = s.rules.partners_only;
   const double reach = s.spec.robots.detection_radius;
   const auto same = [&](std::size_t i, std::size_t j) {
     if (label[i] >= 0 && label[i] == label[j]) return;
@@ -171,18 +142,12 @@ void check_events(const CheckedState& s, int waiting) {
              "leaves" +
                  show());
   }
-  const bool none = ghost(s.spec) && e.creations + e.growths + e.dissipations + e.shrinks > 0;
-  const bool growth = !may_join(s.spec) && e.growths > 0;
-  const bool left = !may_leave(s.spec) && e.dissipations + e.shrinks > 0;
-  const bool shrink = partners_only(s.spec) && e.shrinks > 0;
+  const bool none = !s.rules.aggregates && e.creations + e.growths + e.dissipations + e.shrinks > 0;
+  const bool growth = !s.rules.joins && e.growths > 0;
+  const bool left = !s.rules.leaves && e.dissipations + e.shrinks > 0;
+  const bool shrink = s.rules.partners_only && e.shrinks > 0;
   if (none || growth || left || shrink)
     violated(s, "events counted that the rules rule out" + show());
-}
-
-// Waiting agents move only to close up their aggregate (SPEC 3 "Compaction"); the collision
-// check's pairs never do (controllers/aggregation_rules.cpp).
-bool compacts(const WorldSpec& spec) {
-  return spec.controller.compaction.enabled && spec.controller.type != ControllerType::Collision;
 }
 
 // Solid to each other during the step (SPEC 2; controllers' blocked_by masks).
@@ -199,9 +164,15 @@ bool solid(AgentState a, AgentState b, bool join) {
 }  // namespace
 
 CheckedState checked_state(const Replicate& r) {
-  return {
-      r.spec(),  r.index(),      r.steps_done(), r.engine().positions(), r.engine().neighbours(),
-      r.swarm(), r.aggregates(), r.events()};
+  return {r.spec(),
+          r.rules(),
+          r.index(),
+          r.steps_done(),
+          r.engine().positions(),
+          r.engine().neighbours(),
+          r.swarm(),
+          r.aggregates(),
+          r.events()};
 }
 
 void InvariantChecker::check(const CheckedState& state) {
@@ -247,7 +218,7 @@ void InvariantChecker::check_aggregates(const CheckedState& s) {
   }
   int largest = 0;
   for (std::int32_t a = 0; a < count; ++a) {
-    const bool pair_only = partners_only(s.spec) && sizes[a] != 2;
+    const bool pair_only = s.rules.partners_only && sizes[a] != 2;
     if (sizes[a] < 2 || pair_only || members_[a] != sizes[a]) {
       violated(s, "aggregate " + std::to_string(a) + " has size " + std::to_string(sizes[a]) +
                       " and " + std::to_string(members_[a]) + " members");
@@ -278,7 +249,8 @@ void InvariantChecker::check_motion(const CheckedState& s) const {
   const double slack = kRounding * (longest_side(s.spec) + reach);
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
     const double moved = geometry.distance(positions_[i], s.positions[i]);
-    const double limit = s.swarm.state[i] == AgentState::Wait && !compacts(s.spec) ? 0.0 : reach;
+    // Waiting agents move only to close up their aggregate (SPEC 3 "Compaction").
+    const double limit = s.swarm.state[i] == AgentState::Wait && !s.rules.compacts ? 0.0 : reach;
     if (moved > limit + slack) {
       violated(s, agent(s, i) + " moved " + format_number(moved) + " from " + point(positions_[i]) +
                       " to " + point(s.positions[i]) + " in one step; at most " +
@@ -291,7 +263,7 @@ void InvariantChecker::check_contacts(const CheckedState& s) const {
   const double r = s.spec.robots.radius;
   const double contact = 2.0 * r;
   const double tolerance = box2d(s.spec) ? r : kRounding * longest_side(s.spec);
-  const bool join = may_join(s.spec);
+  const bool join = s.rules.joins;
   const ArenaGeometry geometry = s.spec.arena.geometry();
   for (std::size_t i = 0; i < s.swarm.size(); ++i) {
     for (const Neighbour& nb : s.neighbours.of(static_cast<AgentId>(i))) {

@@ -32,11 +32,12 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "control_interface/controller_rules.hpp"
+#include "control_interface/event_counts.hpp"
+#include "control_interface/neighbour_lists.hpp"
 #include "core/agent_state.hpp"
 #include "core/vec2.hpp"
-#include "engine/neighbour_lists.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
 
 namespace swarmagg {
 
@@ -50,6 +51,7 @@ class InvariantViolation : public std::runtime_error {
 // What the checks read of a replicate after a step.
 struct CheckedState {
   const WorldSpec& spec;
+  const ControllerRules& rules;  // what the world's controller allows
   int replicate = 0;
   std::int64_t step = 0;
   std::span<const Vec2> positions;

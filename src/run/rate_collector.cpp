@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "controllers/controller_registry.hpp"
 #include "observers/aggregate_geometry.hpp"
 #include "rates/rate_recorder.hpp"
 #include "run/recorded_steps.hpp"
@@ -16,7 +17,7 @@ class RateObserver final : public ReplicateObserver {
   RateObserver(const WorldSpec& spec, std::optional<RateTally>& slot)
       : recorder_(spec.robots.count, spec.steps()),
         slot_(slot),
-        collision_(spec.controller.type == ControllerType::Collision),
+        collision_(controller_rules(spec).model == ModelFamily::Encounters),
         shape_rules_(ShapeRules::for_world(spec)) {}
 
   void observe(const Replicate& replicate) override {

@@ -4,21 +4,12 @@
 #include "run/invariants.hpp"
 
 namespace swarmagg {
-namespace {
-
-AggregateLinks links_for(const WorldSpec& spec) {
-  const bool partners_only =
-      !spec.controller.join || (spec.controller.type == ControllerType::Collision &&
-                                spec.controller.collision_mode == CollisionMode::Paper);
-  return partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity;
-}
-
-}  // namespace
 
 Replicate::Replicate(const WorldSpec& spec, int index)
     : spec_(spec),
       index_(index),
       rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))),
+      rules_(controller_rules(spec)),
       leave_episodes_(spec.robots.count, spec.robots.detection_radius,
                       ShapeRules::for_world(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
@@ -27,6 +18,7 @@ Replicate::Replicate(const WorldSpec& spec, int index)
   swarm_.resize(placement.positions.size());
   swarm_.heading.assign(placement.headings.begin(), placement.headings.end());
   commands_.resize(swarm_.size());
+  signals_.resize(swarm_.size());
   growths_by_size_.assign(swarm_.size() + 1, 0);
   update_aggregates();
 }
@@ -34,21 +26,19 @@ Replicate::Replicate(const WorldSpec& spec, int index)
 Replicate::~Replicate() = default;
 
 void Replicate::update_aggregates() {
-  aggregates_.update(engine_->neighbours(), swarm_, spec_.robots.detection_radius,
-                     links_for(spec_));
+  aggregates_.update(
+      engine_->neighbours(), swarm_, spec_.robots.detection_radius,
+      rules_.partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
 }
 
 void Replicate::step() {
-  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(), aggregates_,
-                              growths_by_size_};
+  const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(),
+                              aggregates_.facts(), growths_by_size_};
   controller_->decide(input, swarm_, rng_, commands_, events_);
   leave_episodes_.observe_decision(aggregates_, engine_->neighbours(), engine_->positions(),
                                    swarm_.state);
-  // An agent displays its state: the state array is the signal array.
-  static_assert(sizeof(AgentState) == sizeof(Signal));
-  const std::span<const Signal> signals(reinterpret_cast<const Signal*>(swarm_.state.data()),
-                                        swarm_.size());
-  events_.encounters += engine_->step(commands_, signals).encounters;
+  write_signals(swarm_.state, signals_);  // an agent displays its state
+  events_.encounters += engine_->step(commands_, signals_).encounters;
   ++step_;
   update_aggregates();
   if (checking_) check_invariants(*this);

@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
-#include "controllers/controller.hpp"
+#include "control_interface/controller_rules.hpp"
+#include "control_interface/event_counts.hpp"
+#include "control_interface/state_signals.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/agent_state.hpp"
 #include "core/rng.hpp"
 #include "engine/engine.hpp"
 #include "observers/aggregate_tracker.hpp"
-#include "observers/event_counts.hpp"
 #include "observers/leave_episodes.hpp"
 #include "observers/swarm_snapshot.hpp"
 
@@ -33,6 +35,8 @@ class Replicate {
   double time() const { return static_cast<double>(step_) * spec_.engine.dt; }
 
   const WorldSpec& spec() const { return spec_; }
+  // What the world's controller allows, computed once by the controller.
+  const ControllerRules& rules() const { return rules_; }
   int index() const { return index_; }
   std::uint64_t seed() const { return rng_.key(); }
   const Engine& engine() const { return *engine_; }
@@ -52,6 +56,7 @@ class Replicate {
   const WorldSpec& spec_;
   int index_;
   CounterRng rng_;
+  ControllerRules rules_;
   std::unique_ptr<Engine> engine_;
   std::unique_ptr<Controller> controller_;
   SwarmState swarm_;
@@ -60,6 +65,7 @@ class Replicate {
   std::vector<std::uint64_t> growths_by_size_;
   LeaveEpisodes leave_episodes_;
   AgentArray<MotionCommand> commands_;
+  AgentArray<Signal> signals_;
   std::int64_t step_ = 0;
 #ifdef NDEBUG
   bool checking_ = false;

@@ -5,6 +5,7 @@
 
 #include "config/world_keys.hpp"
 #include "config/world_writer.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/rng.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
@@ -117,7 +118,7 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
                       const std::filesystem::path& out) {
   std::filesystem::create_directories(out);
   write_file_atomic(out / "timeseries.csv", timeseries_csv(all_rows(result)));
-  if (spec.controller.type == ControllerType::Soysal) {
+  if (controller_rules(spec).records_partitions) {
     write_file_atomic(out / "partitions.csv", partitions_csv(result, spec.steps()));
   }
   write_file_atomic(out / "summary.json", run_summary(spec, result).dump(2) + "\n");

@@ -55,7 +55,7 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   outcome.index = index;
   outcome.seed = replicate.seed();
   const std::int64_t steps = spec.steps();
-  const bool partitions = spec.controller.type == ControllerType::Soysal;
+  const bool partitions = replicate.rules().records_partitions;
   PartitionTracker partition_tracker;
   const int n = spec.robots.count;
   outcome.rows.reserve(static_cast<std::size_t>(steps / spec.run.record_every + 2));

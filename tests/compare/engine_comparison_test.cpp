@@ -91,7 +91,7 @@ TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
 // pi (1.2 3^0.48 - 1) = 3.246 agents leave a 3-aggregate: the plotted law must be the model's.
 TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
   WorldSpec spec = tiny_world();
-  spec.controller.type = ControllerType::Soysal;
+  spec.controller.type = "soysal";
   spec.controller.p0 = 0.001;
   spec.model.periphery_cap = false;
   const ArmResult a{"a", spec, {}};

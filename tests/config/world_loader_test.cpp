@@ -45,7 +45,7 @@ render: {every: 3, width: 320, height: 240}
   EXPECT_EQ(spec.name, "t");
   EXPECT_EQ(spec.arena.topology, Topology::Walls);
   EXPECT_DOUBLE_EQ(spec.robots.speed, 2.0);
-  EXPECT_EQ(spec.controller.type, ControllerType::Soysal);
+  EXPECT_EQ(spec.controller.type, "soysal");
   EXPECT_EQ(spec.controller.leave_law, LeaveLaw::InverseSquare);
   EXPECT_EQ(spec.engine.type, EngineType::Box2D);
   EXPECT_EQ(spec.engine.box2d.substeps, 2);

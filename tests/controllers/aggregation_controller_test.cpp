@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "controller_fixture.hpp"
+#include "controller_testing/controller_fixture.hpp"
 
 namespace swarmagg {
 namespace {
@@ -14,7 +14,7 @@ constexpr SignalMask kWaitMask = mask_of(static_cast<Signal>(AgentState::Wait));
 
 WorldSpec bayindir(bool join, bool leave, double p) {
   WorldSpec spec;
-  spec.controller.type = ControllerType::Bayindir;
+  spec.controller.type = "bayindir";
   spec.controller.join = join;
   spec.controller.leave = leave;
   spec.controller.p_leave = p;
@@ -205,7 +205,7 @@ TEST(BayindirController, WithoutJoiningAStayingAgentDropsAPartnerWhoLeft) {
 
 WorldSpec soysal() {
   WorldSpec spec;
-  spec.controller.type = ControllerType::Soysal;
+  spec.controller.type = "soysal";
   spec.controller.approach_radius = 12.0;
   spec.controller.p0 = 0.0;
   return spec;
@@ -253,7 +253,7 @@ TEST(LeaveProbability, FollowsTheLeaveLawAndSizeSource) {
 
 TEST(CollisionController, PaperModePairsThenBothLeaveAtOnce) {
   WorldSpec spec;
-  spec.controller.type = ControllerType::Collision;
+  spec.controller.type = "collision";
   spec.controller.collision_mode = CollisionMode::Paper;
   spec.controller.leave_timeout = 1.0;
   ControllerFixture f(spec);
@@ -371,7 +371,7 @@ TEST(Compaction, AnEnclosedLeaverDrawsARandomHeadingARimLeaverHeadsAway) {
 
 TEST(CollisionController, GhostModeMovesStraightAndTumbles) {
   WorldSpec spec;
-  spec.controller.type = ControllerType::Collision;
+  spec.controller.type = "collision";
   spec.controller.collision_mode = CollisionMode::Ghost;
   spec.controller.tumble = 1.0;
   ControllerFixture f(spec);

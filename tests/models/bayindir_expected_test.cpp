@@ -134,7 +134,7 @@ TEST(BayindirExpected, RulesKeepAggregatesAsTheExperimentsDo) {
 
 TEST(BayindirExpected, CollisionWorldCountsEncountersAtConstantRate) {
   WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
-  world.controller.type = ControllerType::Collision;
+  world.controller.type = "collision";
   world.run.duration = 100.0;
   const BayindirRates rates = bayindir_rates(world, CreationVariant::Collision);
   const auto rows = bayindir_expected_series(rates, {0, 500, 1000});

@@ -41,7 +41,7 @@ TEST(BayindirRates, RulesSwitchEventsOff) {
 
 TEST(BayindirRates, CollisionWorldsOnlyCountEncounters) {
   WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
-  world.controller.type = ControllerType::Collision;
+  world.controller.type = "collision";
   EXPECT_FALSE(bayindir_rates(world, CreationVariant::Collision).forms_aggregates);
 }
 

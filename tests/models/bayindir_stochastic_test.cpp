@@ -86,7 +86,7 @@ TEST(BayindirStochastic, MeanConvergesToTheExpectedValueModel) {
 
 TEST(BayindirStochastic, CollisionWorldEncountersMatchTheRate) {
   WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
-  world.controller.type = ControllerType::Collision;
+  world.controller.type = "collision";
   const BayindirRates rates = bayindir_rates(world, CreationVariant::Collision);
   const auto rows = bayindir_stochastic_series(rates, {0, 10000}, 1, 20, 0);
   std::vector<double> totals;

@@ -10,7 +10,7 @@ inline WorldSpec bayindir_world(int agents, double p_leave, bool join, bool leav
   WorldSpec world;
   world.arena.width = world.arena.height = side;
   world.robots.count = agents;
-  world.controller.type = ControllerType::Bayindir;
+  world.controller.type = "bayindir";
   world.controller.p_leave = p_leave;
   world.controller.join = join;
   world.controller.leave = leave;
@@ -22,7 +22,7 @@ inline WorldSpec soysal_world(int agents, double side, double p0 = 2e-5,
   WorldSpec world;
   world.arena.width = world.arena.height = side;
   world.robots.count = agents;
-  world.controller.type = ControllerType::Soysal;
+  world.controller.type = "soysal";
   world.controller.p0 = p0;
   world.controller.leave_law = law;
   return world;

@@ -71,7 +71,7 @@ TEST(Predictions, ExpectedVariantsGiveTheirSizeDistributionAtTheLastStep) {
 
 TEST(Predictions, CollisionWorldsPredictEncounters) {
   WorldSpec world = testing::bayindir_world(100, 0.0, true, true, 540.0);
-  world.controller.type = ControllerType::Collision;
+  world.controller.type = "collision";
   world.run.duration = 100.0;
   world.model.stochastic_replicates = 2;
   const auto predictions = predict(world);

@@ -19,11 +19,7 @@ struct Scene {
 
   std::uint32_t add(double x, double y, AgentState state = AgentState::Wait) {
     positions.push_back({x, y});
-    swarm.state.push_back(state);
-    swarm.heading.push_back({1, 0});
-    swarm.leave_time_left.push_back(0);
-    swarm.partner.push_back(kNoPartner);
-    return static_cast<std::uint32_t>(positions.size() - 1);
+    return swarm.add(state);
   }
   // A hexagonal pack of `rings` rings around (x, y) at centre spacing `spacing`: 1, 7, 19,
   // 37 agents for 0..3 rings, the centre first, then ring by ring. Positions are wrapped

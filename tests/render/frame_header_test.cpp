@@ -42,7 +42,7 @@ TEST(FrameHeader, LegendShowsApproachOnlyForSoysal) {
   EXPECT_GT(count_colour(rgba, palette::kWait), 0);
   EXPECT_GT(count_colour(rgba, palette::kLeave), 0);
   EXPECT_EQ(count_colour(rgba, palette::kApproach), 0);
-  spec.controller.type = ControllerType::Soysal;
+  spec.controller.type = "soysal";
   ASSERT_TRUE(draw_frame_header(rgba, layout, swarm.snapshot()));
   EXPECT_GT(count_colour(rgba, palette::kApproach), 0);
   // Everything stays in the header band.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "config/world_loader.hpp"
+#include "control_interface/state_signals.hpp"
 #include "controllers/controller.hpp"
 #include "geometry/arena_geometry.hpp"
 #include "observers/aggregate_tracker.hpp"
@@ -180,13 +181,14 @@ bool escapes(const WorldSpec& spec, const std::vector<Vec2>& start, AgentId leav
       swarm.leave_time_left[leaver] = spec.controller.leave_timeout;
     }
     const AgentState before = swarm.state[leaver];
-    const ControllerInput input{step, engine->neighbours(), engine->reflections(), aggregates};
+    const ControllerInput input{step, engine->neighbours(), engine->reflections(),
+                                aggregates.facts()};
     controller->decide(input, swarm, rng, commands, events);
     if (before == AgentState::Leave && swarm.state[leaver] == AgentState::Go) {
       EXPECT_GE(closest, 2.0 * kRadius - overlap_allowed(spec.engine.type));
       return !perceives_waiting(*engine, swarm, leaver, s);
     }
-    for (std::size_t i = 0; i < swarm.size(); ++i) signals[i] = static_cast<Signal>(swarm.state[i]);
+    write_signals(swarm.state, signals);
     engine->step(commands, signals);
     closest = std::min(closest, smallest_distance(spec, engine->positions()));
   }

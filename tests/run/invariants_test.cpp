@@ -31,6 +31,7 @@ struct Scene {
   SwarmState swarm;
   AggregateTracker aggregates;
   EventCounts events;
+  ControllerRules rules;
   std::int64_t step = 1;
 
   // The world is a 40 x 40 torus with the defaults SPEC 7 gives, changed by `overrides`.
@@ -55,13 +56,14 @@ struct Scene {
       }
     }
     neighbours.assign_from_pairs(positions.size(), pairs);
-    const bool partners = !spec.controller.join;
-    aggregates.update(neighbours, swarm, spec.robots.detection_radius,
-                      partners ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
+    rules = controller_rules(spec);
+    aggregates.update(
+        neighbours, swarm, spec.robots.detection_radius,
+        rules.partners_only ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
   }
 
   CheckedState state() const {
-    return {spec, 3, step, positions, neighbours, swarm, aggregates, events};
+    return {spec, rules, 3, step, positions, neighbours, swarm, aggregates, events};
   }
 };
 

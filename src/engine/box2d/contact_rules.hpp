@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "control_interface/motion_command.hpp"
 #include "engine/box2d/periodic_body.hpp"
 #include "engine/box2d/sensor_links.hpp"
-#include "engine/motion_command.hpp"
 
 namespace swarmagg::box2d {
 

@@ -12,7 +12,7 @@
 #include <array>
 #include <cstdint>
 
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 
 namespace swarmagg::box2d {
 

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 
 namespace swarmagg::box2d {
 

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "control_interface/motion_command.hpp"
 #include "core/agent_array.hpp"
 #include "core/vec2.hpp"
-#include "engine/motion_command.hpp"
 
 namespace swarmagg {
 

@@ -10,10 +10,10 @@
 #include <span>
 #include <vector>
 
+#include "control_interface/neighbour_lists.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
 #include "engine/kinematic/sorted_strips.hpp"
 #include "engine/kinematic/step_threads.hpp"
-#include "engine/neighbour_lists.hpp"
 #include "geometry/pair_finder.hpp"
 
 namespace swarmagg {

@@ -72,7 +72,7 @@ TEST(Box2DEngine, NeighbourListsMatchBruteForce) {
 // Soysal's controller reads up to its approach radius: a second, larger sensor.
 TEST(Box2DEngine, NeighbourListsReachTheSensingRadius) {
   WorldSpec spec = box2d_world(80.0, 60.0, 200);
-  spec.controller.type = ControllerType::Soysal;
+  spec.controller.type = "soysal";
   spec.controller.approach_radius = 12.0;
   const auto start = random_positions(spec, 200, 2.0, 21);
   auto engine = make_box2d_engine(spec, start);

@@ -86,13 +86,14 @@ bool caught_at_timeout(const WorldSpec& spec, AgentId leaver) {
       swarm.leave_time_left[leaver] = spec.controller.leave_timeout;
     }
     const AgentState before = swarm.state[leaver];
-    const ControllerInput input{step, engine->neighbours(), engine->reflections(), aggregates};
+    const ControllerInput input{step, engine->neighbours(), engine->reflections(),
+                                aggregates.facts()};
     controller->decide(input, swarm, rng, commands, events);
     if (before == AgentState::Leave && swarm.state[leaver] == AgentState::Go) {
       // The timeout ran out in this decision, taken on what the agent perceives now.
       return perceives_waiting(engine->neighbours(), swarm, leaver, s);
     }
-    for (std::size_t i = 0; i < swarm.size(); ++i) signals[i] = static_cast<Signal>(swarm.state[i]);
+    write_signals(swarm.state, signals);
     engine->step(commands, signals);
   }
   ADD_FAILURE() << "the LEAVE state never ended";

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "control_interface/motion_command.hpp"
 #include "core/vec2.hpp"
 #include "engine/box2d/box2d_engine.hpp"
 #include "engine/engine.hpp"
-#include "engine/motion_command.hpp"
 #include "geometry/arena_geometry.hpp"
 
 namespace swarmagg::testing {
@@ -31,7 +31,7 @@ inline WorldSpec box2d_world(double width, double height, int count,
   spec.robots.radius = 1.0;
   spec.robots.detection_radius = 4.0;
   spec.robots.speed = 1.0;
-  spec.controller.type = ControllerType::Collision;
+  spec.controller.type = "collision";
   spec.engine.type = EngineType::Box2D;
   spec.engine.dt = 0.1;
   return spec;

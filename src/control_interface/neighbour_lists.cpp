@@ -1,4 +1,4 @@
-#include "engine/neighbour_lists.hpp"
+#include "control_interface/neighbour_lists.hpp"
 
 namespace swarmagg {
 namespace {

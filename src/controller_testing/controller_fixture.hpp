@@ -3,8 +3,9 @@
 // runs one decision, so controller tests need no engine.
 #include <vector>
 
-#include "controllers/controller.hpp"
+#include "controllers/controller_registry.hpp"
 #include "geometry/arena_geometry.hpp"
+#include "observers/aggregate_tracker.hpp"
 
 namespace swarmagg::testing {
 
@@ -15,6 +16,7 @@ struct ControllerFixture {
   NeighbourLists neighbours;
   AggregateTracker aggregates;
   EventCounts events;
+  std::vector<std::uint64_t> growths_by_size;  // [m]: growths of aggregates of m, cumulative
   std::vector<MotionCommand> commands;
   std::vector<std::uint8_t> reflections;
   std::unique_ptr<Controller> controller;
@@ -27,11 +29,7 @@ struct ControllerFixture {
   // Adds an agent at (x, y) in `state`, heading +x; returns its index.
   std::uint32_t add(double x, double y, AgentState state = AgentState::Go) {
     positions.push_back({x, y});
-    swarm.state.push_back(state);
-    swarm.heading.push_back({1.0, 0.0});
-    swarm.leave_time_left.push_back(0.0);
-    swarm.partner.push_back(kNoPartner);
-    return static_cast<std::uint32_t>(positions.size() - 1);
+    return swarm.add(state);
   }
 
   void perceive() {
@@ -44,9 +42,9 @@ struct ControllerFixture {
       }
       neighbours.close_agent(i);
     }
-    const bool partners = !spec.controller.join;
     aggregates.update(neighbours, swarm, spec.robots.detection_radius,
-                      partners ? AggregateLinks::PartnersOnly : AggregateLinks::Proximity);
+                      controller_rules(spec).partners_only ? AggregateLinks::PartnersOnly
+                                                           : AggregateLinks::Proximity);
   }
 
   void decide() {
@@ -54,7 +52,9 @@ struct ControllerFixture {
     perceive();
     commands.assign(positions.size(), MotionCommand{});
     reflections.assign(positions.size(), 0);
-    const ControllerInput input{step++, neighbours, reflections, aggregates};
+    growths_by_size.resize(positions.size() + 1, 0);
+    const ControllerInput input{step++, neighbours, reflections, aggregates.facts(),
+                                growths_by_size};
     controller->decide(input, swarm, CounterRng(11), commands, events);
   }
 };

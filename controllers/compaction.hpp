@@ -1,0 +1,56 @@
+#pragma once
+// SPEC 3 "Compaction", for every controller whose waiting agents close up their aggregate
+// (Bayindir's, Soysal's, the neighbour-count controller): the rule read from the world, the
+// spring velocity of one waiting agent, and the threshold below which a leaver counts as
+// enclosed. Each controller decides who its members are; the arithmetic lives here once.
+#include <algorithm>
+#include <span>
+
+#include "config/world_spec.hpp"
+#include "control_interface/neighbour_lists.hpp"
+
+namespace swarmagg {
+
+// A waiting agent moves under F = sum_j (d_ij - spacing) u_ij from the waiting members of its
+// aggregate it perceives, at min(v, gain |F|), standing below tolerance.
+struct CompactionRule {
+  bool enabled = false;
+  double spacing = 2.0;     // u
+  double gain = 1.0;        // per tu
+  double tolerance = 0.05;  // u
+};
+
+// controller.compaction.* of the world (spacing resolved to 2r when unset).
+CompactionRule compaction_rule(const WorldSpec& spec);
+
+// A leaver counts as enclosed when the vectors to the agents it perceives (s = 2 spacing)
+// sum to less than this fraction of their lengths. In hexagonal packs at spacing 2r the
+// fraction is 0.50 on a straight rim and 0.66 to 0.72 on the rim of a 19-pack, against 0 at
+// the centre, 0.23 one row inside a straight rim and 0.37 one ring inside a 19-pack's rim.
+// Whether an agent counts as enclosed changes only its heading: the bodies around it decide
+// whether it gets out. Without compaction aggregates are loose chains, and only an exactly
+// zero sum counts (fraction 0).
+constexpr double kEnclosedFraction = 0.4;
+
+inline double enclosed_fraction(const CompactionRule& rule) {
+  return rule.enabled ? kEnclosedFraction : 0.0;
+}
+
+// The spring force on an agent from the neighbours within `radius` (nearest first) that
+// `is_member(id)` accepts (waiting members of its aggregate, or its partner), turned into a
+// velocity of at most `speed`; exactly zero when the net force is below the tolerance.
+template <class IsMember>
+Vec2 compaction_velocity(const CompactionRule& rule, std::span<const Neighbour> neighbours,
+                         double radius, double speed, IsMember is_member) {
+  Vec2 force;
+  for (const Neighbour& nb : neighbours) {
+    if (nb.distance > radius) break;
+    if (!is_member(nb.id) || nb.distance <= 0.0) continue;
+    force += nb.offset * ((nb.distance - rule.spacing) / nb.distance);
+  }
+  const double magnitude = norm(force);
+  if (magnitude < rule.tolerance || magnitude <= 0.0) return {};
+  return force * (std::min(speed, rule.gain * magnitude) / magnitude);
+}
+
+}  // namespace swarmagg

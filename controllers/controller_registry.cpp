@@ -1,0 +1,62 @@
+#include "controllers/controller_registry.hpp"
+
+#include "core/errors.hpp"
+
+// Every controller, once: X(name) stands for name_registration(), defined in controllers/name/.
+// Adding a controller adds one line above the last one.
+// clang-format off
+#define SWARMAGG_CONTROLLERS(X) \
+  X(bayindir)                   \
+  X(soysal)                     \
+  X(collision)                  \
+  X(cockroach)                  \
+  /* end of the controllers */
+// clang-format on
+
+namespace swarmagg {
+
+#define SWARMAGG_DECLARE_REGISTRATION(name) ControllerRegistration name##_registration();
+SWARMAGG_CONTROLLERS(SWARMAGG_DECLARE_REGISTRATION)
+#undef SWARMAGG_DECLARE_REGISTRATION
+
+const std::vector<ControllerRegistration>& controller_registrations() {
+#define SWARMAGG_LIST_REGISTRATION(name) name##_registration(),
+  static const std::vector<ControllerRegistration> all = {
+      SWARMAGG_CONTROLLERS(SWARMAGG_LIST_REGISTRATION)};
+#undef SWARMAGG_LIST_REGISTRATION
+  return all;
+}
+
+const std::vector<ControllerCatalogEntry>& controller_catalog() {
+  static const std::vector<ControllerCatalogEntry> entries = [] {
+    std::vector<ControllerCatalogEntry> world;
+    for (const ControllerRegistration& r : controller_registrations()) world.push_back(r.world);
+    return world;
+  }();
+  return entries;
+}
+
+const ControllerRegistration& registration_of(const std::string& type) {
+  for (const ControllerRegistration& r : controller_registrations()) {
+    if (r.world.type == type) return r;
+  }
+  catalog_entry(type);  // throws, naming the registered types
+  throw InputError("controller.type: no controller '" + type + "' is registered");
+}
+
+ControllerRules controller_rules(const WorldSpec& spec) {
+  return registration_of(spec.controller.type).rules(spec);
+}
+
+std::unique_ptr<Controller> make_controller(const WorldSpec& spec) {
+  return registration_of(spec.controller.type).make(spec);
+}
+
+const WorldKey& registered_key(const ControllerCatalogEntry& entry, const std::string& path) {
+  for (const WorldKey& key : entry.keys) {
+    if (key.path == path) return key;
+  }
+  throw InputError(entry.type + " registers no key " + path);
+}
+
+}  // namespace swarmagg
