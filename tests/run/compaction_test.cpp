@@ -18,6 +18,7 @@
 #include "geometry/arena_geometry.hpp"
 #include "observers/aggregate_tracker.hpp"
 #include "run/replicate.hpp"
+#include "testing/forced_leave.hpp"
 
 namespace swarmagg {
 namespace {
@@ -150,50 +151,18 @@ TEST_P(Compaction, UnderJoinFalsePartnersCloseToTheSpacing) {
   expect_partners_close(GetParam(), false);
 }
 
-bool perceives_waiting(const Engine& engine, const SwarmState& swarm, AgentId agent, double s) {
-  for (const Neighbour& n : engine.neighbours().of(agent)) {
-    if (n.distance <= s && swarm.state[n.id] == AgentState::Wait) return true;
-  }
-  return false;
-}
-
-// The replicate loop (run/replicate.cpp) with `leaver` sent to LEAVE by hand after the pack
-// has settled for 20 steps. Returns whether it escaped (SPEC 4): at the end of its timeout it
-// perceived no waiting agent.
+// Whether `leaver`, sent to LEAVE by hand after the pack has settled for 20 steps, escaped
+// (SPEC 4): at the end of its timeout it perceived no waiting agent. No two bodies may come
+// closer than contact allows on the way.
 bool escapes(const WorldSpec& spec, const std::vector<Vec2>& start, AgentId leaver,
              std::uint64_t seed) {
-  auto engine = make_engine(spec, start);
-  auto controller = make_controller(spec);
-  SwarmState swarm;
-  swarm.resize(start.size());
-  AggregateTracker aggregates;
-  EventCounts events;
-  const CounterRng rng = CounterRng::for_replicate(seed, 0);
-  std::vector<MotionCommand> commands(start.size());
-  std::vector<Signal> signals(start.size());
-  const double s = spec.robots.detection_radius;
   double closest = INFINITY;
-  for (std::int64_t step = 0; step < 400; ++step) {
-    aggregates.update(engine->neighbours(), swarm, s, AggregateLinks::Proximity);
-    if (step == 20) {
-      for (const AgentState state : swarm.state) EXPECT_EQ(state, AgentState::Wait);
-      swarm.state[leaver] = AgentState::Leave;
-      swarm.leave_time_left[leaver] = spec.controller.leave_timeout;
-    }
-    const AgentState before = swarm.state[leaver];
-    const ControllerInput input{step, engine->neighbours(), engine->reflections(),
-                                aggregates.facts()};
-    controller->decide(input, swarm, rng, commands, events);
-    if (before == AgentState::Leave && swarm.state[leaver] == AgentState::Go) {
-      EXPECT_GE(closest, 2.0 * kRadius - overlap_allowed(spec.engine.type));
-      return !perceives_waiting(*engine, swarm, leaver, s);
-    }
-    write_signals(swarm.state, signals);
-    engine->step(commands, signals);
-    closest = std::min(closest, smallest_distance(spec, engine->positions()));
-  }
-  ADD_FAILURE() << "the LEAVE state never ended";
-  return false;
+  const bool caught =
+      testing::caught_at_timeout(spec, start, leaver, seed, 20, [&](const Engine& e) {
+        closest = std::min(closest, smallest_distance(spec, e.positions()));
+      });
+  EXPECT_GE(closest, 2.0 * kRadius - overlap_allowed(spec.engine.type));
+  return !caught;
 }
 
 // The 19-pack of each trial: placed 2.3 apart (compaction closes it up in the 20 steps before

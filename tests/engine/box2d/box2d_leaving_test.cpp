@@ -15,6 +15,7 @@
 #include "engine/box2d/box2d_test_support.hpp"
 #include "observers/aggregate_tracker.hpp"
 #include "run/replicate.hpp"
+#include "testing/forced_leave.hpp"
 
 namespace swarmagg {
 namespace {
@@ -54,50 +55,12 @@ std::string packed_world_yaml(int rings, double p_leave) {
   return yaml.str();
 }
 
-bool perceives_waiting(const NeighbourLists& neighbours, const SwarmState& swarm, AgentId agent,
-                       double s) {
-  for (const Neighbour& n : neighbours.of(agent)) {
-    if (n.distance <= s && swarm.state[n.id] == AgentState::Wait) return true;
-  }
-  return false;
-}
-
-// The replicate loop (run/replicate.cpp) with one agent sent to LEAVE by hand once the
-// aggregate has formed. Returns whether the agent still perceived a waiting agent when its
-// timeout ran out (it then joins again: it did not get out).
+// Whether the agent still perceived a waiting agent when its timeout ran out, sent to LEAVE
+// by hand once the aggregate has formed (it then joins again: it did not get out).
 bool caught_at_timeout(const WorldSpec& spec, AgentId leaver) {
   std::vector<Vec2> positions;
   for (const PlacedAgent& a : spec.robots.placement) positions.push_back({a.x, a.y});
-  auto engine = make_engine(spec, positions);
-  auto controller = make_controller(spec);
-  SwarmState swarm;
-  swarm.resize(positions.size());
-  AggregateTracker aggregates;
-  EventCounts events;
-  const CounterRng rng = CounterRng::for_replicate(spec.run.seed, 0);
-  std::vector<MotionCommand> commands(positions.size());
-  std::vector<Signal> signals(positions.size());
-  const double s = spec.robots.detection_radius;
-  for (std::int64_t step = 0; step < 400; ++step) {
-    aggregates.update(engine->neighbours(), swarm, s, AggregateLinks::Proximity);
-    if (step == 5) {
-      for (AgentState st : swarm.state) EXPECT_EQ(st, AgentState::Wait);
-      swarm.state[leaver] = AgentState::Leave;
-      swarm.leave_time_left[leaver] = spec.controller.leave_timeout;
-    }
-    const AgentState before = swarm.state[leaver];
-    const ControllerInput input{step, engine->neighbours(), engine->reflections(),
-                                aggregates.facts()};
-    controller->decide(input, swarm, rng, commands, events);
-    if (before == AgentState::Leave && swarm.state[leaver] == AgentState::Go) {
-      // The timeout ran out in this decision, taken on what the agent perceives now.
-      return perceives_waiting(engine->neighbours(), swarm, leaver, s);
-    }
-    write_signals(swarm.state, signals);
-    engine->step(commands, signals);
-  }
-  ADD_FAILURE() << "the LEAVE state never ended";
-  return true;
+  return testing::caught_at_timeout(spec, positions, leaver, spec.run.seed, 5);
 }
 
 TEST(Box2DLeaving, OnlyRimAgentsGetOutWithinTheTimeout) {
