@@ -5,12 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 
+#include "analysis/csv_table.hpp"
 #include "cli/cli_testing.hpp"
 #include "output/trajectory_reader.hpp"
 
@@ -35,19 +34,15 @@ fs::path fresh_dir(const std::string& name) {
 
 // NOA of timeseries.csv by (replicate, step).
 std::map<std::pair<int, std::int64_t>, int> recorded_noa(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line.rfind("replicate,step,time,noa,", 0), 0u) << line;
+  const CsvTable table = read_csv(csv);
+  const std::size_t replicate = table.column("replicate");
+  const std::size_t step = table.column("step");
+  const std::size_t noa_column = table.column("noa");
   std::map<std::pair<int, std::int64_t>, int> noa;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string replicate, step, time, value;
-    std::getline(fields, replicate, ',');
-    std::getline(fields, step, ',');
-    std::getline(fields, time, ',');
-    std::getline(fields, value, ',');
-    noa[{std::stoi(replicate), std::stoll(step)}] = std::stoi(value);
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    noa[{static_cast<int>(table.number(row, replicate)),
+         static_cast<std::int64_t>(table.number(row, step))}] =
+        static_cast<int>(table.number(row, noa_column));
   }
   return noa;
 }
