@@ -97,4 +97,14 @@ void AggregateTracker::label_components(std::size_t n, std::span<const std::uint
   largest_ = largest;
 }
 
+void AggregateTracker::members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const {
+  members.clear();
+  std::uint32_t member = agent;
+  do {
+    members.push_back(member);
+    member = sets_.next(member);
+  } while (member != agent);
+  std::sort(members.begin(), members.end());
+}
+
 }  // namespace swarmagg

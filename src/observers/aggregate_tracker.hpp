@@ -5,6 +5,7 @@
 // Components of one agent are not aggregates.
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "control_interface/aggregate_facts.hpp"
 #include "control_interface/neighbour_lists.hpp"
@@ -37,6 +38,10 @@ class AggregateTracker {
   std::span<const std::uint32_t> aggregated_agents() const {
     return {labelled_.data(), labelled_count_};
   }
+  // The members of the aggregate `agent` is in, in index order, into `members` (replacing
+  // its contents). In time proportional to the aggregate's size, so that looking at a few
+  // aggregates does not cost a pass over all of them.
+  void members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const;
 
  private:
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);
