@@ -2,33 +2,17 @@
 
 #include <algorithm>
 
+#include "core/agents_in_state.hpp"
+
 namespace swarmagg {
-namespace {
-
-// Lists the waiting agents in index order into `waiting` (kept at full length) and returns
-// how many there are. Without branches: every index is written, only a waiting one counts,
-// since waiting and moving agents alternate unpredictably along the indices.
-std::size_t list_waiting(std::span<const AgentState> state, AgentArray<std::uint32_t>& waiting) {
-  const std::size_t n = state.size();
-  if (waiting.size() != n) waiting.resize(n);
-  std::uint32_t* out = waiting.data();
-  const AgentState* s = state.data();
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    out[count] = static_cast<std::uint32_t>(i);
-    count += s[i] == AgentState::Wait;
-  }
-  return count;
-}
-
-}  // namespace
 
 void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState& swarm,
                               double detection_radius, AggregateLinks links) {
   const std::size_t n = swarm.size();
   // Only waiting agents can be in aggregates; the union-find touches nothing else.
-  const std::span<const std::uint32_t> waiting(waiting_.data(),
-                                               list_waiting(swarm.state, waiting_));
+  if (waiting_.size() != n) waiting_.resize(n);
+  const std::span<const std::uint32_t> waiting(
+      waiting_.data(), list_agents_in_state(swarm.state, AgentState::Wait, waiting_.data()));
   sets_.reserve_elements(n);
   for (const std::uint32_t i : waiting) sets_.make_set(i);
   const AgentState* state = swarm.state.data();
