@@ -58,7 +58,6 @@ void AggregateTracker::label_components(std::size_t n, std::span<const std::uint
   std::uint32_t* labelled = labelled_.data();
   std::int32_t count = 0;
   std::size_t labelled_count = 0;
-  std::int32_t largest = 0;
   for (const std::uint32_t i : waiting) {
     const std::uint32_t root = sets_.settle(i);
     const auto size = static_cast<std::int32_t>(sets_.size_of_root(root));
@@ -70,15 +69,13 @@ void AggregateTracker::label_components(std::size_t n, std::span<const std::uint
     const std::int32_t new_label = -heads;
     aggregate_of[i] = (count & new_label) | (aggregate_of[root] & ~new_label);
     count += heads;
-    const std::int32_t own_size = size & -aggregated;
-    size_of_agent[i] = own_size;
-    largest = std::max(largest, own_size);
+    size_of_agent[i] = size & -aggregated;
     labelled[labelled_count] = i;
     labelled_count += static_cast<std::size_t>(aggregated);
   }
   count_ = count;
   labelled_count_ = labelled_count;
-  largest_ = largest;
+  largest_ = count == 0 ? 0 : *std::max_element(sizes, sizes + count);
 }
 
 void AggregateTracker::members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const {
