@@ -22,8 +22,9 @@ void sort_by_distance(Neighbour* first, Neighbour* last) {
 // loop's only dependency and most counts are zero.
 std::uint32_t inclusive_prefix_sum(std::uint32_t* values, std::size_t n) {
   std::uint32_t total = 0;
+  const std::size_t whole = n - n % 4;
   std::size_t a = 0;
-  for (; a + 4 <= n; a += 4) {
+  for (; a < whole; a += 4) {
     const std::uint32_t v0 = values[a], v1 = values[a + 1], v2 = values[a + 2], v3 = values[a + 3];
     values[a] = total += v0;
     values[a + 1] = total += v1;
