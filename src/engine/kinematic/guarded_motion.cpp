@@ -13,6 +13,8 @@ constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
+// Relative margin on a squared distance far beyond rounding (a few 1e-16).
+constexpr double kClearlyApart = 1e-12;
 
 }  // namespace
 
@@ -87,18 +89,26 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
 }
 
-// Each pair is linked into the lists of both its agents. The lists come out in reverse
-// pair order, which is harmless: the heap order is total, whatever the push order.
+// A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
+// inclusive prefix sum turns it into the agent's end, and placing the ends by decrementing
+// it leaves the agent's start. The runs come out in reverse pair order, which is harmless:
+// the heap order is total, whatever the push order, and contacts are sorted by id.
 void GuardedMotion::build_incidence() {
-  const auto ends = static_cast<std::uint32_t>(2 * pairs_.size());
-  next_end_.resize(ends);
-  ++stamp_;
-  for (std::uint32_t end = 0; end < ends; ++end) {
-    const CandidatePair& p = pairs_[end >> 1];
-    const std::uint32_t agent = (end & 1) ? p.j : p.i;
-    next_end_[end] = head_stamp_[agent] == stamp_ ? head_[agent] : kNoEnd;
-    head_[agent] = end;
-    head_stamp_[agent] = stamp_;
+  const std::size_t agents = commands_.size();
+  incidence_begin_.assign(agents + 1, 0u);
+  for (const CandidatePair& p : pairs_) {
+    ++incidence_begin_[p.i];
+    ++incidence_begin_[p.j];
+  }
+  std::uint32_t total = 0;
+  for (std::size_t a = 0; a <= agents; ++a) {
+    total += incidence_begin_[a];
+    incidence_begin_[a] = total;
+  }
+  incident_ends_.resize(total);
+  for (auto pair = static_cast<std::uint32_t>(pairs_.size()); pair-- > 0;) {
+    incident_ends_[--incidence_begin_[pairs_[pair].i]] = 2 * pair;
+    incident_ends_[--incidence_begin_[pairs_[pair].j]] = 2 * pair + 1;
   }
   incidence_built_ = true;
 }
@@ -106,10 +116,7 @@ void GuardedMotion::build_incidence() {
 void GuardedMotion::reschedule(std::uint32_t agent, double time) {
   ++version_[agent];
   if (meets_walls(agent)) schedule_wall(agent, time);
-  if (head_stamp_[agent] != stamp_) return;
-  for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
-    schedule_pair(end >> 1, time);
-  }
+  for (const std::uint32_t end : incident_ends(agent)) schedule_pair(end >> 1, time);
 }
 
 void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) {
@@ -158,22 +165,28 @@ std::uint8_t GuardedMotion::touched_walls(std::uint32_t agent, double time,
 // result does not depend on how the pairs are listed.
 void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals) {
   contacts_.clear();
-  if (head_stamp_[agent] == stamp_) {
-    const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
-    for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
-      const CandidatePair& pair = pairs_[end >> 1];
-      const std::uint32_t other = (end & 1) ? pair.i : pair.j;
-      if (!blocks(agent, other)) continue;
-      const Vec2 from_i =
-          pair.offset + displacement_travelled(pair.j, time) - displacement_travelled(pair.i, time);
-      const Vec2 towards = (end & 1) ? Vec2{} - from_i : from_i;
-      const double distance = norm(towards);
-      if (distance > touching || distance <= 0.0) continue;
-      contacts_.push_back({other, towards * (1.0 / distance)});
+  const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
+  // Squared distances above this have a square root above `touching` whatever the rounding:
+  // bodies clearly apart are passed over without one.
+  const double apart2 = touching * touching * (1.0 + kClearlyApart);
+  for (const std::uint32_t end : incident_ends(agent)) {
+    const CandidatePair& pair = pairs_[end >> 1];
+    const std::uint32_t other = (end & 1) ? pair.i : pair.j;
+    if (!blocks(agent, other)) continue;
+    const Vec2 from_i =
+        pair.offset + displacement_travelled(pair.j, time) - displacement_travelled(pair.i, time);
+    const Vec2 towards = (end & 1) ? Vec2{} - from_i : from_i;
+    if (norm2(towards) > apart2) continue;
+    const double distance = norm(towards);
+    if (distance > touching || distance <= 0.0) continue;
+    contacts_.push_back({other, towards * (1.0 / distance)});
+  }
+  // A body touches a handful of others, with distinct ids: insertion sort.
+  for (std::size_t k = 1; k < contacts_.size(); ++k) {
+    for (std::size_t m = k; m > 0 && contacts_[m].first < contacts_[m - 1].first; --m) {
+      std::swap(contacts_[m], contacts_[m - 1]);
     }
   }
-  std::sort(contacts_.begin(), contacts_.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& contact : contacts_) normals.push_back(contact.second);
 }
 
@@ -210,9 +223,6 @@ void GuardedMotion::reset(std::size_t agents) {
     slides_.assign(agents, 0);
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
-    head_.assign(agents, 0u);
-    head_stamp_.assign(agents, 0u);
-    stamp_ = 0;
     step_stamp_ = 0;
   }
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
@@ -220,10 +230,6 @@ void GuardedMotion::reset(std::size_t agents) {
     step_stamp_ = 0;
   }
   ++step_stamp_;
-  if (stamp_ == std::numeric_limits<std::uint32_t>::max()) {
-    std::fill(head_stamp_.begin(), head_stamp_.end(), 0u);
-    stamp_ = 0;
-  }
 }
 
 std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
