@@ -47,14 +47,20 @@ bool GuardedMotion::meets_walls(std::uint32_t agent) const {
   return limits_.walls && commands_[agent].blocked_by != 0;
 }
 
-void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
+// At the step's start every agent has its commanded velocity and no displacement yet, so
+// the pair's offset is the one it was found with.
+void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const CandidatePair& pair = pairs_[index];
-  const Vec2 relative = velocity_after(pair.j) - velocity_after(pair.i);
+  const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
   // A pair that keeps its distance can neither meet nor press into contact (the general
-  // tests below say the same, at a cost paid by every pair of a waiting aggregate).
+  // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (relative.x == 0.0 && relative.y == 0.0) return;
-  const Vec2 offset = pair.offset + displacement_travelled(pair.j, from_time) -
-                      displacement_travelled(pair.i, from_time);
+  schedule_events(index, pair.offset, relative, 0.0);
+}
+
+void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
+                                    double from_time) {
+  const CandidatePair& pair = pairs_[index];
   auto push = [&](double time, Kind kind) {
     heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
     std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
@@ -113,10 +119,25 @@ void GuardedMotion::build_incidence() {
   incidence_built_ = true;
 }
 
+// Schedules the agent's pairs anew from `time` on (its own velocity and displacement looked
+// up once); pairs that keep their distance have no events.
 void GuardedMotion::reschedule(std::uint32_t agent, double time) {
   ++version_[agent];
   if (meets_walls(agent)) schedule_wall(agent, time);
-  for (const std::uint32_t end : incident_ends(agent)) schedule_pair(end >> 1, time);
+  const Vec2 velocity = velocity_after(agent);
+  const Vec2 travelled = displacement_travelled(agent, time);
+  for (const std::uint32_t end : incident_ends(agent)) {
+    const CandidatePair& pair = pairs_[end >> 1];
+    const bool agent_is_j = (end & 1) != 0;
+    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
+    const Vec2 other_velocity = velocity_after(other);
+    const Vec2 relative = agent_is_j ? velocity - other_velocity : other_velocity - velocity;
+    if (relative.x == 0.0 && relative.y == 0.0) continue;
+    const Vec2 other_travelled = displacement_travelled(other, time);
+    const Vec2 offset = agent_is_j ? pair.offset + travelled - other_travelled
+                                   : pair.offset + other_travelled - travelled;
+    schedule_events(end >> 1, offset, relative, time);
+  }
 }
 
 void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) {
@@ -169,13 +190,16 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
   // Squared distances above this have a square root above `touching` whatever the rounding:
   // bodies clearly apart are passed over without one.
   const double apart2 = touching * touching * (1.0 + kClearlyApart);
+  const Vec2 travelled = displacement_travelled(agent, time);
   for (const std::uint32_t end : incident_ends(agent)) {
     const CandidatePair& pair = pairs_[end >> 1];
-    const std::uint32_t other = (end & 1) ? pair.i : pair.j;
+    const bool agent_is_j = (end & 1) != 0;
+    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
     if (!blocks(agent, other)) continue;
-    const Vec2 from_i =
-        pair.offset + displacement_travelled(pair.j, time) - displacement_travelled(pair.i, time);
-    const Vec2 towards = (end & 1) ? Vec2{} - from_i : from_i;
+    const Vec2 other_travelled = displacement_travelled(other, time);
+    const Vec2 from_i = agent_is_j ? pair.offset + travelled - other_travelled
+                                   : pair.offset + other_travelled - travelled;
+    const Vec2 towards = agent_is_j ? Vec2{} - from_i : from_i;
     if (norm2(towards) > apart2) continue;
     const double distance = norm(towards);
     if (distance > touching || distance <= 0.0) continue;
@@ -248,7 +272,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   // agent; room for twice the pairs up front keeps the heap from growing step by step as
   // aggregates densify.
   if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair_at_start(k);
   if (limits_.walls) {
     for (std::uint32_t a = 0; a < commands.size(); ++a) {
       if (meets_walls(a)) schedule_wall(a, 0.0);

@@ -94,7 +94,10 @@ class GuardedMotion {
   };
 
   void reset(std::size_t agents);
-  void schedule_pair(std::uint32_t pair, double from_time);
+  void schedule_pair_at_start(std::uint32_t pair);
+  // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
+  // relative velocity then.
+  void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time);
   void schedule_wall(std::uint32_t agent, double from_time);
   void reschedule(std::uint32_t agent, double time);
   void change_leg(std::uint32_t agent, double time, Vec2 velocity);
