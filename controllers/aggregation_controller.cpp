@@ -124,32 +124,33 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
   mover_count_ = mover_count;
 }
 
+// Each searcher's list is read once: it joins the first waiting agent it perceives within s
+// (when joining is allowed), and the searchers within s that it could pair with are gathered
+// on the way (pair_searchers drops those where either side joined).
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
-  if (!rules_.join) return;
+  pairs_.clear();
+  const AgentState* previous = previous_.data();
+  const double radius = rules_.detection_radius;
+  const bool join = rules_.join;
   for (const std::uint32_t i : searchers_) {
     for (const Neighbour& nb : input.neighbours.of(i)) {
-      if (nb.distance > rules_.detection_radius) break;
-      if (previous_[nb.id] != AgentState::Wait) continue;
-      swarm.state[i] = AgentState::Wait;
-      settled_[i] = 1;
-      ++events.growths;
-      count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
-      break;
+      if (nb.distance > radius) break;
+      if (join && previous[nb.id] == AgentState::Wait) {
+        swarm.state[i] = AgentState::Wait;
+        settled_[i] = 1;
+        ++events.growths;
+        count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
+        break;
+      }
+      if (nb.id > i && searching(nb.id)) pairs_.push_back({nb.distance, i, nb.id});
     }
   }
 }
 
 void AggregationController::pair_searchers(const ControllerInput& input, SwarmState& swarm,
                                            EventCounts& events) {
-  pairs_.clear();
-  for (const std::uint32_t i : unsettled_) {
-    for (const Neighbour& nb : input.neighbours.of(i)) {
-      if (nb.distance > rules_.detection_radius) break;
-      if (nb.id > i && searching(nb.id) && !settled_[nb.id])
-        pairs_.push_back({nb.distance, i, nb.id});
-    }
-  }
+  std::erase_if(pairs_, [&](const SearchPair& p) { return settled_[p.a] || settled_[p.b]; });
   std::sort(pairs_.begin(), pairs_.end(), [](const SearchPair& x, const SearchPair& y) {
     if (x.distance != y.distance) return x.distance < y.distance;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
@@ -178,8 +179,8 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
 void AggregationController::steer_searchers(const ControllerInput& input, SwarmState& swarm,
                                             const CounterRng& rng) {
   const auto step = static_cast<std::uint64_t>(input.step);
-  for (const std::uint32_t i : unsettled_) {
-    if (settled_[i]) continue;  // paired
+  for (const std::uint32_t i : searchers_) {
+    if (settled_[i]) continue;  // joined or paired
     if (rules_.approach_radius) {
       const Neighbour* target = nullptr;
       for (const Neighbour& nb : input.neighbours.of(i)) {
@@ -281,19 +282,6 @@ void AggregationController::list_by_state(std::size_t n) {
   leavers_.count = leaving;
 }
 
-// The searchers that joining left searching, in index order, without branches.
-void AggregationController::list_unsettled() {
-  if (unsettled_.slots.size() != searchers_.slots.size())
-    unsettled_.slots.resize(searchers_.slots.size());
-  std::size_t count = 0;
-  std::uint32_t* out = unsettled_.slots.data();
-  for (const std::uint32_t i : searchers_) {
-    out[count] = i;
-    count += settled_[i] == 0;
-  }
-  unsettled_.count = count;
-}
-
 void AggregationController::decide(const ControllerInput& input, SwarmState& swarm,
                                    const CounterRng& rng, std::span<MotionCommand> commands,
                                    EventCounts& events) {
@@ -311,7 +299,6 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
   update_waiting(input, swarm, rng, events);
   join_waiting(input, swarm, events);
-  list_unsettled();
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);

@@ -59,7 +59,6 @@ class AggregationController final : public Controller {
   std::optional<Vec2> escape_direction(std::uint32_t agent, const ControllerInput& input) const;
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
   void list_by_state(std::size_t n);
-  void list_unsettled();
 
   AggregationRules rules_;
   double standing_norm2_;  // compaction: squared net forces below it stand (standing_norm2)
@@ -71,12 +70,10 @@ class AggregationController final : public Controller {
   // (compaction); the rest stand. Kept at full length, like IndexList.
   std::vector<Mover> movers_;
   std::size_t mover_count_ = 0;
-  // Agents by the state they start the decision in (index order), and the searchers that
-  // did not join a waiting agent.
+  // Agents by the state they start the decision in (index order).
   IndexList searchers_;
   IndexList waiters_;
   IndexList leavers_;
-  IndexList unsettled_;
 };
 
 }  // namespace swarmagg
