@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace swarmagg {
 
@@ -57,17 +58,20 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
   const double p_for_all = leave_probability(rule, 1, 0);
   // Under join, the members of an agent's aggregate are the waiting agents of its aggregate
   // (none when it is in none); otherwise its waiting partner only.
+  // A waiting neighbour is a member when its key (aggregate, or under join: false its index)
+  // is the agent's own key; no key is below -1, so kNoMembers matches nobody.
+  constexpr std::int32_t kNoMembers = std::numeric_limits<std::int32_t>::min();
   const auto look_around = [&](std::uint32_t agent, std::int32_t partner) {
     const std::int32_t own = join ? aggregate[agent] : partner;  // negative: none
+    const std::int32_t own_key = compaction.enabled && own >= 0 ? own : kNoMembers;
     WaitingView view;
     for (const Neighbour& nb : neighbours.of(agent)) {
       if (nb.distance > radius) break;
       ++view.perceived;
       const bool waited = previous[nb.id] == AgentState::Wait;
       view.sees_waiting |= waited;
-      if (!compaction.enabled || !waited || own < 0) continue;
       const std::int32_t key = join ? aggregate[nb.id] : static_cast<std::int32_t>(nb.id);
-      if (key == own) add_spring_force(compaction, nb, view.force);
+      if (waited & (key == own_key)) add_spring_force(compaction, nb, view.force);
     }
     return view;
   };
@@ -178,7 +182,10 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
 
 void AggregationController::steer_searchers(const ControllerInput& input, SwarmState& swarm,
                                             const CounterRng& rng) {
-  const auto step = static_cast<std::uint64_t>(input.step);
+  // Bayindir's searchers neither approach nor tumble: they keep their heading.
+  const bool tumbles = rules_.tumble > 0.0;
+  if (!rules_.approach_radius && !tumbles) return;
+  const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
   for (const std::uint32_t i : searchers_) {
     if (settled_[i]) continue;  // joined or paired
     if (rules_.approach_radius) {
@@ -197,7 +204,7 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
       }
       swarm.state[i] = AgentState::Go;  // lost them: keep going the way it was heading
     }
-    if (rules_.tumble > 0.0 && rng.uniform(step, i, Draw::Tumble) < rules_.tumble) {
+    if (tumbles && draws.uniform(i, Draw::Tumble) < rules_.tumble) {
       swarm.heading[i] = random_heading(rng, input.step, i);
     }
   }
