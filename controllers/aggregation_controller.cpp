@@ -267,25 +267,32 @@ void AggregationController::write_commands(const SwarmState& swarm,
 }
 
 // Index lists of the agents by the state they start the decision in, filled without
-// branches (each index is written to every list; only the matching list's end advances).
+// branches: each index is written to every list, and only the matching list's end advances.
+// The searching and waiting ends share one 64-bit counter (32 bits each, as indices are
+// 32-bit); the ends advance by table lookups.
 void AggregationController::list_by_state(std::size_t n) {
   for (IndexList* list : {&searchers_, &waiters_, &leavers_}) {
     if (list->slots.size() != n) list->slots.resize(n);
   }
-  std::size_t searching = 0, waiting = 0, leaving = 0;
+  constexpr std::uint64_t kSearcher = 1, kWaiter = std::uint64_t{1} << 32;
+  // Indexed by AgentState: Go, Wait, Leave, Approach (see write_commands).
+  constexpr std::uint64_t kAdvance[kAgentStateCount] = {kSearcher, kWaiter, 0, kSearcher};
+  constexpr std::size_t kLeaver[kAgentStateCount] = {0, 0, 1, 0};
+  std::uint64_t searching_waiting = 0;
+  std::size_t leaving = 0;
   const AgentState* previous = previous_.data();
   std::uint32_t* s = searchers_.slots.data();
   std::uint32_t* w = waiters_.slots.data();
   std::uint32_t* l = leavers_.slots.data();
   for (std::uint32_t i = 0; i < n; ++i) {
     const AgentState state = previous[i];
-    s[searching] = w[waiting] = l[leaving] = i;
-    searching += (state == AgentState::Go) | (state == AgentState::Approach);
-    waiting += state == AgentState::Wait;
-    leaving += state == AgentState::Leave;
+    s[searching_waiting & 0xFFFFFFFFu] = w[searching_waiting >> 32] = l[leaving] = i;
+    const unsigned index = static_cast<std::uint8_t>(state) & 3u;
+    searching_waiting += kAdvance[index];
+    leaving += kLeaver[index];
   }
-  searchers_.count = searching;
-  waiters_.count = waiting;
+  searchers_.count = searching_waiting & 0xFFFFFFFFu;
+  waiters_.count = searching_waiting >> 32;
   leavers_.count = leaving;
 }
 
