@@ -56,10 +56,9 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
   // The constant law's probability is the same for every size.
   const bool same_for_all = rule.law == LeaveLaw::Constant;
   const double p_for_all = leave_probability(rule, 1, 0);
-  // Under join, the members of an agent's aggregate are the waiting agents of its aggregate
-  // (none when it is in none); otherwise its waiting partner only.
-  // A waiting neighbour is a member when its key (aggregate, or under join: false its index)
-  // is the agent's own key; no key is below -1, so kNoMembers matches nobody.
+  // The members that pull are the waiting agents of its aggregate (none when it is in none),
+  // under join: false its waiting partner only: a waiting neighbour whose key (aggregate, or
+  // index) is the agent's own key. No key is below -1, so kNoMembers matches nobody.
   constexpr std::int32_t kNoMembers = std::numeric_limits<std::int32_t>::min();
   const auto look_around = [&](std::uint32_t agent, std::int32_t partner) {
     const std::int32_t own = join ? aggregate[agent] : partner;  // negative: none
@@ -92,7 +91,7 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
         (static_cast<std::uint32_t>(partner) & partner_mask) | (agent & ~partner_mask);
     const bool partner_waits = has_partner & (previous[partner_or_self] == AgentState::Wait);
     if (partner != kNoPartner && !partner_waits) swarm.partner[agent] = kNoPartner;
-    const bool isolated = rules_.join ? !view.sees_waiting : !partner_waits;
+    const bool isolated = join ? !view.sees_waiting : !partner_waits;
     if (rules_.resume_when_isolated && isolated) {
       swarm.state[agent] = AgentState::Go;
       swarm.partner[agent] = kNoPartner;
@@ -110,7 +109,7 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
         swarm.leave_time_left[agent] = rules_.leave_timeout;
         if (const auto away = escape_direction(agent, input)) {
           swarm.heading[agent] = *away;
-        } else if (rules_.compaction.enabled) {
+        } else if (compaction.enabled) {
           swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
         }
         count_leave(input.aggregates.aggregate_of[agent], leavers_left_, events);
@@ -316,6 +315,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);
+  // Compaction: the waiting agents whose spring force may move them (update_waiting).
   for (std::size_t k = 0; k < mover_count_; ++k) {
     const Mover& m = movers_[k];
     commands[m.agent].velocity =

@@ -29,8 +29,6 @@ enum class Draw : std::uint32_t {
 // done once, for the controllers that draw for every agent of a step.
 class StepRng {
  public:
-  constexpr explicit StepRng(std::uint64_t step_hash) : step_hash_(step_hash) {}
-
   constexpr std::uint64_t bits(std::uint64_t agent, Draw purpose, std::uint64_t extra = 0) const {
     const std::uint64_t h = mix64(step_hash_ ^ (agent * 0xD1B54A32D192ED03ull));
     return mix64(h ^ (static_cast<std::uint64_t>(purpose) << 32) ^ extra);
@@ -42,6 +40,9 @@ class StepRng {
   }
 
  private:
+  friend class CounterRng;  // CounterRng::at_step is the one way to make one
+  constexpr explicit StepRng(std::uint64_t step_hash) : step_hash_(step_hash) {}
+
   std::uint64_t step_hash_;
 };
 
