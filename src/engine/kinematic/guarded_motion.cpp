@@ -147,6 +147,7 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) 
     leg_stamp_[agent] = step_stamp_;
     slides_[agent] = 0;
     walls_touched_[agent] = 0;
+    bent_agents_.push_back(agent);
   }
   leg_[agent] = {time, origin, velocity};
   reschedule(agent, time);
@@ -254,6 +255,7 @@ void GuardedMotion::reset(std::size_t agents) {
     step_stamp_ = 0;
   }
   ++step_stamp_;
+  bent_agents_.clear();
 }
 
 std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,

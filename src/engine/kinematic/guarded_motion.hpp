@@ -62,6 +62,9 @@ class GuardedMotion {
                         const MotionLimits& limits, std::span<const Vec2> positions = {});
   // The displacement of `agent` over the step resolved last.
   Vec2 displacement(std::uint32_t agent) const { return displacement_travelled(agent, limits_.dt); }
+  // The agents whose motion changed during the step resolved last (each once): all others
+  // moved with their commanded velocity for the whole step.
+  std::span<const std::uint32_t> bent_agents() const { return bent_agents_; }
   // The walls `agent` touched during the step resolved last (WallContact bits).
   std::uint8_t wall_contacts(std::uint32_t agent) const {
     return leg_stamp_[agent] == step_stamp_ ? walls_touched_[agent] : 0;
@@ -138,6 +141,7 @@ class GuardedMotion {
   std::uint32_t step_stamp_ = 0;
   AgentArray<Leg> leg_;
   AgentArray<std::uint32_t> leg_stamp_;
+  std::vector<std::uint32_t> bent_agents_;
   AgentArray<std::uint8_t> slides_;
   AgentArray<std::uint8_t> walls_touched_;
   // Versions tell stale events from current ones: they count up across steps and are never
