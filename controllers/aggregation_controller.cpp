@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace swarmagg {
 
@@ -12,29 +13,6 @@ bool AggregationController::searching(std::uint32_t agent) const {
 
 bool AggregationController::may_join(std::uint32_t agent) const {
   return searching(agent) || (rules_.join && previous_[agent] == AgentState::Wait);
-}
-
-int AggregationController::perceived_within_s(std::uint32_t agent,
-                                              const ControllerInput& input) const {
-  int count = 0;
-  for (const Neighbour& n : input.neighbours.of(agent)) {
-    if (n.distance > rules_.detection_radius) break;
-    ++count;
-  }
-  return count;
-}
-
-bool AggregationController::isolated(std::uint32_t agent, const ControllerInput& input,
-                                     const SwarmState& swarm) const {
-  if (!rules_.join) {
-    const std::int32_t partner = swarm.partner[agent];
-    return partner == kNoPartner || previous_[partner] != AgentState::Wait;
-  }
-  for (const Neighbour& n : input.neighbours.of(agent)) {
-    if (n.distance > rules_.detection_radius) break;
-    if (previous_[n.id] == AgentState::Wait) return false;
-  }
-  return true;
 }
 
 void AggregationController::update_leaving(std::uint32_t agent, const ControllerInput& input,
@@ -48,65 +26,134 @@ void AggregationController::update_leaving(std::uint32_t agent, const Controller
   swarm.heading[agent] = random_heading(rng, input.step, agent);
 }
 
-void AggregationController::update_waiting(std::uint32_t agent, const ControllerInput& input,
-                                           SwarmState& swarm, const CounterRng& rng) {
-  // A pair dissolves when a partner stops waiting (SPEC 3, 4): a waiting agent that stays
-  // (isolated_wait: stay) must not keep the link, or the partner's next pair would be linked
-  // to it too, making one aggregate of three under join: false.
-  const std::int32_t partner = swarm.partner[agent];
-  if (partner != kNoPartner && previous_[partner] != AgentState::Wait) {
-    swarm.partner[agent] = kNoPartner;
-  }
-  if (rules_.resume_when_isolated && isolated(agent, input, swarm)) {
-    swarm.state[agent] = AgentState::Go;
-    swarm.partner[agent] = kNoPartner;
-    swarm.heading[agent] = random_heading(rng, input.step, agent);
-    return;
-  }
-  if (!rules_.leave) return;
-  const double u = rng.uniform(static_cast<std::uint64_t>(input.step), agent, Draw::Leave);
+namespace {
+
+// What a waiting agent perceives within s, read in one pass over its list.
+struct WaitingView {
+  int perceived = 0;          // agents within s
+  bool sees_waiting = false;  // one of them waited
+  Vec2 force;                 // spring force of the waiting members among them (compaction)
+};
+
+}  // namespace
+
+// Each agent that starts the decision waiting, in index order (leave events are counted in
+// that order). Its neighbour list is read once, for isolation, the perceived count and the
+// compaction force; the force applies if it goes on waiting, as nothing later in the decision
+// changes a waiting agent's state or partner.
+void AggregationController::update_waiting(const ControllerInput& input, SwarmState& swarm,
+                                           const CounterRng& rng, EventCounts& events) {
+  const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
+  const AgentState* previous = previous_.data();
+  const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
+  const NeighbourLists& neighbours = input.neighbours;
+  const double radius = rules_.detection_radius;
+  const bool join = rules_.join;
+  const CompactionRule& compaction = rules_.compaction;
   const LeaveRule& rule = rules_.leave_rule;
-  const int size = input.aggregates.size_of_agent[agent];
   const bool counts_neighbours =
       rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
-  const int perceived = counts_neighbours ? perceived_within_s(agent, input) : 0;
-  if (u >= leave_probability(rule, size, perceived)) return;
-  swarm.state[agent] = AgentState::Leave;
-  swarm.partner[agent] = kNoPartner;
-  swarm.leave_time_left[agent] = rules_.leave_timeout;
-  if (const auto away = escape_direction(agent, input)) {
-    swarm.heading[agent] = *away;
-  } else if (rules_.compaction.enabled) {
-    swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
+  // The constant law's probability is the same for every size.
+  const bool same_for_all = rule.law == LeaveLaw::Constant;
+  const double p_for_all = leave_probability(rule, 1, 0);
+  // The members that pull are the waiting agents of its aggregate (none when it is in none),
+  // under join: false its waiting partner only: a waiting neighbour whose key (aggregate, or
+  // index) is the agent's own key. No key is below -1, so kNoMembers matches nobody.
+  constexpr std::int32_t kNoMembers = std::numeric_limits<std::int32_t>::min();
+  const auto look_around = [&](std::uint32_t agent, std::int32_t partner) {
+    const std::int32_t own = join ? aggregate[agent] : partner;  // negative: none
+    const std::int32_t own_key = compaction.enabled && own >= 0 ? own : kNoMembers;
+    WaitingView view;
+    for (const Neighbour& nb : neighbours.of(agent)) {
+      if (nb.distance > radius) break;
+      ++view.perceived;
+      const bool waited = previous[nb.id] == AgentState::Wait;
+      view.sees_waiting |= waited;
+      const std::int32_t key = join ? aggregate[nb.id] : static_cast<std::int32_t>(nb.id);
+      if (waited & (key == own_key)) add_spring_force(compaction, nb, view.force);
+    }
+    return view;
+  };
+  if (movers_.size() != swarm.size()) movers_.resize(swarm.size());
+  Mover* movers = movers_.data();
+  std::size_t mover_count = 0;
+  for (const std::uint32_t agent : waiters_) {
+    const std::int32_t partner = swarm.partner[agent];
+    const WaitingView view = look_around(agent, partner);
+    // A pair dissolves when a partner stops waiting (SPEC 3, 4): a waiting agent that stays
+    // (isolated_wait: stay) must not keep the link, or the partner's next pair would be
+    // linked to it too, making one aggregate of three under join: false.
+    // Without a partner, its own state is read in the partner's place: selected by a mask,
+    // as whether a waiting agent has a partner is a coin toss to the branch predictor.
+    const bool has_partner = partner != kNoPartner;
+    const std::uint32_t partner_mask = 0u - static_cast<std::uint32_t>(has_partner);
+    const std::uint32_t partner_or_self =
+        (static_cast<std::uint32_t>(partner) & partner_mask) | (agent & ~partner_mask);
+    const bool partner_waits = has_partner & (previous[partner_or_self] == AgentState::Wait);
+    if (partner != kNoPartner && !partner_waits) swarm.partner[agent] = kNoPartner;
+    const bool isolated = join ? !view.sees_waiting : !partner_waits;
+    if (rules_.resume_when_isolated && isolated) {
+      swarm.state[agent] = AgentState::Go;
+      swarm.partner[agent] = kNoPartner;
+      swarm.heading[agent] = random_heading(rng, input.step, agent);
+      continue;
+    }
+    if (rules_.leave) {
+      const double u = draws.uniform(agent, Draw::Leave);
+      const double p = same_for_all ? p_for_all
+                                    : leave_probability(rule, input.aggregates.size_of_agent[agent],
+                                                        counts_neighbours ? view.perceived : 0);
+      if (u < p) {
+        swarm.state[agent] = AgentState::Leave;
+        swarm.partner[agent] = kNoPartner;
+        swarm.leave_time_left[agent] = rules_.leave_timeout;
+        if (const auto away = escape_direction(agent, input)) {
+          swarm.heading[agent] = *away;
+        } else if (compaction.enabled) {
+          swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
+        }
+        count_leave(input.aggregates.aggregate_of[agent], leavers_left_, events);
+        continue;
+      }
+    }
+    // Goes on waiting. Most stand (force below the tolerance), and write_commands gives them
+    // +0; the rest move at random to the branch predictor, so each is written to the next
+    // slot, which only those that may move keep (squared forces below standing_norm2_
+    // surely stand).
+    if (!compaction.enabled) continue;
+    movers[mover_count] = {agent, view.force};
+    mover_count += !(norm2(view.force) < standing_norm2_);
   }
+  mover_count_ = mover_count;
 }
 
+// Each searcher's list is read once: it joins the first waiting agent it perceives within s
+// (when joining is allowed), and the searchers within s that it could pair with are gathered
+// on the way (pair_searchers drops those where either side joined).
 void AggregationController::join_waiting(const ControllerInput& input, SwarmState& swarm,
                                          EventCounts& events) {
-  if (!rules_.join) return;
+  pairs_.clear();
+  const AgentState* previous = previous_.data();
+  const double radius = rules_.detection_radius;
+  const bool join = rules_.join;
   for (const std::uint32_t i : searchers_) {
     for (const Neighbour& nb : input.neighbours.of(i)) {
-      if (nb.distance > rules_.detection_radius) break;
-      if (previous_[nb.id] != AgentState::Wait) continue;
-      swarm.state[i] = AgentState::Wait;
-      settled_[i] = 1;
-      ++events.growths;
-      count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
-      break;
+      if (nb.distance > radius) break;
+      if (join && previous[nb.id] == AgentState::Wait) {
+        swarm.state[i] = AgentState::Wait;
+        settled_[i] = 1;
+        ++events.growths;
+        count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
+        break;
+      }
+      if (nb.id > i && searching(nb.id)) pairs_.push_back({nb.distance, i, nb.id});
     }
   }
 }
 
 void AggregationController::pair_searchers(const ControllerInput& input, SwarmState& swarm,
                                            EventCounts& events) {
-  pairs_.clear();
-  for (const std::uint32_t i : unsettled_) {
-    for (const Neighbour& nb : input.neighbours.of(i)) {
-      if (nb.distance > rules_.detection_radius) break;
-      if (nb.id > i && searching(nb.id) && !settled_[nb.id])
-        pairs_.push_back({nb.distance, i, nb.id});
-    }
-  }
+  std::erase_if(pairs_, [&](const SearchPair& p) { return settled_[p.a] || settled_[p.b]; });
   std::sort(pairs_.begin(), pairs_.end(), [](const SearchPair& x, const SearchPair& y) {
     if (x.distance != y.distance) return x.distance < y.distance;
     return x.a != y.a ? x.a < y.a : x.b < y.b;
@@ -134,9 +181,12 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
 
 void AggregationController::steer_searchers(const ControllerInput& input, SwarmState& swarm,
                                             const CounterRng& rng) {
-  const auto step = static_cast<std::uint64_t>(input.step);
-  for (const std::uint32_t i : unsettled_) {
-    if (settled_[i]) continue;  // paired
+  // Bayindir's searchers neither approach nor tumble: they keep their heading.
+  const bool tumbles = rules_.tumble > 0.0;
+  if (!rules_.approach_radius && !tumbles) return;
+  const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
+  for (const std::uint32_t i : searchers_) {
+    if (settled_[i]) continue;  // joined or paired
     if (rules_.approach_radius) {
       const Neighbour* target = nullptr;
       for (const Neighbour& nb : input.neighbours.of(i)) {
@@ -153,7 +203,7 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
       }
       swarm.state[i] = AgentState::Go;  // lost them: keep going the way it was heading
     }
-    if (rules_.tumble > 0.0 && rng.uniform(step, i, Draw::Tumble) < rules_.tumble) {
+    if (tumbles && draws.uniform(i, Draw::Tumble) < rules_.tumble) {
       swarm.heading[i] = random_heading(rng, input.step, i);
     }
   }
@@ -167,33 +217,6 @@ std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
                                                             const ControllerInput& input) const {
   return heading_away(input.neighbours.of(agent), rules_.detection_radius,
                       enclosed_fraction(rules_.compaction));
-}
-
-// SPEC 3's spring force from the waiting members of the agent's aggregate it perceives
-// (under join: false its partner only).
-Vec2 AggregationController::compaction_velocity(std::uint32_t agent, const ControllerInput& input,
-                                                const SwarmState& swarm) const {
-  const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
-  const std::int32_t own = aggregate[agent];
-  const std::int32_t partner = swarm.partner[agent];
-  const AgentState* previous = previous_.data();
-  const bool join = rules_.join;
-  return swarmagg::compaction_velocity(rules_.compaction, input.neighbours.of(agent),
-                                       rules_.detection_radius, rules_.speed, [=](AgentId id) {
-                                         const bool member =
-                                             join ? own >= 0 && aggregate[id] == own
-                                                  : static_cast<std::int32_t>(id) == partner;
-                                         return member && previous[id] == AgentState::Wait;
-                                       });
-}
-
-// Overwrites the standing command of each agent that waited and goes on waiting.
-void AggregationController::compact(const ControllerInput& input, const SwarmState& swarm,
-                                    std::span<MotionCommand> commands) const {
-  for (const std::uint32_t i : waiters_) {
-    if (swarm.state[i] != AgentState::Wait) continue;
-    commands[i].velocity = compaction_velocity(i, input, swarm);
-  }
 }
 
 // The command of each state, looked up rather than branched on: states of neighbouring
@@ -219,7 +242,7 @@ void AggregationController::write_commands(const SwarmState& swarm,
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
   // other, so neither compaction nor a body engine's shoving can push one through another.
-  // Waiting agents stand here; compact() gives those that close up their velocity.
+  // Waiting agents stand here; those that close up (movers_) get their velocity after.
   const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
                                                 {0, 0, wait_block, 0},
                                                 {kMoves, 0, kWaiting, kWaiting},
@@ -243,39 +266,33 @@ void AggregationController::write_commands(const SwarmState& swarm,
 }
 
 // Index lists of the agents by the state they start the decision in, filled without
-// branches (each index is written to every list; only the matching list's end advances).
+// branches: each index is written to every list, and only the matching list's end advances.
+// The searching and waiting ends share one 64-bit counter (32 bits each, as indices are
+// 32-bit); the ends advance by table lookups.
 void AggregationController::list_by_state(std::size_t n) {
   for (IndexList* list : {&searchers_, &waiters_, &leavers_}) {
     if (list->slots.size() != n) list->slots.resize(n);
   }
-  std::size_t searching = 0, waiting = 0, leaving = 0;
+  constexpr std::uint64_t kSearcher = 1, kWaiter = std::uint64_t{1} << 32;
+  // Indexed by AgentState: Go, Wait, Leave, Approach (see write_commands).
+  constexpr std::uint64_t kAdvance[kAgentStateCount] = {kSearcher, kWaiter, 0, kSearcher};
+  constexpr std::size_t kLeaver[kAgentStateCount] = {0, 0, 1, 0};
+  std::uint64_t searching_waiting = 0;
+  std::size_t leaving = 0;
   const AgentState* previous = previous_.data();
   std::uint32_t* s = searchers_.slots.data();
   std::uint32_t* w = waiters_.slots.data();
   std::uint32_t* l = leavers_.slots.data();
   for (std::uint32_t i = 0; i < n; ++i) {
     const AgentState state = previous[i];
-    s[searching] = w[waiting] = l[leaving] = i;
-    searching += (state == AgentState::Go) | (state == AgentState::Approach);
-    waiting += state == AgentState::Wait;
-    leaving += state == AgentState::Leave;
+    s[searching_waiting & 0xFFFFFFFFu] = w[searching_waiting >> 32] = l[leaving] = i;
+    const unsigned index = static_cast<std::uint8_t>(state) & 3u;
+    searching_waiting += kAdvance[index];
+    leaving += kLeaver[index];
   }
-  searchers_.count = searching;
-  waiters_.count = waiting;
+  searchers_.count = searching_waiting & 0xFFFFFFFFu;
+  waiters_.count = searching_waiting >> 32;
   leavers_.count = leaving;
-}
-
-// The searchers that joining left searching, in index order, without branches.
-void AggregationController::list_unsettled() {
-  if (unsettled_.slots.size() != searchers_.slots.size())
-    unsettled_.slots.resize(searchers_.slots.size());
-  std::size_t count = 0;
-  std::uint32_t* out = unsettled_.slots.data();
-  for (const std::uint32_t i : searchers_) {
-    out[count] = i;
-    count += settled_[i] == 0;
-  }
-  unsettled_.count = count;
 }
 
 void AggregationController::decide(const ControllerInput& input, SwarmState& swarm,
@@ -291,19 +308,19 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   turn_at_walls(input.reflections, swarm);
   list_by_state(n);
   // Leaving and waiting agents decide from the previous states only, so each group can be
-  // walked on its own (in index order, as leave events are counted in that order).
+  // walked on its own.
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
-  for (const std::uint32_t i : waiters_) {
-    update_waiting(i, input, swarm, rng);
-    if (swarm.state[i] == AgentState::Leave)
-      count_leave(input.aggregates.aggregate_of[i], leavers_left_, events);
-  }
+  update_waiting(input, swarm, rng, events);
   join_waiting(input, swarm, events);
-  list_unsettled();
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);
-  if (rules_.compaction.enabled) compact(input, swarm, commands);
+  // Compaction: the waiting agents whose spring force may move them (update_waiting).
+  for (std::size_t k = 0; k < mover_count_; ++k) {
+    const Mover& m = movers_[k];
+    commands[m.agent].velocity =
+        spring_velocity(rules_.compaction, m.force, norm(m.force), rules_.speed);
+  }
 }
 
 }  // namespace swarmagg

@@ -20,7 +20,8 @@ namespace swarmagg {
 
 class AggregationController final : public Controller {
  public:
-  explicit AggregationController(const AggregationRules& rules) : rules_(rules) {}
+  explicit AggregationController(const AggregationRules& rules)
+      : rules_(rules), standing_norm2_(standing_norm2(rules.compaction.tolerance)) {}
 
   void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
               std::span<MotionCommand> commands, EventCounts& events) override;
@@ -40,38 +41,39 @@ class AggregationController final : public Controller {
     std::uint32_t b;
   };
 
+  struct Mover {
+    std::uint32_t agent;
+    Vec2 force;  // the net spring force on it
+  };
+
   bool searching(std::uint32_t agent) const;
   bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
-  int perceived_within_s(std::uint32_t agent, const ControllerInput& input) const;
-  bool isolated(std::uint32_t agent, const ControllerInput& input, const SwarmState& swarm) const;
 
   void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
                       const CounterRng& rng);
-  void update_waiting(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
-                      const CounterRng& rng);
+  void update_waiting(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
+                      EventCounts& events);
   void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);
   std::optional<Vec2> escape_direction(std::uint32_t agent, const ControllerInput& input) const;
-  Vec2 compaction_velocity(std::uint32_t agent, const ControllerInput& input,
-                           const SwarmState& swarm) const;
   void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
-  void compact(const ControllerInput& input, const SwarmState& swarm,
-               std::span<MotionCommand> commands) const;
   void list_by_state(std::size_t n);
-  void list_unsettled();
 
   AggregationRules rules_;
+  double standing_norm2_;  // compaction: squared net forces below it stand (standing_norm2)
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
   std::vector<SearchPair> pairs_;
   std::vector<std::int32_t> leavers_left_;  // per aggregate: members not yet counted leaving
-  // Agents by the state they start the decision in (index order), and the searchers that
-  // did not join a waiting agent.
+  // Waiting agents that go on waiting under a net spring force that may move them
+  // (compaction); the rest stand. Kept at full length, like IndexList.
+  std::vector<Mover> movers_;
+  std::size_t mover_count_ = 0;
+  // Agents by the state they start the decision in (index order).
   IndexList searchers_;
   IndexList waiters_;
   IndexList leavers_;
-  IndexList unsettled_;
 };
 
 }  // namespace swarmagg

@@ -36,6 +36,27 @@ inline double enclosed_fraction(const CompactionRule& rule) {
   return rule.enabled ? kEnclosedFraction : 0.0;
 }
 
+// Adds one member's share of the spring force: a pull when it stands farther than `spacing`,
+// a push when nearer; none from a member at the agent's very centre (no direction).
+inline void add_spring_force(const CompactionRule& rule, const Neighbour& member, Vec2& force) {
+  if (member.distance <= 0.0) return;
+  force += member.offset * ((member.distance - rule.spacing) / member.distance);
+}
+
+// The velocity a net spring force of norm `magnitude` asks for: at most `speed`, exactly zero
+// below the tolerance.
+inline Vec2 spring_velocity(const CompactionRule& rule, Vec2 force, double magnitude,
+                            double speed) {
+  if (magnitude < rule.tolerance || magnitude <= 0.0) return {};
+  return force * (std::min(speed, rule.gain * magnitude) / magnitude);
+}
+
+// A squared norm below which norm() of a force is certainly under `tolerance` (0 when the
+// tolerance is not positive), so that most waiting agents, which stand, skip the square
+// root; at or above it spring_velocity's exact test decides. sqrt is correctly rounded, hence
+// monotone, so every squared norm below one whose root is under the tolerance has one too.
+double standing_norm2(double tolerance);
+
 // The spring force on an agent from the neighbours within `radius` (nearest first) that
 // `is_member(id)` accepts (waiting members of its aggregate, or its partner), turned into a
 // velocity of at most `speed`; exactly zero when the net force is below the tolerance.
@@ -45,12 +66,9 @@ Vec2 compaction_velocity(const CompactionRule& rule, std::span<const Neighbour> 
   Vec2 force;
   for (const Neighbour& nb : neighbours) {
     if (nb.distance > radius) break;
-    if (!is_member(nb.id) || nb.distance <= 0.0) continue;
-    force += nb.offset * ((nb.distance - rule.spacing) / nb.distance);
+    if (is_member(nb.id)) add_spring_force(rule, nb, force);
   }
-  const double magnitude = norm(force);
-  if (magnitude < rule.tolerance || magnitude <= 0.0) return {};
-  return force * (std::min(speed, rule.gain * magnitude) / magnitude);
+  return spring_velocity(rule, force, norm(force), speed);
 }
 
 }  // namespace swarmagg

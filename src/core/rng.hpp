@@ -25,6 +25,27 @@ enum class Draw : std::uint32_t {
   EnclosedLeave = 6,  // the heading of a leaver with neighbours on all sides
 };
 
+// The draws of one step: CounterRng::bits and uniform with the step's share of the hash
+// done once, for the controllers that draw for every agent of a step.
+class StepRng {
+ public:
+  constexpr std::uint64_t bits(std::uint64_t agent, Draw purpose, std::uint64_t extra = 0) const {
+    const std::uint64_t h = mix64(step_hash_ ^ (agent * 0xD1B54A32D192ED03ull));
+    return mix64(h ^ (static_cast<std::uint64_t>(purpose) << 32) ^ extra);
+  }
+
+  // Uniform in [0, 1) with 53 random bits.
+  constexpr double uniform(std::uint64_t agent, Draw purpose, std::uint64_t extra = 0) const {
+    return static_cast<double>(bits(agent, purpose, extra) >> 11) * 0x1.0p-53;
+  }
+
+ private:
+  friend class CounterRng;  // CounterRng::at_step is the one way to make one
+  constexpr explicit StepRng(std::uint64_t step_hash) : step_hash_(step_hash) {}
+
+  std::uint64_t step_hash_;
+};
+
 class CounterRng {
  public:
   constexpr CounterRng() = default;
@@ -35,18 +56,17 @@ class CounterRng {
     return CounterRng(mix64(mix64(seed) ^ mix64(index + 0x5851F42D4C957F2Dull)));
   }
 
+  constexpr StepRng at_step(std::uint64_t step) const { return StepRng(mix64(key_ ^ step)); }
+
   constexpr std::uint64_t bits(std::uint64_t step, std::uint64_t agent, Draw purpose,
                                std::uint64_t extra = 0) const {
-    std::uint64_t h = mix64(key_ ^ step);
-    h = mix64(h ^ (agent * 0xD1B54A32D192ED03ull));
-    h = mix64(h ^ (static_cast<std::uint64_t>(purpose) << 32) ^ extra);
-    return h;
+    return at_step(step).bits(agent, purpose, extra);
   }
 
   // Uniform in [0, 1) with 53 random bits.
   constexpr double uniform(std::uint64_t step, std::uint64_t agent, Draw purpose,
                            std::uint64_t extra = 0) const {
-    return static_cast<double>(bits(step, agent, purpose, extra) >> 11) * 0x1.0p-53;
+    return at_step(step).uniform(agent, purpose, extra);
   }
 
   constexpr std::uint64_t key() const { return key_; }

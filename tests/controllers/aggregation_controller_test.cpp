@@ -308,6 +308,20 @@ TEST(Compaction, BelowTheToleranceAWaitingAgentStandsExactlyStill) {
   EXPECT_EQ(f.commands[c].velocity.y, 0.0);
 }
 
+// A net force exactly at the tolerance moves the agent: only forces below it stand, however
+// the controller shortcuts the standing ones. At distance 3, (3 - 2) / 3 * 3 is exactly 1.
+TEST(Compaction, AForceExactlyAtTheToleranceMoves) {
+  WorldSpec spec = bayindir(true, false, 0.0);
+  spec.controller.compaction.tolerance = 1.0;
+  spec.controller.compaction.gain = 0.5;
+  ControllerFixture f(spec);
+  const auto a = f.add(10, 10, AgentState::Wait);
+  const auto b = f.add(13, 10, AgentState::Wait);
+  f.decide();
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.5, 0.0}));
+  EXPECT_EQ(f.commands[b].velocity, (Vec2{-0.5, 0.0}));
+}
+
 TEST(Compaction, OnlyWaitingMembersPullAndTooCloseOnesPush) {
   ControllerFixture f(bayindir(true, false, 0.0));
   f.spec.controller.compaction.spacing = 2.5;

@@ -13,6 +13,8 @@ constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
+// Relative margin on a squared distance far beyond rounding (a few 1e-16).
+constexpr double kClearlyApart = 1e-12;
 
 }  // namespace
 
@@ -45,14 +47,20 @@ bool GuardedMotion::meets_walls(std::uint32_t agent) const {
   return limits_.walls && commands_[agent].blocked_by != 0;
 }
 
-void GuardedMotion::schedule_pair(std::uint32_t index, double from_time) {
+// At the step's start every agent has its commanded velocity and no displacement yet, so
+// the pair's offset is the one it was found with.
+void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const CandidatePair& pair = pairs_[index];
-  const Vec2 relative = velocity_after(pair.j) - velocity_after(pair.i);
+  const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
   // A pair that keeps its distance can neither meet nor press into contact (the general
-  // tests below say the same, at a cost paid by every pair of a waiting aggregate).
+  // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (relative.x == 0.0 && relative.y == 0.0) return;
-  const Vec2 offset = pair.offset + displacement_travelled(pair.j, from_time) -
-                      displacement_travelled(pair.i, from_time);
+  schedule_events(index, pair.offset, relative, 0.0);
+}
+
+void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
+                                    double from_time) {
+  const CandidatePair& pair = pairs_[index];
   auto push = [&](double time, Kind kind) {
     heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
     std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
@@ -87,28 +95,48 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
 }
 
-// Each pair is linked into the lists of both its agents. The lists come out in reverse
-// pair order, which is harmless: the heap order is total, whatever the push order.
+// A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
+// inclusive prefix sum turns it into the agent's end, and placing the ends by decrementing
+// it leaves the agent's start. The runs come out in reverse pair order, which is harmless:
+// the heap order is total, whatever the push order, and contacts are sorted by id.
 void GuardedMotion::build_incidence() {
-  const auto ends = static_cast<std::uint32_t>(2 * pairs_.size());
-  next_end_.resize(ends);
-  ++stamp_;
-  for (std::uint32_t end = 0; end < ends; ++end) {
-    const CandidatePair& p = pairs_[end >> 1];
-    const std::uint32_t agent = (end & 1) ? p.j : p.i;
-    next_end_[end] = head_stamp_[agent] == stamp_ ? head_[agent] : kNoEnd;
-    head_[agent] = end;
-    head_stamp_[agent] = stamp_;
+  const std::size_t agents = commands_.size();
+  incidence_begin_.assign(agents + 1, 0u);
+  for (const CandidatePair& p : pairs_) {
+    ++incidence_begin_[p.i];
+    ++incidence_begin_[p.j];
+  }
+  std::uint32_t total = 0;
+  for (std::size_t a = 0; a <= agents; ++a) {
+    total += incidence_begin_[a];
+    incidence_begin_[a] = total;
+  }
+  incident_ends_.resize(total);
+  for (auto pair = static_cast<std::uint32_t>(pairs_.size()); pair-- > 0;) {
+    incident_ends_[--incidence_begin_[pairs_[pair].i]] = 2 * pair;
+    incident_ends_[--incidence_begin_[pairs_[pair].j]] = 2 * pair + 1;
   }
   incidence_built_ = true;
 }
 
+// Schedules the agent's pairs anew from `time` on (its own velocity and displacement looked
+// up once); pairs that keep their distance have no events.
 void GuardedMotion::reschedule(std::uint32_t agent, double time) {
   ++version_[agent];
   if (meets_walls(agent)) schedule_wall(agent, time);
-  if (head_stamp_[agent] != stamp_) return;
-  for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
-    schedule_pair(end >> 1, time);
+  const Vec2 velocity = velocity_after(agent);
+  const Vec2 travelled = displacement_travelled(agent, time);
+  for (const std::uint32_t end : incident_ends(agent)) {
+    const CandidatePair& pair = pairs_[end >> 1];
+    const bool agent_is_j = (end & 1) != 0;
+    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
+    const Vec2 other_velocity = velocity_after(other);
+    const Vec2 relative = agent_is_j ? velocity - other_velocity : other_velocity - velocity;
+    if (relative.x == 0.0 && relative.y == 0.0) continue;
+    const Vec2 other_travelled = displacement_travelled(other, time);
+    const Vec2 offset = agent_is_j ? pair.offset + travelled - other_travelled
+                                   : pair.offset + other_travelled - travelled;
+    schedule_events(end >> 1, offset, relative, time);
   }
 }
 
@@ -119,6 +147,7 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) 
     leg_stamp_[agent] = step_stamp_;
     slides_[agent] = 0;
     walls_touched_[agent] = 0;
+    bent_agents_.push_back(agent);
   }
   leg_[agent] = {time, origin, velocity};
   reschedule(agent, time);
@@ -158,22 +187,31 @@ std::uint8_t GuardedMotion::touched_walls(std::uint32_t agent, double time,
 // result does not depend on how the pairs are listed.
 void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals) {
   contacts_.clear();
-  if (head_stamp_[agent] == stamp_) {
-    const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
-    for (std::uint32_t end = head_[agent]; end != kNoEnd; end = next_end_[end]) {
-      const CandidatePair& pair = pairs_[end >> 1];
-      const std::uint32_t other = (end & 1) ? pair.i : pair.j;
-      if (!blocks(agent, other)) continue;
-      const Vec2 from_i =
-          pair.offset + displacement_travelled(pair.j, time) - displacement_travelled(pair.i, time);
-      const Vec2 towards = (end & 1) ? Vec2{} - from_i : from_i;
-      const double distance = norm(towards);
-      if (distance > touching || distance <= 0.0) continue;
-      contacts_.push_back({other, towards * (1.0 / distance)});
+  const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
+  // Squared distances above this have a square root above `touching` whatever the rounding:
+  // bodies clearly apart are passed over without one.
+  const double apart2 = touching * touching * (1.0 + kClearlyApart);
+  const Vec2 travelled = displacement_travelled(agent, time);
+  for (const std::uint32_t end : incident_ends(agent)) {
+    const CandidatePair& pair = pairs_[end >> 1];
+    const bool agent_is_j = (end & 1) != 0;
+    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
+    if (!blocks(agent, other)) continue;
+    const Vec2 other_travelled = displacement_travelled(other, time);
+    const Vec2 from_i = agent_is_j ? pair.offset + travelled - other_travelled
+                                   : pair.offset + other_travelled - travelled;
+    const Vec2 towards = agent_is_j ? Vec2{} - from_i : from_i;
+    if (norm2(towards) > apart2) continue;
+    const double distance = norm(towards);
+    if (distance > touching || distance <= 0.0) continue;
+    contacts_.push_back({other, towards * (1.0 / distance)});
+  }
+  // A body touches a handful of others, with distinct ids: insertion sort.
+  for (std::size_t k = 1; k < contacts_.size(); ++k) {
+    for (std::size_t m = k; m > 0 && contacts_[m].first < contacts_[m - 1].first; --m) {
+      std::swap(contacts_[m], contacts_[m - 1]);
     }
   }
-  std::sort(contacts_.begin(), contacts_.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& contact : contacts_) normals.push_back(contact.second);
 }
 
@@ -210,9 +248,6 @@ void GuardedMotion::reset(std::size_t agents) {
     slides_.assign(agents, 0);
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
-    head_.assign(agents, 0u);
-    head_stamp_.assign(agents, 0u);
-    stamp_ = 0;
     step_stamp_ = 0;
   }
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
@@ -220,10 +255,7 @@ void GuardedMotion::reset(std::size_t agents) {
     step_stamp_ = 0;
   }
   ++step_stamp_;
-  if (stamp_ == std::numeric_limits<std::uint32_t>::max()) {
-    std::fill(head_stamp_.begin(), head_stamp_.end(), 0u);
-    stamp_ = 0;
-  }
+  bent_agents_.clear();
 }
 
 std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
@@ -242,7 +274,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   // agent; room for twice the pairs up front keeps the heap from growing step by step as
   // aggregates densify.
   if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair(k, 0.0);
+  for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair_at_start(k);
   if (limits_.walls) {
     for (std::uint32_t a = 0; a < commands.size(); ++a) {
       if (meets_walls(a)) schedule_wall(a, 0.0);

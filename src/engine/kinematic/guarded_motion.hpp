@@ -62,6 +62,9 @@ class GuardedMotion {
                         const MotionLimits& limits, std::span<const Vec2> positions = {});
   // The displacement of `agent` over the step resolved last.
   Vec2 displacement(std::uint32_t agent) const { return displacement_travelled(agent, limits_.dt); }
+  // The agents whose motion changed during the step resolved last (each once): all others
+  // moved with their commanded velocity for the whole step.
+  std::span<const std::uint32_t> bent_agents() const { return bent_agents_; }
   // The walls `agent` touched during the step resolved last (WallContact bits).
   std::uint8_t wall_contacts(std::uint32_t agent) const {
     return leg_stamp_[agent] == step_stamp_ ? walls_touched_[agent] : 0;
@@ -94,7 +97,10 @@ class GuardedMotion {
   };
 
   void reset(std::size_t agents);
-  void schedule_pair(std::uint32_t pair, double from_time);
+  void schedule_pair_at_start(std::uint32_t pair);
+  // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
+  // relative velocity then.
+  void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time);
   void schedule_wall(std::uint32_t agent, double from_time);
   void reschedule(std::uint32_t agent, double time);
   void change_leg(std::uint32_t agent, double time, Vec2 velocity);
@@ -103,6 +109,10 @@ class GuardedMotion {
   std::uint8_t touched_walls(std::uint32_t agent, double time, std::vector<Vec2>& normals) const;
   void touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals);
   void build_incidence();
+  std::span<const std::uint32_t> incident_ends(std::uint32_t agent) const {
+    return {incident_ends_.data() + incidence_begin_[agent],
+            incident_ends_.data() + incidence_begin_[agent + 1]};
+  }
   bool bent(std::uint32_t agent) const { return leg_stamp_[agent] == step_stamp_; }
   bool blocks(std::uint32_t mover, std::uint32_t other) const;
   bool halts_for(std::uint32_t mover, std::uint32_t other) const;
@@ -131,18 +141,18 @@ class GuardedMotion {
   std::uint32_t step_stamp_ = 0;
   AgentArray<Leg> leg_;
   AgentArray<std::uint32_t> leg_stamp_;
+  std::vector<std::uint32_t> bent_agents_;
   AgentArray<std::uint8_t> slides_;
   AgentArray<std::uint8_t> walls_touched_;
   // Versions tell stale events from current ones: they count up across steps and are never
   // reset.
   AgentArray<std::uint32_t> version_;
-  // Pairs of each agent, built on the first change of a step: linked lists through the pair
-  // ends (2 * pair + end), whose heads are valid only where head_stamp_ is this step's.
+  // Pairs of each agent, built on the first change of a step: the pair ends (2 * pair + end)
+  // of agent a are incident_ends_[incidence_begin_[a] .. incidence_begin_[a + 1]), so that
+  // rescheduling an agent reads one short contiguous run.
   bool incidence_built_ = false;
-  std::uint32_t stamp_ = 0;
-  AgentArray<std::uint32_t> head_;
-  AgentArray<std::uint32_t> head_stamp_;
-  AgentArray<std::uint32_t> next_end_;
+  AgentArray<std::uint32_t> incidence_begin_;
+  AgentArray<std::uint32_t> incident_ends_;
   std::vector<std::pair<std::uint32_t, Vec2>> contacts_;  // of the agent sliding, by id
   std::vector<Vec2> normals_;
 };

@@ -101,10 +101,14 @@ class KinematicEngine final : public Engine {
     const std::size_t n = positions_.size();
     const int tasks = static_cast<int>(std::clamp<std::size_t>(
         n / kAgentsPerMoveTask, 1, static_cast<std::size_t>(threads_.size())));
+    // On a torus every agent first moves as commanded, in one plain loop, and the few whose
+    // motion changed are then moved again from where they started.
+    const bool patch_bent = motion != nullptr && arena_.torus();
+    if (patch_bent) remember_starts(motion->bent_agents());
     auto move = [&](int task) {
       const std::size_t first = StepThreads::slice_begin(n, task, tasks);
       const std::size_t last = StepThreads::slice_begin(n, task + 1, tasks);
-      if (motion == nullptr) {
+      if (motion == nullptr || patch_bent) {
         const double dt = limits_.dt;
         move_range(
             first, last, [commands, dt](std::size_t i) { return commands[i].velocity * dt; },
@@ -119,7 +123,26 @@ class KinematicEngine final : public Engine {
       }
     };
     threads_.run(tasks, move);
+    if (patch_bent) move_bent_from_starts(*motion);
     rebuild_neighbourhood(std::max(nominal_speed_, fastest), true);
+  }
+
+  void remember_starts(std::span<const std::uint32_t> agents) {
+    starts_.clear();
+    for (const std::uint32_t agent : agents) starts_.push_back({agent, positions_[agent]});
+  }
+
+  void move_bent_from_starts(const GuardedMotion& motion) {
+    for (const auto& [agent, start] : starts_) {
+      positions_[agent] = on_torus(start + motion.displacement(agent));
+    }
+  }
+
+  // Only the few agents that crossed an edge are wrapped.
+  Vec2 on_torus(Vec2 p) const {
+    const bool inside =
+        (p.x >= 0.0) & (p.x < arena_.width()) & (p.y >= 0.0) & (p.y < arena_.height());
+    return inside ? p : arena_.wrap(p);
   }
 
   // Plain loops over raw arrays (nothing the stores could alias), wrapping only the few
@@ -130,12 +153,8 @@ class KinematicEngine final : public Engine {
                   WallContacts wall_contacts) {
     Vec2* position = positions_.data();
     if (arena_.torus()) {
-      const double width = arena_.width(), height = arena_.height();
-      for (std::size_t i = first; i < last; ++i) {
-        const Vec2 p = position[i] + displacement(i);
-        const bool inside = (p.x >= 0.0) & (p.x < width) & (p.y >= 0.0) & (p.y < height);
-        position[i] = inside ? p : arena_.wrap(p);
-      }
+      for (std::size_t i = first; i < last; ++i)
+        position[i] = on_torus(position[i] + displacement(i));
       return;
     }
     for (std::size_t i = first; i < last; ++i) {
@@ -195,6 +214,7 @@ class KinematicEngine final : public Engine {
   NeighbourSearch search_;
   NeighbourLists neighbours_;
   GuardedMotion motion_;
+  std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed
 };
 
 }  // namespace
