@@ -38,9 +38,9 @@ class AggregateTracker {
   std::span<const std::uint32_t> aggregated_agents() const {
     return {labelled_.data(), labelled_count_};
   }
-  // The members of the aggregate `agent` is in, in index order, into `members` (replacing
-  // its contents). In time proportional to the aggregate's size, so that looking at a few
-  // aggregates does not cost a pass over all of them.
+  // The members of the aggregate `agent` is in (aggregate_of(agent) >= 0), in index order,
+  // into `members` (replacing its contents). In time proportional to the aggregate's size,
+  // so that looking at a few aggregates does not cost a pass over all of them.
   void members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const;
 
  private:
