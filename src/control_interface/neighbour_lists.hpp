@@ -35,6 +35,7 @@ class NeighbourLists {
   void reset(std::size_t agent_count) {
     begin_.assign(agent_count + 1, 0);
     items_.clear();
+    pairs_.clear();
   }
   // Agents must be filled in order 0, 1, 2, ...: push their neighbours, then close them.
   void push(const Neighbour& n) { items_.push_back(n); }
@@ -42,13 +43,17 @@ class NeighbourLists {
   std::span<const Neighbour> of(AgentId agent) const {
     return {items_.data() + begin_[agent], items_.data() + begin_[agent + 1]};
   }
+  // Every perceived pair once, as (i, j) with i < j and j in i's list, in no particular
+  // order: a pass over all pairs need not walk every agent's list.
+  std::span<const ClosePair> pairs() const { return pairs_; }
   std::size_t agent_count() const { return begin_.empty() ? 0 : begin_.size() - 1; }
   std::size_t total() const { return items_.size(); }
 
  private:
   AgentArray<std::uint32_t> begin_;
   AgentArray<Neighbour> items_;
-  std::vector<AgentId> crowded_;  // agents with two or more neighbours (to sort)
+  AgentArray<ClosePair> pairs_;
+  AgentArray<AgentId> crowded_;  // agents with two or more neighbours (to sort), and room
 };
 
 }  // namespace swarmagg

@@ -2,85 +2,90 @@
 
 #include <algorithm>
 
+#include "core/agents_in_state.hpp"
+
 namespace swarmagg {
-namespace {
-
-// Lists the waiting agents in index order into `waiting` (kept at full length) and returns
-// how many there are. Without branches: every index is written, only a waiting one counts,
-// since waiting and moving agents alternate unpredictably along the indices.
-std::size_t list_waiting(std::span<const AgentState> state, AgentArray<std::uint32_t>& waiting) {
-  const std::size_t n = state.size();
-  if (waiting.size() != n) waiting.resize(n);
-  std::uint32_t* out = waiting.data();
-  const AgentState* s = state.data();
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    out[count] = static_cast<std::uint32_t>(i);
-    count += s[i] == AgentState::Wait;
-  }
-  return count;
-}
-
-}  // namespace
 
 void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState& swarm,
                               double detection_radius, AggregateLinks links) {
   const std::size_t n = swarm.size();
   // Only waiting agents can be in aggregates; the union-find touches nothing else.
-  const std::span<const std::uint32_t> waiting(waiting_.data(),
-                                               list_waiting(swarm.state, waiting_));
+  if (waiting_.size() != n) waiting_.resize(n);
+  const std::span<const std::uint32_t> waiting(
+      waiting_.data(), list_agents_in_state(swarm.state, AgentState::Wait, waiting_.data()));
   sets_.reserve_elements(n);
-  index_of_root_.resize(n);
-  for (const std::uint32_t i : waiting) {
-    sets_.make_set(i);
-    index_of_root_[i] = -1;
-  }
-  for (const std::uint32_t i : waiting) {
-    if (links == AggregateLinks::PartnersOnly) {
+  for (const std::uint32_t i : waiting) sets_.make_set(i);
+  const AgentState* state = swarm.state.data();
+  if (links == AggregateLinks::PartnersOnly) {
+    for (const std::uint32_t i : waiting) {
       const std::int32_t p = swarm.partner[i];
-      if (p != kNoPartner && swarm.state[p] == AgentState::Wait) sets_.unite(i, p);
-      continue;
+      if (p != kNoPartner && state[p] == AgentState::Wait) sets_.unite(i, p);
     }
-    for (const Neighbour& nb : neighbours.of(i)) {
-      if (nb.distance > detection_radius) break;  // nearest first
-      if (nb.id > i && swarm.state[nb.id] == AgentState::Wait) sets_.unite(i, nb.id);
+  } else {
+    // Each perceived pair once, in one flat pass: walking every waiting agent's short list
+    // instead costs a mispredicted loop exit per agent. Nearly every pair links two waiting
+    // agents (moving agents that perceive one stop), so the one branch is well predicted.
+    for (const ClosePair& p : neighbours.pairs()) {
+      const bool linked = (p.distance <= detection_radius) & (state[p.i] == AgentState::Wait) &
+                          (state[p.j] == AgentState::Wait);
+      if (linked) sets_.unite(p.i, p.j);
     }
   }
   label_components(n, waiting);
 }
 
 // Only the agents labelled last time are unlabelled (not all n), so a step costs in
-// proportion to the waiting agents.
+// proportion to the waiting agents. Labelling itself has no branch: waiting agents in index
+// order each reach their root (their aggregate's lowest agent) in one step, a root that
+// heads an aggregate opens the next index, and the others copy their root's.
 void AggregateTracker::label_components(std::size_t n, std::span<const std::uint32_t> waiting) {
   if (aggregate_of_.size() != n) {
     aggregate_of_.assign(n, -1);
     size_of_agent_.assign(n, 0);
-    // Their bounds (every agent labelled, aggregates of two), so no step ever grows them.
-    labelled_.reserve(n);
-    sizes_.reserve(n / 2);
+    // Their bounds: every agent labelled, every aggregate of two (plus the slot that is
+    // written and not counted).
+    labelled_.resize(n);
+    sizes_.resize(n / 2 + 1);
   } else {
-    for (const std::uint32_t i : labelled_) {
+    for (const std::uint32_t i : aggregated_agents()) {
       aggregate_of_[i] = -1;
       size_of_agent_[i] = 0;
     }
   }
-  labelled_.clear();
-  sizes_.clear();
-  largest_ = 0;
+  std::int32_t* aggregate_of = aggregate_of_.data();
+  std::int32_t* size_of_agent = size_of_agent_.data();
+  std::int32_t* sizes = sizes_.data();
+  std::uint32_t* labelled = labelled_.data();
+  std::int32_t count = 0;
+  std::size_t labelled_count = 0;
   for (const std::uint32_t i : waiting) {
-    const std::uint32_t root = sets_.find(i);
-    const auto size = static_cast<std::int32_t>(sets_.size_of(root));
-    if (size < 2) continue;
-    if (index_of_root_[root] < 0) {
-      index_of_root_[root] = static_cast<std::int32_t>(sizes_.size());
-      sizes_.push_back(size);
-      largest_ = std::max(largest_, static_cast<int>(size));
-    }
-    aggregate_of_[i] = index_of_root_[root];
-    size_of_agent_[i] = size;
-    labelled_.push_back(i);
+    const std::uint32_t root = sets_.settle(i);
+    const auto size = static_cast<std::int32_t>(sets_.size_of_root(root));
+    const std::int32_t aggregated = size >= 2;
+    const std::int32_t heads = aggregated & static_cast<std::int32_t>(root == i);
+    sizes[count] = size;
+    // A root alone keeps its -1; any other agent's root is lower, so already labelled. By
+    // masks, as a compiler turns a conditional choice here back into a branch.
+    const std::int32_t new_label = -heads;
+    aggregate_of[i] = (count & new_label) | (aggregate_of[root] & ~new_label);
+    count += heads;
+    size_of_agent[i] = size & -aggregated;
+    labelled[labelled_count] = i;
+    labelled_count += static_cast<std::size_t>(aggregated);
   }
-  count_ = static_cast<int>(sizes_.size());
+  count_ = count;
+  labelled_count_ = labelled_count;
+  largest_ = count == 0 ? 0 : *std::max_element(sizes, sizes + count);
+}
+
+void AggregateTracker::members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const {
+  members.clear();
+  std::uint32_t member = agent;
+  do {
+    members.push_back(member);
+    member = sets_.next(member);
+  } while (member != agent);
+  std::sort(members.begin(), members.end());
 }
 
 }  // namespace swarmagg

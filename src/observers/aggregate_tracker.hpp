@@ -29,11 +29,19 @@ class AggregateTracker {
   // Size of each agent's aggregate (0 when in none).
   std::span<const std::int32_t> size_of_agent() const { return size_of_agent_; }
   // Size of every aggregate, by aggregate index.
-  std::span<const std::int32_t> sizes() const { return sizes_; }
+  std::span<const std::int32_t> sizes() const {
+    return {sizes_.data(), static_cast<std::size_t>(count_)};
+  }
   // What a controller may read of these (control_interface/aggregate_facts.hpp).
-  AggregateFacts facts() const { return {sizes_, aggregate_of_, size_of_agent_}; }
+  AggregateFacts facts() const { return {sizes(), aggregate_of_, size_of_agent_}; }
   // The agents in an aggregate, in index order.
-  std::span<const std::uint32_t> aggregated_agents() const { return labelled_; }
+  std::span<const std::uint32_t> aggregated_agents() const {
+    return {labelled_.data(), labelled_count_};
+  }
+  // The members of the aggregate `agent` is in (aggregate_of(agent) >= 0), in index order,
+  // into `members` (replacing its contents). In time proportional to the aggregate's size,
+  // so that looking at a few aggregates does not cost a pass over all of them.
+  void members_of(std::uint32_t agent, std::vector<std::uint32_t>& members) const;
 
  private:
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);
@@ -41,10 +49,12 @@ class AggregateTracker {
   UnionFind sets_;
   AgentArray<std::int32_t> aggregate_of_;
   AgentArray<std::int32_t> size_of_agent_;
-  std::vector<std::int32_t> sizes_;
-  AgentArray<std::int32_t> index_of_root_;
-  AgentArray<std::uint32_t> waiting_;    // full length; the waiting agents come first
-  std::vector<std::uint32_t> labelled_;  // agents whose labels differ from -1 / 0
+  // These two keep their bounds (n / 2 + 1 and n) so that labelling writes without branches;
+  // only their first entries are valid.
+  AgentArray<std::int32_t> sizes_;      // count_ valid
+  AgentArray<std::uint32_t> labelled_;  // agents whose labels differ from -1 / 0
+  std::size_t labelled_count_ = 0;
+  AgentArray<std::uint32_t> waiting_;  // full length; the waiting agents come first
   int count_ = 0;
   int largest_ = 0;
 };

@@ -10,6 +10,7 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, double detection_radius, const Sha
   open_.reserve(static_cast<std::size_t>(agent_count));  // one attempt per agent at most
   // Room for as many remembered members as there are agents, so that most runs never grow it.
   former_.reserve(static_cast<std::size_t>(agent_count));
+  members_.reserve(static_cast<std::size_t>(agent_count));  // the largest aggregate's bound
 }
 
 void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
@@ -26,15 +27,11 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
 void LeaveEpisodes::start_attempts(const AggregateTracker& aggregates,
                                    std::span<const Vec2> positions,
                                    std::span<const AgentState> state) {
-  bool members_built = false;
   for (const AgentId i : aggregates.aggregated_agents()) {
     if (state[i] != AgentState::Leave) continue;
-    if (!members_built) {
-      members_.build(aggregates);
-      members_built = true;
-    }
     const std::int32_t aggregate = aggregates.aggregate_of()[i];
-    const std::span<const AgentId> members = members_.of(aggregate);
+    aggregates.members_of(i, members_);
+    const std::span<const AgentId> members = members_;
     OpenAttempt attempt;
     attempt.agent = i;
     attempt.size = aggregates.sizes()[static_cast<std::size_t>(aggregate)];

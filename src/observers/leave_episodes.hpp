@@ -22,7 +22,6 @@
 #include "control_interface/neighbour_lists.hpp"
 #include "core/agent_state.hpp"
 #include "observers/aggregate_geometry.hpp"
-#include "observers/aggregate_members.hpp"
 #include "observers/aggregate_tracker.hpp"
 #include "observers/leave_tally.hpp"
 
@@ -58,7 +57,7 @@ class LeaveEpisodes {
   double detection_radius_;
   ShapeRules rules_;
   LeaveTally tally_;
-  AggregateMembers members_;
+  std::vector<AgentId> members_;  // of the aggregate an attempt leaves
   std::vector<OpenAttempt> open_;
   std::vector<AgentId> former_;  // sorted ranges, one per open attempt (and dead ones)
   std::size_t dead_former_ = 0;  // entries of former_ that belong to ended attempts

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "observers/observer_scene.hpp"
 #include "observers/partition_tracker.hpp"
 
@@ -62,6 +64,44 @@ TEST(AggregateTracker, PartnersOnlyKeepsNearbyPairsApart) {
   EXPECT_EQ(s.tracker.count(), 2);
   s.update(AggregateLinks::Proximity);
   EXPECT_EQ(s.tracker.count(), 1);
+}
+
+// Aggregates are numbered in order of their lowest agent, whatever order the agents stand
+// in and the links come in; members_of() lists an aggregate's agents in index order.
+TEST(AggregateTracker, NumbersAggregatesByTheirLowestAgentAndListsMembersInIndexOrder) {
+  Scene s;
+  s.add(50.0, 50.0);  // 0: aggregate 0, with 4 and 2 (a chain 0 - 4 - 2)
+  s.add(10.0, 10.0);  // 1: aggregate 1, with 3
+  s.add(57.0, 50.0);  // 2
+  s.add(13.0, 10.0);  // 3
+  s.add(53.5, 50.0);  // 4
+  s.add(80.0, 80.0);  // 5: alone
+  s.add(30.0, 30.0);  // 6: aggregate 2, with 7 (a pair found only after the others)
+  s.add(30.0, 33.0);  // 7
+  s.update();
+  ASSERT_EQ(s.tracker.count(), 3);
+  EXPECT_EQ(
+      (std::vector<std::int32_t>(s.tracker.aggregate_of().begin(), s.tracker.aggregate_of().end())),
+      (std::vector<std::int32_t>{0, 1, 0, 1, 0, -1, 2, 2}));
+  EXPECT_EQ((std::vector<std::int32_t>(s.tracker.sizes().begin(), s.tracker.sizes().end())),
+            (std::vector<std::int32_t>{3, 2, 2}));
+  EXPECT_EQ((std::vector<std::uint32_t>(s.tracker.aggregated_agents().begin(),
+                                        s.tracker.aggregated_agents().end())),
+            (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 6, 7}));
+  std::vector<std::uint32_t> members;
+  s.tracker.members_of(2, members);
+  EXPECT_EQ(members, (std::vector<std::uint32_t>{0, 2, 4}));
+  s.tracker.members_of(7, members);
+  EXPECT_EQ(members, (std::vector<std::uint32_t>{6, 7}));
+  // The bridge leaves: its former fellows are no aggregate, the pairs keep their numbers.
+  s.swarm.state[4] = AgentState::Leave;
+  s.update();
+  EXPECT_EQ(s.tracker.count(), 2);
+  EXPECT_EQ(s.tracker.aggregate_of()[0], -1);
+  EXPECT_EQ(s.tracker.aggregate_of()[1], 0);
+  EXPECT_EQ(s.tracker.aggregate_of()[6], 1);
+  s.tracker.members_of(3, members);
+  EXPECT_EQ(members, (std::vector<std::uint32_t>{1, 3}));
 }
 
 TEST(PartitionTracker, KeysListPartsInDecreasingOrderWithFreeAgentsAsOnes) {

@@ -1,0 +1,62 @@
+#include "control_interface/neighbour_lists.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace swarmagg {
+namespace {
+
+std::vector<AgentId> ids_of(const NeighbourLists& lists, AgentId agent) {
+  std::vector<AgentId> ids;
+  for (const Neighbour& nb : lists.of(agent)) ids.push_back(nb.id);
+  return ids;
+}
+
+// Lists of two are ordered without a branch, longer ones by insertion: each comes out
+// nearest first, equal distances by id, whatever order the pairs came in.
+TEST(NeighbourLists, OrdersEveryListNearestFirstAndTiesById) {
+  const std::vector<ClosePair> pairs = {
+      {0, 1, {3, 0}, 3.0},  {0, 2, {2, 0}, 2.0},                       // agent 0: two
+      {3, 6, {1, 0}, 1.5},  {3, 4, {1, 0}, 1.5}, {3, 5, {1, 0}, 1.0},  // agent 3: three, a tie
+      {7, 8, {4, 0}, 4.0},  {7, 9, {1, 0}, 1.0}, {7, 10, {3, 0}, 3.0},
+      {7, 11, {2, 0}, 2.0},  // agent 7: four
+  };
+  NeighbourLists lists;
+  lists.assign_from_pairs(12, pairs);
+  EXPECT_EQ(ids_of(lists, 0), (std::vector<AgentId>{2, 1}));
+  EXPECT_EQ(ids_of(lists, 3), (std::vector<AgentId>{5, 4, 6}));
+  EXPECT_EQ(ids_of(lists, 7), (std::vector<AgentId>{9, 11, 10, 8}));
+  EXPECT_EQ(ids_of(lists, 1), (std::vector<AgentId>{0}));
+  EXPECT_EQ(lists.of(1)[0].offset.x, -3.0);  // seen from the other end
+  EXPECT_EQ(ids_of(lists, 11), (std::vector<AgentId>{7}));
+}
+
+TEST(NeighbourLists, KeepsEveryPairOnceWhicheverWayTheyAreFilled) {
+  NeighbourLists assigned;
+  assigned.assign_from_pairs(3, std::vector<ClosePair>{{0, 1, {1, 0}, 1.0}, {1, 2, {2, 0}, 2.0}});
+  ASSERT_EQ(assigned.pairs().size(), 2u);
+  EXPECT_EQ(assigned.pairs()[1].j, 2u);
+
+  // Agent by agent (as the Box2D engine fills them): the pairs are those with id > agent.
+  NeighbourLists pushed;
+  pushed.reset(3);
+  pushed.push({1, {1, 0}, 1.0});
+  pushed.close_agent(0);
+  pushed.push({2, {2, 0}, 2.0});
+  pushed.push({0, {-1, 0}, 1.0});
+  pushed.close_agent(1);
+  pushed.push({1, {-2, 0}, 2.0});
+  pushed.close_agent(2);
+  ASSERT_EQ(pushed.pairs().size(), 2u);
+  EXPECT_EQ(pushed.pairs()[0].i, 0u);
+  EXPECT_EQ(pushed.pairs()[0].j, 1u);
+  EXPECT_EQ(pushed.pairs()[1].i, 1u);
+  EXPECT_EQ(pushed.pairs()[1].j, 2u);
+  EXPECT_EQ(pushed.pairs()[1].distance, 2.0);
+  pushed.reset(3);
+  EXPECT_TRUE(pushed.pairs().empty());
+}
+
+}  // namespace
+}  // namespace swarmagg
