@@ -9,7 +9,8 @@
 namespace swarmagg {
 namespace {
 
-constexpr std::uint32_t kNoEnd = std::numeric_limits<std::uint32_t>::max();
+// A wall event's second agent: no one, ordered after every agent id.
+constexpr std::uint32_t kNoOne = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
@@ -28,8 +29,8 @@ bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
     const std::uint32_t ai = wall_a ? a.pair : pairs[a.pair].i;
     const std::uint32_t bi = wall_b ? b.pair : pairs[b.pair].i;
     if (ai != bi) return ai > bi;
-    const std::uint32_t aj = wall_a ? kNoEnd : pairs[a.pair].j;
-    const std::uint32_t bj = wall_b ? kNoEnd : pairs[b.pair].j;
+    const std::uint32_t aj = wall_a ? kNoOne : pairs[a.pair].j;
+    const std::uint32_t bj = wall_b ? kNoOne : pairs[b.pair].j;
     return aj > bj;
   }
   return a.kind > b.kind;
