@@ -1,8 +1,10 @@
 #include "controllers/aggregation_controller.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "core/agents_in_state.hpp"
@@ -44,21 +46,24 @@ struct WaitingView {
 // compaction force; the force applies if it goes on waiting, as nothing later in the decision
 // changes a waiting agent's state or partner.
 void AggregationController::update_waiting(const ControllerInput& input, SwarmState& swarm,
-                                           const CounterRng& rng, EventCounts& events) {
+                                           const CounterRng& rng, std::span<MotionCommand> commands,
+                                           EventCounts& events) {
   // The switches that hold for the whole decision are template arguments, so that the
   // per-agent loop carries no test of them.
   const bool compacts = rules_.compaction.enabled;
   if (rules_.join) {
-    if (compacts) return update_waiting_as<true, true>(input, swarm, rng, events);
-    return update_waiting_as<true, false>(input, swarm, rng, events);
+    if (compacts) return update_waiting_as<true, true>(input, swarm, rng, commands, events);
+    return update_waiting_as<true, false>(input, swarm, rng, commands, events);
   }
-  if (compacts) return update_waiting_as<false, true>(input, swarm, rng, events);
-  update_waiting_as<false, false>(input, swarm, rng, events);
+  if (compacts) return update_waiting_as<false, true>(input, swarm, rng, commands, events);
+  update_waiting_as<false, false>(input, swarm, rng, commands, events);
 }
 
 template <bool kJoin, bool kCompaction>
 void AggregationController::update_waiting_as(const ControllerInput& input, SwarmState& swarm,
-                                              const CounterRng& rng, EventCounts& events) {
+                                              const CounterRng& rng,
+                                              std::span<MotionCommand> commands,
+                                              EventCounts& events) {
   const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
   const AgentState* previous = previous_.data();
   const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
@@ -75,25 +80,36 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   // under join: false its waiting partner only: a waiting neighbour whose key (aggregate, or
   // index) is the agent's own key. No key is below -1, so kNoMembers matches nobody.
   constexpr std::int32_t kNoMembers = std::numeric_limits<std::int32_t>::min();
+  // The view is gathered in locals, which the compiler keeps in registers.
   const auto look_around = [&](std::uint32_t agent, std::int32_t partner) {
-    WaitingView view;
     const std::int32_t own = kJoin ? aggregate[agent] : partner;  // negative: none
     const std::int32_t own_key = own >= 0 ? own : kNoMembers;
+    int perceived = 0;
+    bool sees_waiting = false;
+    Vec2 force;
     for (const Neighbour& nb : neighbours.of(agent)) {
       if (nb.distance > radius) break;
-      ++view.perceived;
+      ++perceived;
       const bool waited = previous[nb.id] == AgentState::Wait;
-      view.sees_waiting |= waited;
+      sees_waiting |= waited;
       if constexpr (kCompaction) {
         const std::int32_t key = kJoin ? aggregate[nb.id] : static_cast<std::int32_t>(nb.id);
-        if (waited & (key == own_key)) add_spring_force(compaction, nb, view.force);
+        if (waited & (key == own_key)) add_spring_force(compaction, nb, force);
       }
     }
-    return view;
+    return WaitingView{perceived, sees_waiting, force};
   };
   if (movers_.size() != swarm.size()) movers_.resize(swarm.size());
   Mover* movers = movers_.data();
   std::size_t mover_count = 0;
+  MotionCommand* out = commands.data();
+  const StateCommand& wait = commands_by_state_[static_cast<std::uint8_t>(AgentState::Wait)];
+  // As three words, which the compiler stores as they are (built field by field, a command
+  // of 16-bit masks is assembled anew for every agent).
+  const MotionCommand standing_command{Vec2{}, wait.halt_on, wait.blocked_by, wait.repelled_by};
+  std::array<std::uint64_t, 3> standing;
+  static_assert(sizeof(standing) == sizeof(MotionCommand));
+  std::memcpy(standing.data(), &standing_command, sizeof(standing));
   for (const std::uint32_t agent : waiters_) {
     const std::int32_t partner = swarm.partner[agent];
     const WaitingView view = look_around(agent, partner);
@@ -113,6 +129,7 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
       swarm.state[agent] = AgentState::Go;
       swarm.partner[agent] = kNoPartner;
       swarm.heading[agent] = random_heading(rng, input.step, agent);
+      out[agent] = command_of(agent, swarm);
       continue;
     }
     if (rules_.leave) {
@@ -130,13 +147,15 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
           swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
         }
         count_leave(input.aggregates.aggregate_of[agent], leavers_left_, events);
+        out[agent] = command_of(agent, swarm);
         continue;
       }
     }
-    // Goes on waiting. Most stand (force below the tolerance), and write_commands gives them
-    // +0; the rest move at random to the branch predictor, so each is written to the next
-    // slot, which only those that may move keep (squared forces below standing_norm2_
-    // surely stand).
+    // Goes on waiting. Most stand (force below the tolerance), with velocity +0; the rest
+    // move at random to the branch predictor, so each is written to the next slot, which
+    // only those that may move keep (squared forces below standing_norm2_ surely stand), and
+    // decide() gives those their velocity.
+    std::memcpy(static_cast<void*>(out + agent), standing.data(), sizeof(standing));
     if constexpr (kCompaction) {
       movers[mover_count] = {agent, view.force};
       mover_count += !(norm2(view.force) < standing_norm2_);
@@ -239,48 +258,47 @@ std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
 
 // The command of each state, looked up rather than branched on: states of neighbouring
 // indices are unrelated, so a switch mispredicts about every other agent.
-void AggregationController::write_commands(const SwarmState& swarm,
-                                           std::span<MotionCommand> commands) const {
+std::array<AggregationController::StateCommand, kAgentStateCount>
+AggregationController::command_table(const AggregationRules& rules) {
   constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
                                     mask_of(static_cast<Signal>(AgentState::Approach));
   constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
-  struct StateCommand {
-    std::uint64_t moving;  // all ones when the state moves along its heading
-    SignalMask halt_on, blocked_by, repelled_by;
-  };
-  const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
-  const SignalMask search_block = rules_.join ? kWaiting : 0;
-  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
+  const SignalMask search_halt = kSearching | (rules.join ? kWaiting : 0);
+  const SignalMask search_block = rules.join ? kWaiting : 0;
+  const SignalMask search_block_of_waiting = rules.join ? kSearching : 0;
   constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
   // Moving waiting bodies (compaction) respect every body that is solid to them: they must
   // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
   // bodies it blocks, so both sides of a solid pair need the bit).
   const SignalMask wait_block =
-      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
+      kWaiting | (rules.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
   // other, so neither compaction nor a body engine's shoving can push one through another.
   // Waiting agents stand here; those that close up (movers_) get their velocity after.
-  const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
-                                                {0, 0, wait_block, 0},
-                                                {kMoves, 0, kWaiting, kWaiting},
-                                                {kMoves, search_halt, search_block, 0}};
   static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
                 static_cast<int>(AgentState::Leave) == 2 &&
                 static_cast<int>(AgentState::Approach) == 3);
-  const auto n = swarm.size();
-  const AgentState* state = swarm.state.data();
-  const Vec2* heading = swarm.heading.data();
+  return {{{kMoves, search_halt, search_block, 0},
+           {0, 0, wait_block, 0},
+           {kMoves, 0, kWaiting, kWaiting},
+           {kMoves, search_halt, search_block, 0}}};
+}
+
+MotionCommand AggregationController::command_of(std::uint32_t agent,
+                                                const SwarmState& swarm) const {
+  const StateCommand& c = commands_by_state_[static_cast<std::uint8_t>(swarm.state[agent]) & 3u];
+  const Vec2 v = swarm.heading[agent] * rules_.speed;
+  // A standing agent's velocity is +0 exactly (masking, not multiplying by zero).
+  const Vec2 velocity{std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.x) & c.moving),
+                      std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.y) & c.moving)};
+  return {velocity, c.halt_on, c.blocked_by, c.repelled_by};
+}
+
+void AggregationController::write_commands(const SwarmState& swarm, const IndexList& agents,
+                                           std::span<MotionCommand> commands) const {
   MotionCommand* out = commands.data();
-  const double speed = rules_.speed;
-  for (std::size_t i = 0; i < n; ++i) {
-    const StateCommand& c = table[static_cast<std::uint8_t>(state[i]) & 3u];
-    const Vec2 v = heading[i] * speed;
-    // A standing agent's velocity is +0 exactly (masking, not multiplying by zero).
-    const Vec2 velocity{std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.x) & c.moving),
-                        std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.y) & c.moving)};
-    out[i] = MotionCommand{velocity, c.halt_on, c.blocked_by, c.repelled_by};
-  }
+  for (const std::uint32_t i : agents) out[i] = command_of(i, swarm);
 }
 
 // Index lists of the agents by the state they start the decision in, sixteen agents at a
@@ -311,11 +329,14 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   // Leaving and waiting agents decide from the previous states only, so each group can be
   // walked on its own.
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
-  update_waiting(input, swarm, rng, events);
+  update_waiting(input, swarm, rng, commands, events);
   join_waiting(input, swarm, events);
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
-  write_commands(swarm, commands);
+  // Every agent's command, by the state it ends the decision in; update_waiting wrote the
+  // waiting agents'.
+  write_commands(swarm, leavers_, commands);
+  write_commands(swarm, searchers_, commands);
   // Compaction: the waiting agents whose spring force may move them (update_waiting).
   for (std::size_t k = 0; k < mover_count_; ++k) {
     const Mover& m = movers_[k];
