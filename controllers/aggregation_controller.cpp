@@ -1,10 +1,8 @@
 #include "controllers/aggregation_controller.hpp"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 #include "core/agents_in_state.hpp"
@@ -46,24 +44,21 @@ struct WaitingView {
 // compaction force; the force applies if it goes on waiting, as nothing later in the decision
 // changes a waiting agent's state or partner.
 void AggregationController::update_waiting(const ControllerInput& input, SwarmState& swarm,
-                                           const CounterRng& rng, std::span<MotionCommand> commands,
-                                           EventCounts& events) {
+                                           const CounterRng& rng, EventCounts& events) {
   // The switches that hold for the whole decision are template arguments, so that the
   // per-agent loop carries no test of them.
   const bool compacts = rules_.compaction.enabled;
   if (rules_.join) {
-    if (compacts) return update_waiting_as<true, true>(input, swarm, rng, commands, events);
-    return update_waiting_as<true, false>(input, swarm, rng, commands, events);
+    if (compacts) return update_waiting_as<true, true>(input, swarm, rng, events);
+    return update_waiting_as<true, false>(input, swarm, rng, events);
   }
-  if (compacts) return update_waiting_as<false, true>(input, swarm, rng, commands, events);
-  update_waiting_as<false, false>(input, swarm, rng, commands, events);
+  if (compacts) return update_waiting_as<false, true>(input, swarm, rng, events);
+  update_waiting_as<false, false>(input, swarm, rng, events);
 }
 
 template <bool kJoin, bool kCompaction>
 void AggregationController::update_waiting_as(const ControllerInput& input, SwarmState& swarm,
-                                              const CounterRng& rng,
-                                              std::span<MotionCommand> commands,
-                                              EventCounts& events) {
+                                              const CounterRng& rng, EventCounts& events) {
   const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
   const AgentState* previous = previous_.data();
   const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
@@ -102,14 +97,6 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   if (movers_.size() != swarm.size()) movers_.resize(swarm.size());
   Mover* movers = movers_.data();
   std::size_t mover_count = 0;
-  MotionCommand* out = commands.data();
-  const StateCommand& wait = commands_by_state_[static_cast<std::uint8_t>(AgentState::Wait)];
-  // As three words, which the compiler stores as they are (built field by field, a command
-  // of 16-bit masks is assembled anew for every agent).
-  const MotionCommand standing_command{Vec2{}, wait.halt_on, wait.blocked_by, wait.repelled_by};
-  std::array<std::uint64_t, 3> standing;
-  static_assert(sizeof(standing) == sizeof(MotionCommand));
-  std::memcpy(standing.data(), &standing_command, sizeof(standing));
   for (const std::uint32_t agent : waiters_) {
     const std::int32_t partner = swarm.partner[agent];
     const WaitingView view = look_around(agent, partner);
@@ -129,7 +116,6 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
       swarm.state[agent] = AgentState::Go;
       swarm.partner[agent] = kNoPartner;
       swarm.heading[agent] = random_heading(rng, input.step, agent);
-      out[agent] = command_of(agent, swarm);
       continue;
     }
     if (rules_.leave) {
@@ -147,15 +133,13 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
           swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
         }
         count_leave(input.aggregates.aggregate_of[agent], leavers_left_, events);
-        out[agent] = command_of(agent, swarm);
         continue;
       }
     }
-    // Goes on waiting. Most stand (force below the tolerance), with velocity +0; the rest
-    // move at random to the branch predictor, so each is written to the next slot, which
-    // only those that may move keep (squared forces below standing_norm2_ surely stand), and
-    // decide() gives those their velocity.
-    std::memcpy(static_cast<void*>(out + agent), standing.data(), sizeof(standing));
+    // Goes on waiting. Most stand (force below the tolerance), and write_commands gives them
+    // +0; the rest move at random to the branch predictor, so each is written to the next
+    // slot, which only those that may move keep (squared forces below standing_norm2_
+    // surely stand).
     if constexpr (kCompaction) {
       movers[mover_count] = {agent, view.force};
       mover_count += !(norm2(view.force) < standing_norm2_);
@@ -258,47 +242,48 @@ std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
 
 // The command of each state, looked up rather than branched on: states of neighbouring
 // indices are unrelated, so a switch mispredicts about every other agent.
-std::array<AggregationController::StateCommand, kAgentStateCount>
-AggregationController::command_table(const AggregationRules& rules) {
+void AggregationController::write_commands(const SwarmState& swarm,
+                                           std::span<MotionCommand> commands) const {
   constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
                                     mask_of(static_cast<Signal>(AgentState::Approach));
   constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
-  const SignalMask search_halt = kSearching | (rules.join ? kWaiting : 0);
-  const SignalMask search_block = rules.join ? kWaiting : 0;
-  const SignalMask search_block_of_waiting = rules.join ? kSearching : 0;
+  struct StateCommand {
+    std::uint64_t moving;  // all ones when the state moves along its heading
+    SignalMask halt_on, blocked_by, repelled_by;
+  };
+  const SignalMask search_halt = kSearching | (rules_.join ? kWaiting : 0);
+  const SignalMask search_block = rules_.join ? kWaiting : 0;
+  const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
   constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
   // Moving waiting bodies (compaction) respect every body that is solid to them: they must
   // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
   // bodies it blocks, so both sides of a solid pair need the bit).
   const SignalMask wait_block =
-      kWaiting | (rules.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
+      kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};
   // Indexed by AgentState: Go, Wait, Leave, Approach. Waiting bodies are solid to each
   // other, so neither compaction nor a body engine's shoving can push one through another.
   // Waiting agents stand here; those that close up (movers_) get their velocity after.
+  const StateCommand table[kAgentStateCount] = {{kMoves, search_halt, search_block, 0},
+                                                {0, 0, wait_block, 0},
+                                                {kMoves, 0, kWaiting, kWaiting},
+                                                {kMoves, search_halt, search_block, 0}};
   static_assert(static_cast<int>(AgentState::Go) == 0 && static_cast<int>(AgentState::Wait) == 1 &&
                 static_cast<int>(AgentState::Leave) == 2 &&
                 static_cast<int>(AgentState::Approach) == 3);
-  return {{{kMoves, search_halt, search_block, 0},
-           {0, 0, wait_block, 0},
-           {kMoves, 0, kWaiting, kWaiting},
-           {kMoves, search_halt, search_block, 0}}};
-}
-
-MotionCommand AggregationController::command_of(std::uint32_t agent,
-                                                const SwarmState& swarm) const {
-  const StateCommand& c = commands_by_state_[static_cast<std::uint8_t>(swarm.state[agent]) & 3u];
-  const Vec2 v = swarm.heading[agent] * rules_.speed;
-  // A standing agent's velocity is +0 exactly (masking, not multiplying by zero).
-  const Vec2 velocity{std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.x) & c.moving),
-                      std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.y) & c.moving)};
-  return {velocity, c.halt_on, c.blocked_by, c.repelled_by};
-}
-
-void AggregationController::write_commands(const SwarmState& swarm, const IndexList& agents,
-                                           std::span<MotionCommand> commands) const {
+  const auto n = swarm.size();
+  const AgentState* state = swarm.state.data();
+  const Vec2* heading = swarm.heading.data();
   MotionCommand* out = commands.data();
-  for (const std::uint32_t i : agents) out[i] = command_of(i, swarm);
+  const double speed = rules_.speed;
+  for (std::size_t i = 0; i < n; ++i) {
+    const StateCommand& c = table[static_cast<std::uint8_t>(state[i]) & 3u];
+    const Vec2 v = heading[i] * speed;
+    // A standing agent's velocity is +0 exactly (masking, not multiplying by zero).
+    const Vec2 velocity{std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.x) & c.moving),
+                        std::bit_cast<double>(std::bit_cast<std::uint64_t>(v.y) & c.moving)};
+    out[i] = MotionCommand{velocity, c.halt_on, c.blocked_by, c.repelled_by};
+  }
 }
 
 // Index lists of the agents by the state they start the decision in, sixteen agents at a
@@ -329,14 +314,11 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   // Leaving and waiting agents decide from the previous states only, so each group can be
   // walked on its own.
   for (const std::uint32_t i : leavers_) update_leaving(i, input, swarm, rng);
-  update_waiting(input, swarm, rng, commands, events);
+  update_waiting(input, swarm, rng, events);
   join_waiting(input, swarm, events);
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
-  // Every agent's command, by the state it ends the decision in; update_waiting wrote the
-  // waiting agents'.
-  write_commands(swarm, leavers_, commands);
-  write_commands(swarm, searchers_, commands);
+  write_commands(swarm, commands);
   // Compaction: the waiting agents whose spring force may move them (update_waiting).
   for (std::size_t k = 0; k < mover_count_; ++k) {
     const Mover& m = movers_[k];

@@ -9,7 +9,6 @@
 //  - Soysal's searchers head for the nearest non-leaving agent within s_a (APPROACH);
 //  - with compaction, agents that go on waiting move under the spring force of the waiting
 //    members of their aggregate they perceive (SPEC 3), solid to waiting and leaving bodies.
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -22,9 +21,7 @@ namespace swarmagg {
 class AggregationController final : public Controller {
  public:
   explicit AggregationController(const AggregationRules& rules)
-      : rules_(rules),
-        standing_norm2_(standing_norm2(rules.compaction.tolerance)),
-        commands_by_state_(command_table(rules)) {}
+      : rules_(rules), standing_norm2_(standing_norm2(rules.compaction.tolerance)) {}
 
   void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
               std::span<MotionCommand> commands, EventCounts& events) override;
@@ -44,12 +41,6 @@ class AggregationController final : public Controller {
     std::uint32_t b;
   };
 
-  // What a state asks of the body (SPEC 3), apart from the heading.
-  struct StateCommand {
-    std::uint64_t moving;  // all ones when the state moves along its heading
-    SignalMask halt_on, blocked_by, repelled_by;
-  };
-
   struct Mover {
     std::uint32_t agent;
     Vec2 force;  // the net spring force on it
@@ -60,26 +51,20 @@ class AggregationController final : public Controller {
 
   void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
                       const CounterRng& rng);
-  // Also writes the command of every agent that starts the decision waiting.
   void update_waiting(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
-                      std::span<MotionCommand> commands, EventCounts& events);
+                      EventCounts& events);
   template <bool kJoin, bool kCompaction>
   void update_waiting_as(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
-                         std::span<MotionCommand> commands, EventCounts& events);
+                         EventCounts& events);
   void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);
   std::optional<Vec2> escape_direction(std::uint32_t agent, const ControllerInput& input) const;
-  static std::array<StateCommand, kAgentStateCount> command_table(const AggregationRules& rules);
-  // The command of `agent` in the state and heading it has now.
-  MotionCommand command_of(std::uint32_t agent, const SwarmState& swarm) const;
-  void write_commands(const SwarmState& swarm, const IndexList& agents,
-                      std::span<MotionCommand> commands) const;
+  void write_commands(const SwarmState& swarm, std::span<MotionCommand> commands) const;
   void list_by_state(std::size_t n);
 
   AggregationRules rules_;
   double standing_norm2_;  // compaction: squared net forces below it stand (standing_norm2)
-  std::array<StateCommand, kAgentStateCount> commands_by_state_;  // indexed by AgentState
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
   std::vector<SearchPair> pairs_;

@@ -23,16 +23,16 @@ class UnionFind {
     size_[a] = 1;
     next_[a] = a;
   }
-  // Nearly every element is a root or lies one or two steps below its root, and which of
-  // these is a coin toss to the branch predictor: two steps are taken without a branch (a
-  // root is its own parent), and only deeper elements loop, halving the path from there.
+  // A loop, not a fixed number of steps without a branch: that saves mispredictions in
+  // small swarms, but in large ones the predicted exit is what lets the next loads start
+  // before this element's cache miss returns (AggregateTracker::update took 1.4 times as
+  // long on a million agents).
   std::uint32_t find(std::uint32_t a) {
-    std::uint32_t up = parent_[parent_[a]];
-    while (parent_[up] != up) {
-      parent_[up] = parent_[parent_[up]];
-      up = parent_[up];
+    while (parent_[a] != a) {
+      parent_[a] = parent_[parent_[a]];
+      a = parent_[a];
     }
-    return up;
+    return a;
   }
   // Without a branch on whether a and b already share a set: then nothing changes (the
   // root stays its own parent, its size gains nothing, swapping a cycle's links with

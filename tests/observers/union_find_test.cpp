@@ -9,8 +9,7 @@ namespace swarmagg {
 namespace {
 
 // Unions in this order hang each element one step deeper than the last (the finds of each
-// union pass through the roots only, which compresses nothing): 5 ends four steps below 0,
-// deeper than find()'s two steps without a branch.
+// union pass through the roots only, which compresses nothing): 4 ends four steps below 0.
 TEST(UnionFind, FindsTheLowestElementAsRootFromDeepInATree) {
   UnionFind sets;
   sets.reserve_elements(6);
