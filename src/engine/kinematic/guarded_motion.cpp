@@ -15,11 +15,20 @@ constexpr std::uint32_t kNoOne = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
-// Relative margin on a squared distance far beyond rounding (a few 1e-16).
-constexpr double kClearlyApart = 1e-12;
 // How many pairs ahead the start scan requests its agents' data: enough to cover a miss to
 // memory with the work of the pairs between.
 constexpr std::uint32_t kPrefetchAhead = 16;
+
+// `when ? a : b` by bit masks: for choices that differ from one neighbour to the next,
+// which the branch predictor cannot learn (GCC keeps a branch for a Vec2 ?:).
+Vec2 choose(bool when, Vec2 a, Vec2 b) {
+  const std::uint64_t take_a = 0 - static_cast<std::uint64_t>(when);
+  auto pick = [&](double x, double y) {
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(x) & take_a) |
+                                 (std::bit_cast<std::uint64_t>(y) & ~take_a));
+  };
+  return {pick(a.x, b.x), pick(a.y, b.y)};
+}
 
 }  // namespace
 
@@ -188,18 +197,31 @@ void GuardedMotion::build_incidence() {
 // data lie at random ids: all are requested before any is used, so that their cache misses
 // overlap.
 void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
-  neighbours_.clear();
-  for (const Incidence& incidence : incident_ends(agent)) {
+  const std::span<const Incidence> run = incident_ends(agent);
+  // The buffers only grow: resizing them down and up would clear what is overwritten anyway.
+  if (neighbours_.size() < run.size()) neighbours_.resize(run.size());
+  neighbour_count_ = run.size();
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    const Incidence& incidence = run[k];
     __builtin_prefetch(&pairs_[incidence.end >> 1]);
     __builtin_prefetch(&leg_stamp_[incidence.other]);
     __builtin_prefetch(&leg_[incidence.other]);
     __builtin_prefetch(&commands_[incidence.other]);
     __builtin_prefetch(&signals_[incidence.other]);
-    neighbours_.push_back({incidence.end, incidence.other, {}, {}});
+    neighbours_[k].end = incidence.end;
+    neighbours_[k].other = incidence.other;
   }
-  for (Neighbour& n : neighbours_) {
-    n.velocity = velocity_after(n.other);
-    n.travelled = displacement_travelled(n.other, time);
+  // velocity_after and displacement_travelled, with every side read so that the choices
+  // need no branch.
+  for (Neighbour& n : neighbours()) {
+    const bool is_bent = bent(n.other);
+    const Leg& leg = leg_[n.other];
+    const Vec2 commanded = commands_[n.other].velocity;
+    const bool standing = leg.velocity.x == 0.0 && leg.velocity.y == 0.0;
+    const Vec2 on_leg =
+        choose(standing, leg.origin, leg.origin + leg.velocity * (time - leg.start));
+    n.velocity = choose(is_bent, leg.velocity, commanded);
+    n.travelled = choose(is_bent, on_leg, commanded * time);
   }
 }
 
@@ -212,13 +234,13 @@ void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) 
   const Vec2 velocity = velocity_after(agent);
   const Vec2 travelled = displacement_travelled(agent, time);
   if (!gathered) gather_neighbours(agent, time);
-  for (const Neighbour& n : neighbours_) {
+  for (const Neighbour& n : neighbours()) {
     const CandidatePair& pair = pairs_[n.end >> 1];
     const bool agent_is_j = (n.end & 1) != 0;
-    const Vec2 relative = agent_is_j ? velocity - n.velocity : n.velocity - velocity;
+    const Vec2 relative = choose(agent_is_j, velocity - n.velocity, n.velocity - velocity);
     if (relative.x == 0.0 && relative.y == 0.0) continue;
-    const Vec2 offset =
-        agent_is_j ? pair.offset + travelled - n.travelled : pair.offset + n.travelled - travelled;
+    const Vec2 offset = choose(agent_is_j, pair.offset + travelled - n.travelled,
+                               pair.offset + n.travelled - travelled);
     schedule_events(n.end >> 1, offset, relative, time);
   }
 }
@@ -269,31 +291,31 @@ std::uint8_t GuardedMotion::touched_walls(std::uint32_t agent, double time,
 // order of their ids: ties between equally long slides are broken by that order, so the
 // result does not depend on how the pairs are listed.
 void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals) {
-  contacts_.clear();
   const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
-  // Squared distances above this have a square root above `touching` whatever the rounding:
-  // bodies clearly apart are passed over without one.
-  const double apart2 = touching * touching * (1.0 + kClearlyApart);
   const Vec2 travelled = displacement_travelled(agent, time);
-  for (const Neighbour& n : neighbours_) {
-    if (!blocks(agent, n.other)) continue;
+  // Half the neighbours of a body in a packed aggregate touch it: every neighbour is
+  // measured (a square root is cheaper than a mispredicted branch) and kept or not without
+  // a branch.
+  if (contacts_.size() < neighbour_count_) contacts_.resize(neighbour_count_);
+  std::size_t touched = 0;
+  for (const Neighbour& n : neighbours()) {
     const CandidatePair& pair = pairs_[n.end >> 1];
     const bool agent_is_j = (n.end & 1) != 0;
-    const Vec2 from_i =
-        agent_is_j ? pair.offset + travelled - n.travelled : pair.offset + n.travelled - travelled;
-    const Vec2 towards = agent_is_j ? Vec2{} - from_i : from_i;
-    if (norm2(towards) > apart2) continue;
+    const Vec2 from_i = choose(agent_is_j, pair.offset + travelled - n.travelled,
+                               pair.offset + n.travelled - travelled);
+    const Vec2 towards = choose(agent_is_j, Vec2{} - from_i, from_i);
     const double distance = norm(towards);
-    if (distance > touching || distance <= 0.0) continue;
-    contacts_.push_back({n.other, towards * (1.0 / distance)});
+    contacts_[touched] = {n.other, towards * (1.0 / distance)};
+    const bool within = !(distance > touching) & !(distance <= 0.0);
+    touched += static_cast<std::size_t>(within & blocks(agent, n.other));
   }
   // A body touches a handful of others, with distinct ids: insertion sort.
-  for (std::size_t k = 1; k < contacts_.size(); ++k) {
+  for (std::size_t k = 1; k < touched; ++k) {
     for (std::size_t m = k; m > 0 && contacts_[m].first < contacts_[m - 1].first; --m) {
       std::swap(contacts_[m], contacts_[m - 1]);
     }
   }
-  for (const auto& contact : contacts_) normals.push_back(contact.second);
+  for (std::size_t k = 0; k < touched; ++k) normals.push_back(contacts_[k].second);
 }
 
 // The agent touches a body solid to it or a wall and presses into it. Sliding, it goes on

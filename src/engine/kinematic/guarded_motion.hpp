@@ -138,7 +138,9 @@ class GuardedMotion {
   // velocity * min(time, stop time): ContactResponse::Stop reproduces the halting engine.
   Vec2 displacement_travelled(std::uint32_t agent, double time) const {
     if (!bent(agent)) return commands_[agent].velocity * time;
-    const Leg& leg = leg_[agent];
+    return travelled_on(leg_[agent], time);
+  }
+  static Vec2 travelled_on(const Leg& leg, double time) {
     if (leg.velocity.x == 0.0 && leg.velocity.y == 0.0) return leg.origin;
     return leg.origin + leg.velocity * (time - leg.start);
   }
@@ -182,6 +184,8 @@ class GuardedMotion {
     Vec2 travelled;
   };
   std::vector<Neighbour> neighbours_;
+  std::size_t neighbour_count_ = 0;
+  std::span<Neighbour> neighbours() { return {neighbours_.data(), neighbour_count_}; }
   std::vector<std::pair<std::uint32_t, Vec2>> contacts_;  // of the agent sliding, by id
   std::vector<Vec2> normals_;
 };
