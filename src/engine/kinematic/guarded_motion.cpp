@@ -18,6 +18,8 @@ constexpr double kTouchingSlack = 1e-9;
 // How many pairs ahead the start scan requests its agents' data: enough to cover a miss to
 // memory with the work of the pairs between.
 constexpr std::uint32_t kPrefetchAhead = 16;
+// Runs of events this short are sorted by insertion.
+constexpr std::size_t kSmallSort = 16;
 
 // `when ? a : b` by bit masks: for choices that differ from one neighbour to the next,
 // which the branch predictor cannot learn (GCC keeps a branch for a Vec2 ?:).
@@ -58,6 +60,49 @@ void GuardedMotion::push_event(const Event& event) {
     hole = parent;
   }
   heap_[hole] = event;
+}
+
+// A counting sort by time slot (a slot per event on average: the slot is monotone in time, so
+// events in earlier slots come first), then each slot sorted by the full order: a few
+// passes over the events and small sorts, where one comparison sort of all would guess
+// wrong at about every other comparison. All the events at time 0 share the first slot,
+// which a comparison sort takes when it is large.
+void GuardedMotion::sort_start_events() {
+  const std::size_t count = start_events_.size();
+  auto by_order = [](const Event& a, const Event& b) { return earlier(a, b); };
+  if (count < kSmallSort) {
+    std::sort(start_events_.begin(), start_events_.end(), by_order);
+    return;
+  }
+  const double per_time = static_cast<double>(count) / limits_.dt;
+  auto slot = [&](const Event& event) {
+    return std::min(count - 1, static_cast<std::size_t>(event.time * per_time));
+  };
+  slot_begin_.assign(count + 1, 0);
+  for (const Event& event : start_events_) ++slot_begin_[slot(event) + 1];
+  for (std::size_t k = 0; k < count; ++k) slot_begin_[k + 1] += slot_begin_[k];
+  sorted_events_.resize(count);
+  for (const Event& event : start_events_) sorted_events_[slot_begin_[slot(event)]++] = event;
+  // slot_begin_[k] is now where slot k ends.
+  std::size_t begin = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t end = slot_begin_[k];
+    if (end - begin > kSmallSort) {
+      std::sort(sorted_events_.begin() + static_cast<std::ptrdiff_t>(begin),
+                sorted_events_.begin() + static_cast<std::ptrdiff_t>(end), by_order);
+    } else {
+      for (std::size_t m = begin + 1; m < end; ++m) {
+        const Event event = sorted_events_[m];
+        std::size_t hole = m;
+        for (; hole > begin && earlier(event, sorted_events_[hole - 1]); --hole) {
+          sorted_events_[hole] = sorted_events_[hole - 1];
+        }
+        sorted_events_[hole] = event;
+      }
+    }
+    begin = end;
+  }
+  start_events_.swap(sorted_events_);
 }
 
 // Pops the earlier of the next start event and the heap's top. The heap is popped bottom-up:
@@ -406,8 +451,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     }
   }
   starting_ = false;
-  std::sort(start_events_.begin(), start_events_.end(),
-            [](const Event& a, const Event& b) { return earlier(a, b); });
+  sort_start_events();
 
   // An event is current while neither agent changed since it was scheduled; a change
   // schedules the pair anew with new versions, at most one perceive and one contact event,

@@ -106,6 +106,7 @@ class GuardedMotion {
   static bool earlier(const Event& a, const Event& b);
   void push_event(const Event& event);
   Event pop_event();
+  void sort_start_events();
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
   // relative velocity then.
@@ -156,6 +157,8 @@ class GuardedMotion {
   MotionLimits limits_;
   bool starting_ = false;  // events go to start_events_, not to the heap
   std::vector<Event> start_events_;
+  std::vector<Event> sorted_events_;
+  std::vector<std::size_t> slot_begin_;
   std::size_t next_start_ = 0;
   std::vector<Event> heap_;
   // Legs of the agents whose motion changed this step (leg_stamp_ == step_stamp_); the
