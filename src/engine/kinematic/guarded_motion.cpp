@@ -15,8 +15,8 @@ constexpr std::uint32_t kNoOne = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
-// How many pairs ahead the start scan requests its agents' data: enough to cover a miss to
-// memory with the work of the pairs between.
+// Loops over pairs or events whose agents' data lie at random ids request those data this
+// many items ahead: enough to cover a miss to memory with the work of the items between.
 constexpr std::uint32_t kPrefetchAhead = 16;
 // Runs of events this short are sorted by insertion.
 constexpr std::size_t kSmallSort = 16;
@@ -114,7 +114,8 @@ GuardedMotion::Event GuardedMotion::pop_event() {
       (heap_.empty() || !earlier(heap_.front(), start_events_[next_start_]))) {
     // What checking and processing an event reads first, of both its agents, requested
     // a few events ahead (written out here: GCC drops calls to a function that only
-    // prefetches, taking it for one without effects).
+    // prefetches, taking it for one without effects); the runs of incident ends, found
+    // from incidence_begin_ requested earlier, at half that distance.
     if (next_start_ + kPrefetchAhead < start_events_.size()) {
       const Event& ahead = start_events_[next_start_ + kPrefetchAhead];
       for (const std::uint32_t agent : {ahead.i(), ahead.j()}) {
@@ -122,7 +123,14 @@ GuardedMotion::Event GuardedMotion::pop_event() {
         __builtin_prefetch(&version_[agent]);
         __builtin_prefetch(&commands_[agent]);
         __builtin_prefetch(&signals_[agent]);
+        __builtin_prefetch(&leg_stamp_[agent]);
         if (incidence_built_) __builtin_prefetch(&incidence_begin_[agent]);
+      }
+      if (incidence_built_) {
+        const Event& nearer = start_events_[next_start_ + kPrefetchAhead / 2];
+        for (const std::uint32_t agent : {nearer.i(), nearer.j()}) {
+          if (agent != kNoOne) __builtin_prefetch(&incident_ends_[incidence_begin_[agent]]);
+        }
       }
     }
     return start_events_[next_start_++];
