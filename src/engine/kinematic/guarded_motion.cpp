@@ -21,6 +21,11 @@ constexpr std::uint32_t kPrefetchAhead = 16;
 // Runs of events this short are sorted by insertion.
 constexpr std::size_t kSmallSort = 16;
 
+// v == 0, as one test (&& would make two branches, each hard to predict).
+bool is_zero(Vec2 v) {
+  return (v.x == 0.0) & (v.y == 0.0);
+}
+
 // `when ? a : b` by bit masks: for choices that differ from one neighbour to the next,
 // which the branch predictor cannot learn (GCC keeps a branch for a Vec2 ?:).
 Vec2 choose(bool when, Vec2 a, Vec2 b) {
@@ -180,7 +185,7 @@ void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
-  if (relative.x == 0.0 && relative.y == 0.0) return;
+  if (is_zero(relative)) return;
   schedule_events(index, pair.offset, relative, 0.0);
 }
 
@@ -270,7 +275,7 @@ void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
     const bool is_bent = bent(n.other);
     const Leg& leg = leg_[n.other];
     const Vec2 commanded = commands_[n.other].velocity;
-    const bool standing = leg.velocity.x == 0.0 && leg.velocity.y == 0.0;
+    const bool standing = is_zero(leg.velocity);
     const Vec2 on_leg =
         choose(standing, leg.origin, leg.origin + leg.velocity * (time - leg.start));
     n.velocity = choose(is_bent, leg.velocity, commanded);
@@ -291,7 +296,7 @@ void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) 
     const CandidatePair& pair = pairs_[n.end >> 1];
     const bool agent_is_j = (n.end & 1) != 0;
     const Vec2 relative = choose(agent_is_j, velocity - n.velocity, n.velocity - velocity);
-    if (relative.x == 0.0 && relative.y == 0.0) continue;
+    if (is_zero(relative)) continue;
     const Vec2 offset = choose(agent_is_j, pair.offset + travelled - n.travelled,
                                pair.offset + n.travelled - travelled);
     schedule_events(n.end >> 1, offset, relative, time);
@@ -316,7 +321,7 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity, 
 void GuardedMotion::halt(std::uint32_t agent, double time, bool gathered) {
   if (time >= limits_.dt) return;
   const Vec2 v = velocity_after(agent);
-  if (v.x == 0.0 && v.y == 0.0) return;  // standing already
+  if (is_zero(v)) return;  // standing already
   change_leg(agent, time, Vec2{}, gathered);
 }
 
@@ -382,7 +387,7 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
 void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
   if (time >= limits_.dt) return;
   const Vec2 commanded = commands_[agent].velocity;
-  if (commanded.x == 0.0 && commanded.y == 0.0) return;
+  if (is_zero(commanded)) return;
   if (!incidence_built_) build_incidence();
   normals_.clear();
   const std::uint8_t walls = touched_walls(agent, time, normals_);
@@ -398,7 +403,7 @@ void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
       halt(agent, time, true);
     } else {
       change_leg(agent, time, slide, true);
-      if (slide.x != 0.0 || slide.y != 0.0) ++slides_[agent];
+      if (!is_zero(slide)) ++slides_[agent];
     }
   }
   if (bent(agent)) walls_touched_[agent] |= walls;
