@@ -18,6 +18,9 @@ constexpr double kTouchingSlack = 1e-9;
 // Loops over pairs or events whose agents' data lie at random ids request those data this
 // many items ahead: enough to cover a miss to memory with the work of the items between.
 constexpr std::uint32_t kPrefetchAhead = 16;
+// Initial room in the buffers of one agent's neighbours: a packed body has about six, the
+// pair reach holds a few more.
+constexpr std::size_t kNeighboursRoom = 64;
 // Runs of events this short are sorted by insertion.
 constexpr std::size_t kSmallSort = 16;
 
@@ -257,7 +260,7 @@ void GuardedMotion::build_incidence() {
 void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
   const std::span<const Incidence> run = incident_ends(agent);
   // The buffers only grow: resizing them down and up would clear what is overwritten anyway.
-  if (neighbours_.size() < run.size()) neighbours_.resize(run.size());
+  if (neighbours_.size() < run.size()) neighbours_.resize(2 * run.size());
   neighbour_count_ = run.size();
   for (std::size_t k = 0; k < run.size(); ++k) {
     const Incidence& incidence = run[k];
@@ -354,7 +357,7 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
   // Half the neighbours of a body in a packed aggregate touch it: every neighbour is
   // measured (a square root is cheaper than a mispredicted branch) and kept or not without
   // a branch.
-  if (contacts_.size() < neighbour_count_) contacts_.resize(neighbour_count_);
+  if (contacts_.size() < neighbour_count_) contacts_.resize(neighbours_.size());
   std::size_t touched = 0;
   for (const Neighbour& n : neighbours()) {
     const CandidatePair& pair = pairs_[n.end >> 1];
@@ -417,6 +420,11 @@ void GuardedMotion::reset(std::size_t agents) {
     slides_.assign(agents, 0);
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
+    // Room for more neighbours than a packed body has, so that the buffers do not grow
+    // during a run.
+    neighbours_.resize(kNeighboursRoom);
+    contacts_.resize(kNeighboursRoom);
+    normals_.reserve(kNeighboursRoom);
     step_stamp_ = 0;
   }
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
@@ -443,7 +451,12 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   next_start_ = 0;
   // Each pair schedules at most two events at the start: room for twice the pairs up front
   // keeps the buffer from growing step by step as aggregates densify.
-  if (start_events_.capacity() < 2 * pairs.size()) start_events_.reserve(4 * pairs.size());
+  if (start_events_.capacity() < 2 * pairs.size()) {
+    start_events_.reserve(4 * pairs.size());
+    sorted_events_.reserve(4 * pairs.size());
+    slot_begin_.reserve(4 * pairs.size() + 1);
+    heap_.reserve(4 * pairs.size());  // events scheduled after the start
+  }
   starting_ = true;
   // The pairs are listed by place, their agents' data lie at random ids: they are requested
   // a few pairs ahead, so that the cache misses of several pairs overlap.
