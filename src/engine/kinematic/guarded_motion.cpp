@@ -59,8 +59,12 @@ void GuardedMotion::push_event(const Event& event) {
     start_events_.push_back(event);
     return;
   }
-  std::size_t hole = heap_.size();
   heap_.push_back(event);
+  sift_up(heap_.size() - 1, event);
+}
+
+// Moves `event` up from the free slot `hole` of the heap to where it belongs.
+void GuardedMotion::sift_up(std::size_t hole, const Event& event) {
   while (hole > 0) {
     const std::size_t parent = (hole - 1) / 2;
     if (!earlier(event, heap_[parent])) break;
@@ -159,13 +163,7 @@ GuardedMotion::Event GuardedMotion::pop_event() {
     heap_[hole] = heap_[child - 1];
     hole = child - 1;
   }
-  while (hole > 0) {
-    const std::size_t parent = (hole - 1) / 2;
-    if (!earlier(last, heap_[parent])) break;
-    heap_[hole] = heap_[parent];
-    hole = parent;
-  }
-  heap_[hole] = last;
+  sift_up(hole, last);
   return top;
 }
 

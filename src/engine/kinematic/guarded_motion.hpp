@@ -105,6 +105,7 @@ class GuardedMotion {
   // at most one is current (see resolve), so which of those pops first changes nothing.
   static bool earlier(const Event& a, const Event& b);
   void push_event(const Event& event);
+  void sift_up(std::size_t hole, const Event& event);
   Event pop_event();
   void sort_start_events();
   void schedule_pair_at_start(std::uint32_t pair);
