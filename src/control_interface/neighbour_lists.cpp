@@ -1,7 +1,13 @@
 #include "control_interface/neighbour_lists.hpp"
 
+#include <algorithm>
+
 namespace swarmagg {
 namespace {
+
+// How many pairs (or agents) ahead each pass prefetches: enough to cover a miss to memory
+// with the work of the pairs in between.
+constexpr std::size_t kPrefetchAhead = 16;
 
 // Evaluated whole (no short circuit), so that it can decide without a branch.
 bool nearer(const Neighbour& a, const Neighbour& b) {
@@ -49,6 +55,61 @@ void sort_short_by_distance(Neighbour* first, Neighbour* last) {
   first[1] = other;
 }
 
+// The place kPrefetchAhead on from k, within the first `size` (the last places prefetch
+// the last entry again, which costs nothing).
+std::size_t ahead(std::size_t k, std::size_t size) {
+  return std::min(k + kPrefetchAhead, size - 1);
+}
+
+// Counts each agent's pairs into count[agent], copies the pairs and lists the agents whose
+// count reached 2 in `crowded`; returns how many.
+std::size_t count_pair_ends(std::span<const ClosePair> pairs, std::uint32_t* count, ClosePair* copy,
+                            AgentId* crowded) {
+  std::size_t crowded_count = 0;
+  const std::size_t n = pairs.size();
+  const ClosePair* pair = pairs.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    const ClosePair& next = pair[ahead(k, n)];
+    __builtin_prefetch(count + next.i, 1);
+    __builtin_prefetch(count + next.j, 1);
+    const ClosePair& p = pair[k];
+    copy[k] = p;
+    crowded[crowded_count] = p.i;
+    crowded_count += ++count[p.i] == 2;
+    crowded[crowded_count] = p.j;
+    crowded_count += ++count[p.j] == 2;
+  }
+  return crowded_count;
+}
+
+// Places both ends of every pair at its agent's end (end[agent], decremented: it ends as the
+// agent's start), then sorts the lists of the crowded agents.
+void place_and_sort(std::span<const ClosePair> pairs, std::uint32_t* end, Neighbour* items,
+                    std::span<const AgentId> crowded) {
+  const std::size_t n = pairs.size();
+  const ClosePair* pair = pairs.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    // Two stages: the ends of the pair twice as far ahead, then the items at the ends of
+    // the pair ahead (next to the slots its decrements will fill).
+    const ClosePair& later = pair[ahead(k + kPrefetchAhead, n)];
+    __builtin_prefetch(end + later.i, 1);
+    __builtin_prefetch(end + later.j, 1);
+    const ClosePair& next = pair[ahead(k, n)];
+    __builtin_prefetch(items + end[next.i], 1);
+    __builtin_prefetch(items + end[next.j], 1);
+    const ClosePair& p = pair[k];
+    items[--end[p.i]] = {p.j, p.offset, p.distance};
+    items[--end[p.j]] = {p.i, -p.offset, p.distance};
+  }
+  const std::uint32_t* begin = end;  // placing left each agent's start there
+  for (std::size_t k = 0; k < crowded.size(); ++k) {
+    __builtin_prefetch(begin + crowded[ahead(k + kPrefetchAhead, crowded.size())]);
+    __builtin_prefetch(items + begin[crowded[ahead(k, crowded.size())]], 1);
+    const AgentId a = crowded[k];
+    sort_short_by_distance(items + begin[a], items + begin[a + 1]);
+  }
+}
+
 }  // namespace
 
 void NeighbourLists::close_agent(AgentId agent) {
@@ -65,32 +126,26 @@ void NeighbourLists::close_agent(AgentId agent) {
 // do not depend on the order the pairs came in (distance, then id, orders them totally).
 // An agent's count reaching 2 is rare and unpredictable, so the crowded list is written
 // without a branch (every end written, only the second arrival counted).
+//
+// The pairs come in strip order, so their agents' counts and lists lie at random in memory:
+// in large swarms nearly every access misses the cache (at 10^4 agents, the first level).
+// Each pass therefore prefetches what the pair (or crowded agent) kPrefetchAhead places on
+// will touch, so that many misses are in flight at once instead of one after another. One
+// step of the bench world: 0.051 -> 0.046 ms at 10^4 agents, 18-20 -> 12 ms at 10^6
+// (thread CPU time, best of many, same pairs; callgrind counts more instructions, as the
+// prefetches are some). The passes work through local pointers: through the members, every
+// store could alias them, as far as the compiler knows, and force reloads.
 void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs) {
   begin_.assign(agent_count + 1, 0);
   pairs_.resize(pairs.size());
   crowded_.resize(agent_count + 1);  // every agent once, plus the slot written and not counted
-  std::uint32_t* count = begin_.data();
-  AgentId* crowded = crowded_.data();
-  std::size_t crowded_count = 0;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const ClosePair& p = pairs[k];
-    pairs_[k] = p;
-    crowded[crowded_count] = p.i;
-    crowded_count += ++count[p.i] == 2;
-    crowded[crowded_count] = p.j;
-    crowded_count += ++count[p.j] == 2;
-  }
-  const std::uint32_t total = inclusive_prefix_sum(count, agent_count);
+  const std::size_t crowded_count =
+      count_pair_ends(pairs, begin_.data(), pairs_.data(), crowded_.data());
+  const std::uint32_t total = inclusive_prefix_sum(begin_.data(), agent_count);
   begin_[agent_count] = total;
   items_.resize(total);
-  for (const ClosePair& p : pairs) {
-    items_[--begin_[p.i]] = {p.j, p.offset, p.distance};
-    items_[--begin_[p.j]] = {p.i, -p.offset, p.distance};
-  }
-  for (std::size_t k = 0; k < crowded_count; ++k) {
-    const AgentId a = crowded[k];
-    sort_short_by_distance(items_.data() + begin_[a], items_.data() + begin_[a + 1]);
-  }
+  place_and_sort(pairs, begin_.data(), items_.data(),
+                 std::span<const AgentId>(crowded_.data(), crowded_count));
 }
 
 }  // namespace swarmagg

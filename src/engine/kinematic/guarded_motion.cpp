@@ -1,6 +1,7 @@
 #include "engine/kinematic/guarded_motion.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "geometry/free_motion.hpp"
@@ -14,26 +15,156 @@ constexpr std::uint32_t kNoOne = std::numeric_limits<std::uint32_t>::max();
 // Bodies and walls within this fraction of contact count as touching when a body slides:
 // contact times are roots of quadratics, exact up to rounding.
 constexpr double kTouchingSlack = 1e-9;
-// Relative margin on a squared distance far beyond rounding (a few 1e-16).
-constexpr double kClearlyApart = 1e-12;
+// Loops over pairs or events whose agents' data lie at random ids request those data this
+// many items ahead: enough to cover a miss to memory with the work of the items between.
+constexpr std::uint32_t kPrefetchAhead = 16;
+// Initial room in the buffers of one agent's neighbours: a packed body has about six, the
+// pair reach holds a few more.
+constexpr std::size_t kNeighboursRoom = 64;
+// Runs of events this short are sorted by insertion.
+constexpr std::size_t kSmallSort = 16;
+
+// v == 0, as one test (&& would make two branches, each hard to predict).
+bool is_zero(Vec2 v) {
+  return (v.x == 0.0) & (v.y == 0.0);
+}
+
+// `when ? a : b` by bit masks: for choices that differ from one neighbour to the next,
+// which the branch predictor cannot learn (GCC keeps a branch for a Vec2 ?:).
+Vec2 choose(bool when, Vec2 a, Vec2 b) {
+  const std::uint64_t take_a = 0 - static_cast<std::uint64_t>(when);
+  auto pick = [&](double x, double y) {
+    return std::bit_cast<double>((std::bit_cast<std::uint64_t>(x) & take_a) |
+                                 (std::bit_cast<std::uint64_t>(y) & ~take_a));
+  };
+  return {pick(a.x, b.x), pick(a.y, b.y)};
+}
 
 }  // namespace
 
 // Earliest event first; simultaneous events by their pair's agent ids (i, then j; a wall
 // event as the pair (agent, no one)), then by kind, so the order never depends on how the
-// heap or the pair list is arranged.
-bool GuardedMotion::Later::operator()(const Event& a, const Event& b) const {
-  if (a.time != b.time) return a.time > b.time;
-  const bool wall_a = a.kind == Kind::Wall, wall_b = b.kind == Kind::Wall;
-  if (a.pair != b.pair || wall_a != wall_b) {
-    const std::uint32_t ai = wall_a ? a.pair : pairs[a.pair].i;
-    const std::uint32_t bi = wall_b ? b.pair : pairs[b.pair].i;
-    if (ai != bi) return ai > bi;
-    const std::uint32_t aj = wall_a ? kNoOne : pairs[a.pair].j;
-    const std::uint32_t bj = wall_b ? kNoOne : pairs[b.pair].j;
-    return aj > bj;
+// heap or the pair list is arranged. Event times are never negative (nor -0.0): they start at
+// 0 and add non-negative spans. The bits of such a double order like its value, so time and
+// ids compare as one 128-bit number, without branches the predictor would have to guess.
+bool GuardedMotion::earlier(const Event& a, const Event& b) {
+  using Key = unsigned __int128;
+  const Key key_a = Key{std::bit_cast<std::uint64_t>(a.time)} << 64 | a.ids;
+  const Key key_b = Key{std::bit_cast<std::uint64_t>(b.time)} << 64 | b.ids;
+  return (key_a < key_b) | ((key_a == key_b) & (a.kind < b.kind));
+}
+
+void GuardedMotion::push_event(const Event& event) {
+  if (starting_) {
+    start_events_.push_back(event);
+    return;
   }
-  return a.kind > b.kind;
+  heap_.push_back(event);
+  sift_up(heap_.size() - 1, event);
+}
+
+// Moves `event` up from the free slot `hole` of the heap to where it belongs.
+void GuardedMotion::sift_up(std::size_t hole, const Event& event) {
+  while (hole > 0) {
+    const std::size_t parent = (hole - 1) / 2;
+    if (!earlier(event, heap_[parent])) break;
+    heap_[hole] = heap_[parent];
+    hole = parent;
+  }
+  heap_[hole] = event;
+}
+
+// A counting sort by time slot (a slot per event on average: the slot is monotone in time, so
+// events in earlier slots come first), then each slot sorted by the full order: a few
+// passes over the events and small sorts, where one comparison sort of all would guess
+// wrong at about every other comparison. All the events at time 0 share the first slot,
+// which a comparison sort takes when it is large.
+void GuardedMotion::sort_start_events() {
+  const std::size_t count = start_events_.size();
+  auto by_order = [](const Event& a, const Event& b) { return earlier(a, b); };
+  if (count < kSmallSort) {
+    std::sort(start_events_.begin(), start_events_.end(), by_order);
+    return;
+  }
+  const double per_time = static_cast<double>(count) / limits_.dt;
+  auto slot = [&](const Event& event) {
+    return std::min(count - 1, static_cast<std::size_t>(event.time * per_time));
+  };
+  slot_begin_.assign(count + 1, 0);
+  for (const Event& event : start_events_) ++slot_begin_[slot(event) + 1];
+  for (std::size_t k = 0; k < count; ++k) slot_begin_[k + 1] += slot_begin_[k];
+  sorted_events_.resize(count);
+  for (const Event& event : start_events_) sorted_events_[slot_begin_[slot(event)]++] = event;
+  // slot_begin_[k] is now where slot k ends.
+  std::size_t begin = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t end = slot_begin_[k];
+    if (end - begin > kSmallSort) {
+      std::sort(sorted_events_.begin() + static_cast<std::ptrdiff_t>(begin),
+                sorted_events_.begin() + static_cast<std::ptrdiff_t>(end), by_order);
+    } else {
+      for (std::size_t m = begin + 1; m < end; ++m) {
+        const Event event = sorted_events_[m];
+        std::size_t hole = m;
+        for (; hole > begin && earlier(event, sorted_events_[hole - 1]); --hole) {
+          sorted_events_[hole] = sorted_events_[hole - 1];
+        }
+        sorted_events_[hole] = event;
+      }
+    }
+    begin = end;
+  }
+  start_events_.swap(sorted_events_);
+}
+
+// Pops the earlier of the next start event and the heap's top. The heap is popped bottom-up:
+// the hole left by the top walks down to a leaf along the earlier child (one branch-free
+// comparison a level), and the last event is sifted up from there, which rarely takes more
+// than a level or two.
+GuardedMotion::Event GuardedMotion::pop_event() {
+  if (next_start_ < start_events_.size() &&
+      (heap_.empty() || !earlier(heap_.front(), start_events_[next_start_]))) {
+    // What checking and processing an event reads first, of both its agents, requested
+    // a few events ahead (written out here: GCC drops calls to a function that only
+    // prefetches, taking it for one without effects); the runs of incident ends, found
+    // from incidence_begin_ requested earlier, at half that distance.
+    if (next_start_ + kPrefetchAhead < start_events_.size()) {
+      const Event& ahead = start_events_[next_start_ + kPrefetchAhead];
+      for (const std::uint32_t agent : {ahead.i(), ahead.j()}) {
+        if (agent == kNoOne) continue;
+        __builtin_prefetch(&version_[agent]);
+        __builtin_prefetch(&commands_[agent]);
+        __builtin_prefetch(&signals_[agent]);
+        __builtin_prefetch(&leg_stamp_[agent]);
+        if (incidence_built_) __builtin_prefetch(&incidence_begin_[agent]);
+      }
+      if (incidence_built_) {
+        const Event& nearer = start_events_[next_start_ + kPrefetchAhead / 2];
+        for (const std::uint32_t agent : {nearer.i(), nearer.j()}) {
+          if (agent != kNoOne) __builtin_prefetch(&incident_ends_[incidence_begin_[agent]]);
+        }
+      }
+    }
+    return start_events_[next_start_++];
+  }
+  const Event top = heap_.front();
+  const Event last = heap_.back();
+  heap_.pop_back();
+  const std::size_t size = heap_.size();
+  if (size == 0) return top;
+  std::size_t hole = 0;
+  std::size_t child = 2;
+  for (; child < size; child = 2 * hole + 2) {
+    child -= static_cast<std::size_t>(earlier(heap_[child - 1], heap_[child]));
+    heap_[hole] = heap_[child];
+    hole = child;
+  }
+  if (child == size) {  // a last lone child
+    heap_[hole] = heap_[child - 1];
+    hole = child - 1;
+  }
+  sift_up(hole, last);
+  return top;
 }
 
 bool GuardedMotion::blocks(std::uint32_t mover, std::uint32_t other) const {
@@ -55,16 +186,16 @@ void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
-  if (relative.x == 0.0 && relative.y == 0.0) return;
+  if (is_zero(relative)) return;
   schedule_events(index, pair.offset, relative, 0.0);
 }
 
 void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
                                     double from_time) {
   const CandidatePair& pair = pairs_[index];
+  const std::uint64_t ids = std::uint64_t{pair.i} << 32 | pair.j;
   auto push = [&](double time, Kind kind) {
-    heap_.push_back({time, index, kind, version_[pair.i], version_[pair.j]});
-    std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
+    push_event({time, ids, version_[pair.i], version_[pair.j], kind});
   };
   if (auto t =
           first_contact_time(offset, relative, limits_.detection_radius, from_time, limits_.dt)) {
@@ -92,8 +223,8 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   axis(at.x, v.x, limits_.bounds.low.x, limits_.bounds.high.x);
   axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
   if (first > limits_.dt) return;
-  heap_.push_back({first, agent, Kind::Wall, version_[agent], version_[agent]});
-  std::push_heap(heap_.begin(), heap_.end(), Later{pairs_.data()});
+  push_event(
+      {first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent], Kind::Wall});
 }
 
 // A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
@@ -114,34 +245,66 @@ void GuardedMotion::build_incidence() {
   }
   incident_ends_.resize(total);
   for (auto pair = static_cast<std::uint32_t>(pairs_.size()); pair-- > 0;) {
-    incident_ends_[--incidence_begin_[pairs_[pair].i]] = 2 * pair;
-    incident_ends_[--incidence_begin_[pairs_[pair].j]] = 2 * pair + 1;
+    const CandidatePair& p = pairs_[pair];
+    incident_ends_[--incidence_begin_[p.i]] = {2 * pair, p.j};
+    incident_ends_[--incidence_begin_[p.j]] = {2 * pair + 1, p.i};
   }
   incidence_built_ = true;
 }
 
+// Reads the agent's pairs and where the other agent of each is at `time`. The other agents'
+// data lie at random ids: all are requested before any is used, so that their cache misses
+// overlap.
+void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
+  const std::span<const Incidence> run = incident_ends(agent);
+  // The buffers only grow: resizing them down and up would clear what is overwritten anyway.
+  if (neighbours_.size() < run.size()) neighbours_.resize(2 * run.size());
+  neighbour_count_ = run.size();
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    const Incidence& incidence = run[k];
+    __builtin_prefetch(&pairs_[incidence.end >> 1]);
+    __builtin_prefetch(&leg_stamp_[incidence.other]);
+    __builtin_prefetch(&leg_[incidence.other]);
+    __builtin_prefetch(&commands_[incidence.other]);
+    __builtin_prefetch(&signals_[incidence.other]);
+    neighbours_[k].end = incidence.end;
+    neighbours_[k].other = incidence.other;
+  }
+  // velocity_after and displacement_travelled, with every side read so that the choices
+  // need no branch.
+  for (Neighbour& n : neighbours()) {
+    const bool is_bent = bent(n.other);
+    const Leg& leg = leg_[n.other];
+    const Vec2 commanded = commands_[n.other].velocity;
+    const bool standing = is_zero(leg.velocity);
+    const Vec2 on_leg =
+        choose(standing, leg.origin, leg.origin + leg.velocity * (time - leg.start));
+    n.velocity = choose(is_bent, leg.velocity, commanded);
+    n.travelled = choose(is_bent, on_leg, commanded * time);
+  }
+}
+
 // Schedules the agent's pairs anew from `time` on (its own velocity and displacement looked
-// up once); pairs that keep their distance have no events.
-void GuardedMotion::reschedule(std::uint32_t agent, double time) {
+// up once); pairs that keep their distance have no events. `gathered`: neighbours_ hold the
+// agent's neighbours at `time` already.
+void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) {
   ++version_[agent];
   if (meets_walls(agent)) schedule_wall(agent, time);
   const Vec2 velocity = velocity_after(agent);
   const Vec2 travelled = displacement_travelled(agent, time);
-  for (const std::uint32_t end : incident_ends(agent)) {
-    const CandidatePair& pair = pairs_[end >> 1];
-    const bool agent_is_j = (end & 1) != 0;
-    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
-    const Vec2 other_velocity = velocity_after(other);
-    const Vec2 relative = agent_is_j ? velocity - other_velocity : other_velocity - velocity;
-    if (relative.x == 0.0 && relative.y == 0.0) continue;
-    const Vec2 other_travelled = displacement_travelled(other, time);
-    const Vec2 offset = agent_is_j ? pair.offset + travelled - other_travelled
-                                   : pair.offset + other_travelled - travelled;
-    schedule_events(end >> 1, offset, relative, time);
+  if (!gathered) gather_neighbours(agent, time);
+  for (const Neighbour& n : neighbours()) {
+    const CandidatePair& pair = pairs_[n.end >> 1];
+    const bool agent_is_j = (n.end & 1) != 0;
+    const Vec2 relative = choose(agent_is_j, velocity - n.velocity, n.velocity - velocity);
+    if (is_zero(relative)) continue;
+    const Vec2 offset = choose(agent_is_j, pair.offset + travelled - n.travelled,
+                               pair.offset + n.travelled - travelled);
+    schedule_events(n.end >> 1, offset, relative, time);
   }
 }
 
-void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) {
+void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity, bool gathered) {
   if (!incidence_built_) build_incidence();
   const Vec2 origin = displacement_travelled(agent, time);
   if (!bent(agent)) {
@@ -151,16 +314,16 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity) 
     bent_agents_.push_back(agent);
   }
   leg_[agent] = {time, origin, velocity};
-  reschedule(agent, time);
+  reschedule(agent, time, gathered);
 }
 
 // An agent halted once stands for the rest of the step; a halt at the step's end changes
 // nothing (and keeps the events due then).
-void GuardedMotion::halt(std::uint32_t agent, double time) {
+void GuardedMotion::halt(std::uint32_t agent, double time, bool gathered) {
   if (time >= limits_.dt) return;
   const Vec2 v = velocity_after(agent);
-  if (v.x == 0.0 && v.y == 0.0) return;  // standing already
-  change_leg(agent, time, Vec2{});
+  if (is_zero(v)) return;  // standing already
+  change_leg(agent, time, Vec2{}, gathered);
 }
 
 // The walls the agent touches at `time`, as WallContact bits, with their normals appended.
@@ -187,55 +350,61 @@ std::uint8_t GuardedMotion::touched_walls(std::uint32_t agent, double time,
 // order of their ids: ties between equally long slides are broken by that order, so the
 // result does not depend on how the pairs are listed.
 void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals) {
-  contacts_.clear();
   const double touching = limits_.contact_distance * (1.0 + kTouchingSlack);
-  // Squared distances above this have a square root above `touching` whatever the rounding:
-  // bodies clearly apart are passed over without one.
-  const double apart2 = touching * touching * (1.0 + kClearlyApart);
   const Vec2 travelled = displacement_travelled(agent, time);
-  for (const std::uint32_t end : incident_ends(agent)) {
-    const CandidatePair& pair = pairs_[end >> 1];
-    const bool agent_is_j = (end & 1) != 0;
-    const std::uint32_t other = agent_is_j ? pair.i : pair.j;
-    if (!blocks(agent, other)) continue;
-    const Vec2 other_travelled = displacement_travelled(other, time);
-    const Vec2 from_i = agent_is_j ? pair.offset + travelled - other_travelled
-                                   : pair.offset + other_travelled - travelled;
-    const Vec2 towards = agent_is_j ? Vec2{} - from_i : from_i;
-    if (norm2(towards) > apart2) continue;
+  // Half the neighbours of a body in a packed aggregate touch it: every neighbour is
+  // measured (a square root is cheaper than a mispredicted branch) and kept or not without
+  // a branch.
+  if (contacts_.size() < neighbour_count_) contacts_.resize(neighbours_.size());
+  std::size_t touched = 0;
+  for (const Neighbour& n : neighbours()) {
+    const CandidatePair& pair = pairs_[n.end >> 1];
+    const bool agent_is_j = (n.end & 1) != 0;
+    const Vec2 from_i = choose(agent_is_j, pair.offset + travelled - n.travelled,
+                               pair.offset + n.travelled - travelled);
+    const Vec2 towards = choose(agent_is_j, Vec2{} - from_i, from_i);
     const double distance = norm(towards);
-    if (distance > touching || distance <= 0.0) continue;
-    contacts_.push_back({other, towards * (1.0 / distance)});
+    contacts_[touched] = {n.other, towards * (1.0 / distance)};
+    const bool within = !(distance > touching) & !(distance <= 0.0);
+    touched += static_cast<std::size_t>(within & blocks(agent, n.other));
   }
   // A body touches a handful of others, with distinct ids: insertion sort.
-  for (std::size_t k = 1; k < contacts_.size(); ++k) {
+  for (std::size_t k = 1; k < touched; ++k) {
     for (std::size_t m = k; m > 0 && contacts_[m].first < contacts_[m - 1].first; --m) {
       std::swap(contacts_[m], contacts_[m - 1]);
     }
   }
-  for (const auto& contact : contacts_) normals.push_back(contact.second);
+  for (std::size_t k = 0; k < touched; ++k) normals.push_back(contacts_[k].second);
 }
 
 // The agent touches a body solid to it or a wall and presses into it. Sliding, it goes on
 // with the part of its commanded velocity that everything it touches now lets through; when
 // that is nothing, or what it already does (the contact presses into it, not it into the
 // contact), or it slid too often this step, it halts.
+//
+// An agent commanded to stand is never bent (it cannot halt, and free_motion of a zero
+// velocity is zero, which is what it does), so nothing here changes it: a waiting agent
+// pressed on by a moving neighbour returns at once.
 void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
   if (time >= limits_.dt) return;
+  const Vec2 commanded = commands_[agent].velocity;
+  if (is_zero(commanded)) return;
   if (!incidence_built_) build_incidence();
   normals_.clear();
   const std::uint8_t walls = touched_walls(agent, time, normals_);
   if (limits_.response == ContactResponse::Stop || (bent(agent) && slides_[agent] >= kMaxSlides)) {
     halt(agent, time);
   } else {
+    gather_neighbours(agent, time);
     touched_bodies(agent, time, normals_);
     const Vec2 slide = free_motion(commands_[agent].velocity, normals_);
     const Vec2 now = velocity_after(agent);
+    // Only the agent's own leg changes from here on: the neighbours stay as gathered.
     if (slide.x == now.x && slide.y == now.y) {
-      halt(agent, time);
+      halt(agent, time, true);
     } else {
-      change_leg(agent, time, slide);
-      if (slide.x != 0.0 || slide.y != 0.0) ++slides_[agent];
+      change_leg(agent, time, slide, true);
+      if (!is_zero(slide)) ++slides_[agent];
     }
   }
   if (bent(agent)) walls_touched_[agent] |= walls;
@@ -249,6 +418,11 @@ void GuardedMotion::reset(std::size_t agents) {
     slides_.assign(agents, 0);
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
+    // Room for more neighbours than a packed body has, so that the buffers do not grow
+    // during a run.
+    neighbours_.resize(kNeighboursRoom);
+    contacts_.resize(kNeighboursRoom);
+    normals_.reserve(kNeighboursRoom);
     step_stamp_ = 0;
   }
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
@@ -271,40 +445,62 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   limits_ = limits;
   incidence_built_ = false;
   heap_.clear();
-  // Each pair schedules at most two events at the start and two more per change of either
-  // agent; room for twice the pairs up front keeps the heap from growing step by step as
-  // aggregates densify.
-  if (heap_.capacity() < 2 * pairs.size()) heap_.reserve(4 * pairs.size());
-  for (std::uint32_t k = 0; k < pairs.size(); ++k) schedule_pair_at_start(k);
+  start_events_.clear();
+  next_start_ = 0;
+  // Each pair schedules at most two events at the start: room for twice the pairs up front
+  // keeps the buffer from growing step by step as aggregates densify.
+  if (start_events_.capacity() < 2 * pairs.size()) {
+    start_events_.reserve(4 * pairs.size());
+    sorted_events_.reserve(4 * pairs.size());
+    slot_begin_.reserve(4 * pairs.size() + 1);
+    heap_.reserve(4 * pairs.size());  // events scheduled after the start
+  }
+  starting_ = true;
+  // The pairs are listed by place, their agents' data lie at random ids: they are requested
+  // a few pairs ahead, so that the cache misses of several pairs overlap.
+  const auto count = static_cast<std::uint32_t>(pairs.size());
+  for (std::uint32_t k = 0; k < count; ++k) {
+    if (k + kPrefetchAhead < count) {
+      const CandidatePair& ahead = pairs_[k + kPrefetchAhead];
+      __builtin_prefetch(&commands_[ahead.i]);
+      __builtin_prefetch(&commands_[ahead.j]);
+      __builtin_prefetch(&version_[ahead.i]);
+      __builtin_prefetch(&version_[ahead.j]);
+    }
+    schedule_pair_at_start(k);
+  }
   if (limits_.walls) {
     for (std::uint32_t a = 0; a < commands.size(); ++a) {
       if (meets_walls(a)) schedule_wall(a, 0.0);
     }
   }
+  starting_ = false;
+  sort_start_events();
 
+  // An event is current while neither agent changed since it was scheduled; a change
+  // schedules the pair anew with new versions, at most one perceive and one contact event,
+  // so of several events with the same pair, kind and time at most one is current.
   std::uint64_t encounters = 0;
-  const Later later{pairs_.data()};
-  while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
-    const Event event = heap_.back();
-    heap_.pop_back();
+  while (next_start_ < start_events_.size() || !heap_.empty()) {
+    const Event event = pop_event();
+    const std::uint32_t i = event.i();
     if (event.kind == Kind::Wall) {
-      if (event.version_i == version_[event.pair]) respond_to_contact(event.pair, event.time);
+      if (event.version_i == version_[i]) respond_to_contact(i, event.time);
       continue;
     }
-    const CandidatePair& pair = pairs_[event.pair];
-    if (event.version_i != version_[pair.i] || event.version_j != version_[pair.j]) continue;
+    const std::uint32_t j = event.j();
+    if (event.version_i != version_[i] || event.version_j != version_[j]) continue;
     if (event.kind == Kind::Perceive) {
       ++encounters;
-      const bool halt_i = halts_for(pair.i, pair.j);
-      const bool halt_j = halts_for(pair.j, pair.i);
-      if (halt_i) halt(pair.i, event.time);
-      if (halt_j) halt(pair.j, event.time);
+      const bool halt_i = halts_for(i, j);
+      const bool halt_j = halts_for(j, i);
+      if (halt_i) halt(i, event.time);
+      if (halt_j) halt(j, event.time);
     } else {
-      const bool blocked_i = blocks(pair.i, pair.j);
-      const bool blocked_j = blocks(pair.j, pair.i);
-      if (blocked_i) respond_to_contact(pair.i, event.time);
-      if (blocked_j) respond_to_contact(pair.j, event.time);
+      const bool blocked_i = blocks(i, j);
+      const bool blocked_j = blocks(j, i);
+      if (blocked_i) respond_to_contact(i, event.time);
+      if (blocked_j) respond_to_contact(j, event.time);
     }
   }
   return encounters;

@@ -77,16 +77,16 @@ class GuardedMotion {
 
  private:
   enum class Kind : std::uint8_t { Perceive, Contact, Wall };
+  // An event carries the ids it is ordered by and checked against, so that popping one reads
+  // neither its pair nor (for a stale one) anything but the two versions.
   struct Event {
     double time;
-    std::uint32_t pair;  // for Wall events, the agent
-    Kind kind;
+    std::uint64_t ids;  // (i << 32) | j; for a Wall event (agent << 32) | no one
     std::uint32_t version_i;
     std::uint32_t version_j;
-  };
-  struct Later {  // heap order: the earliest event on top
-    const CandidatePair* pairs;
-    bool operator()(const Event& a, const Event& b) const;
+    Kind kind;
+    std::uint32_t i() const { return static_cast<std::uint32_t>(ids >> 32); }
+    std::uint32_t j() const { return static_cast<std::uint32_t>(ids); }
   };
   // An agent's motion after its last change within the step: from `start` on it is at
   // `origin` (displacement from its step start) plus velocity * (t - start).
@@ -97,19 +97,38 @@ class GuardedMotion {
   };
 
   void reset(std::size_t agents);
+  // The events of the step, earliest first. Those scheduled at the step's start (most of
+  // them) are sorted once and read in order; those scheduled later go to a binary min-heap,
+  // and each pop takes the earlier of the two heads. A heap of all events would be walked
+  // from top to bottom at every pop, which at a million agents misses the cache at every
+  // lower level. The order is total up to events of the same pair, kind and time, of which
+  // at most one is current (see resolve), so which of those pops first changes nothing.
+  static bool earlier(const Event& a, const Event& b);
+  void push_event(const Event& event);
+  void sift_up(std::size_t hole, const Event& event);
+  Event pop_event();
+  void sort_start_events();
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
   // relative velocity then.
   void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time);
   void schedule_wall(std::uint32_t agent, double from_time);
-  void reschedule(std::uint32_t agent, double time);
-  void change_leg(std::uint32_t agent, double time, Vec2 velocity);
-  void halt(std::uint32_t agent, double time);
+  void gather_neighbours(std::uint32_t agent, double time);
+  void reschedule(std::uint32_t agent, double time, bool gathered);
+  void change_leg(std::uint32_t agent, double time, Vec2 velocity, bool gathered);
+  void halt(std::uint32_t agent, double time, bool gathered = false);
   void respond_to_contact(std::uint32_t agent, double time);
   std::uint8_t touched_walls(std::uint32_t agent, double time, std::vector<Vec2>& normals) const;
+  // Of the neighbours gathered at `time`.
   void touched_bodies(std::uint32_t agent, double time, std::vector<Vec2>& normals);
   void build_incidence();
-  std::span<const std::uint32_t> incident_ends(std::uint32_t agent) const {
+  // A pair end (2 * pair + end, end 1 for j) with the pair's other agent, so that the other's
+  // data can be requested without waiting for the pair to be read.
+  struct Incidence {
+    std::uint32_t end;
+    std::uint32_t other;
+  };
+  std::span<const Incidence> incident_ends(std::uint32_t agent) const {
     return {incident_ends_.data() + incidence_begin_[agent],
             incident_ends_.data() + incidence_begin_[agent + 1]};
   }
@@ -121,7 +140,9 @@ class GuardedMotion {
   // velocity * min(time, stop time): ContactResponse::Stop reproduces the halting engine.
   Vec2 displacement_travelled(std::uint32_t agent, double time) const {
     if (!bent(agent)) return commands_[agent].velocity * time;
-    const Leg& leg = leg_[agent];
+    return travelled_on(leg_[agent], time);
+  }
+  static Vec2 travelled_on(const Leg& leg, double time) {
     if (leg.velocity.x == 0.0 && leg.velocity.y == 0.0) return leg.origin;
     return leg.origin + leg.velocity * (time - leg.start);
   }
@@ -135,6 +156,11 @@ class GuardedMotion {
   std::span<const Signal> signals_;
   std::span<const Vec2> positions_;
   MotionLimits limits_;
+  bool starting_ = false;  // events go to start_events_, not to the heap
+  std::vector<Event> start_events_;
+  std::vector<Event> sorted_events_;
+  std::vector<std::size_t> slot_begin_;
+  std::size_t next_start_ = 0;
   std::vector<Event> heap_;
   // Legs of the agents whose motion changed this step (leg_stamp_ == step_stamp_); the
   // others move with their commanded velocity all step.
@@ -152,7 +178,18 @@ class GuardedMotion {
   // rescheduling an agent reads one short contiguous run.
   bool incidence_built_ = false;
   AgentArray<std::uint32_t> incidence_begin_;
-  AgentArray<std::uint32_t> incident_ends_;
+  AgentArray<Incidence> incident_ends_;
+  // The other agent of each of an agent's pairs, with its velocity and displacement at the
+  // time they were gathered.
+  struct Neighbour {
+    std::uint32_t end;
+    std::uint32_t other;
+    Vec2 velocity;
+    Vec2 travelled;
+  };
+  std::vector<Neighbour> neighbours_;
+  std::size_t neighbour_count_ = 0;
+  std::span<Neighbour> neighbours() { return {neighbours_.data(), neighbour_count_}; }
   std::vector<std::pair<std::uint32_t, Vec2>> contacts_;  // of the agent sliding, by id
   std::vector<Vec2> normals_;
 };

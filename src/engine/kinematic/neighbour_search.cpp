@@ -53,11 +53,12 @@ void NeighbourSearch::scan_task(int task, int tasks) {
   const auto last = static_cast<int>(StepThreads::slice_begin(strips, task + 1, tasks));
   strips_.for_each_candidate(first, last, [&](std::uint32_t a, std::uint32_t b) {
     const std::uint32_t id_a = strips_.id(a), id_b = strips_.id(b);
-    if (id_a < id_b) {
-      report(out, id_a, id_b, arena_.displacement(strips_.position(a), strips_.position(b)));
-    } else {
-      report(out, id_b, id_a, arena_.displacement(strips_.position(b), strips_.position(a)));
-    }
+    // From the lower id to the higher. Which slot holds it is a coin toss, so the two are
+    // ordered by a mask (all ones if b comes first), not by a branch.
+    const std::uint32_t b_first = 0u - static_cast<std::uint32_t>(id_b < id_a);
+    const std::uint32_t i = id_a ^ ((id_a ^ id_b) & b_first), j = i ^ id_a ^ id_b;
+    const std::uint32_t from = a ^ ((a ^ b) & b_first), to = from ^ a ^ b;
+    report(out, i, j, arena_.displacement(strips_.position(from), strips_.position(to)));
   });
 }
 void NeighbourSearch::join_tasks(int tasks) {

@@ -127,8 +127,8 @@ void SortedStrips::restrip(std::span<const Vec2> positions, StepThreads& threads
 
 // Copies the agents' new positions into their slots and lists those that changed strip.
 // The agents are read in sorted order, so their positions (by id) are scattered in memory:
-// they are prefetched a little ahead (the padding after the last strip keeps the look-ahead
-// inside the arrays).
+// they are prefetched kLookAhead slots ahead (the padding after the last strip keeps the
+// look-ahead inside the arrays).
 void SortedStrips::refresh_strips(std::span<const Vec2> positions, int task, int first, int last) {
   std::vector<Arrival>& leavers = leavers_[static_cast<std::size_t>(task)];
   leavers.clear();

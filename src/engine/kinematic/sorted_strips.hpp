@@ -30,7 +30,10 @@ class SortedStrips {
  public:
   static constexpr std::uint32_t kNoAgent = std::numeric_limits<std::uint32_t>::max();
   // Slots after the last strip, read by look-ahead (as sentinels: x = infinity, no agent).
-  static constexpr std::uint32_t kLookAhead = 16;
+  // Also how far ahead refresh_strips prefetches: in a million agents nearly every read by
+  // id misses to memory, and 64 agents' work covers that latency where 16 did not (one
+  // update of the bench world at 10^6 agents: 8.2 -> 5.9 ms).
+  static constexpr std::uint32_t kLookAhead = 64;
 
   // Whether the arena is large enough for strips of `window`: at least three strips, and
   // three windows across, so that no pair is met twice around the torus.
@@ -126,17 +129,20 @@ void SortedStrips::for_each_candidate(int first, int last, Visit&& visit) const 
 }
 
 // The first slot from `low` on whose x is not below `from`, the strip being sorted up to its
-// sentinel. The strip above holds about as many agents as this one, so `low` moves about one
-// slot per agent: four slots are compared at once, without branches (a mispredicted loop exit
-// per agent would cost more), and the four loads do not wait on each other, as they would
-// when stepping one slot at a time: `low` carries from agent to agent, so its update is the
-// scan's critical path. The slots compared may lie past the sentinel (in the next strip or
-// the padding), hence only the leading run of slots below `from` counts.
+// sentinel. The strip above holds about as many agents as this one, so the answer moves about
+// one slot per agent, and scan_strip starts each agent from the answer two agents back: eight
+// slots are compared at once, without branches (a mispredicted loop exit per agent would cost
+// more), and the loads do not wait on each other, as they would when stepping one slot at a
+// time: `low` carries from agent to agent, so its update is the scan's critical path. The
+// slots compared may lie past the sentinel (in the next strip or the padding), hence only the
+// leading run of slots below `from` counts.
 inline std::uint32_t SortedStrips::advance_past(const double* x, std::uint32_t low, double from) {
 #ifdef __SSE2__
   const __m128d bound = _mm_set1_pd(from);
   const int below = _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low), bound)) |
-                    _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low + 2), bound)) << 2;
+                    _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low + 2), bound)) << 2 |
+                    _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low + 4), bound)) << 4 |
+                    _mm_movemask_pd(_mm_cmplt_pd(_mm_loadu_pd(x + low + 6), bound)) << 6;
   low += static_cast<std::uint32_t>(__builtin_ctz(~below));  // the leading run's length
 #else
   const unsigned first = x[low] < from;
@@ -166,7 +172,13 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
     while (inner < end && x[inner] - window < 0.0) ++inner;
     while (outer > inner && x[outer - 1] + window >= arena_.width()) --outer;
   }
-  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end;
+  // The first slot of the strip above within the window of the agent before (`low`) and of
+  // the one before that (`earlier`). Each agent's search starts from the latter: any slot up
+  // to its own answer gives the same answer (the strip above is sorted by x, and xa - window
+  // grows from agent to agent), and the search then waits only on the agent two back, so
+  // that two agents' searches overlap (scan at 10^4 agents: 0.113 -> 0.105 ms; from the
+  // agent just before, or four slots at once, it was no faster).
+  std::uint32_t low = above ? strip_first(top ? 0 : s + 1) : end, earlier = low;
   for (std::uint32_t a = begin; a < end; ++a) {
     const double xa = x[a], ya = y[a];
     const double high = xa + window;
@@ -176,9 +188,11 @@ void SortedStrips::scan_strip(int s, Visit& visit) const {
       if (dx * dx + dy * dy <= window2) visit(a, b);
     }
     // The strip above, within [xa - window, xa + window]; `low` only moves forward. (Without
-    // a strip above, `low` rests on this strip's sentinel and the loops do nothing.)
+    // a strip above, `low` rests on this strip's sentinel and the loop does nothing.)
     const double ya_below = ya - shift_y, from = xa - window;
-    low = advance_past(x, low, from);
+    const std::uint32_t latest = advance_past(x, earlier, from);
+    earlier = low;
+    low = latest;
     for (std::uint32_t b = low; x[b] <= high; ++b) {
       const double dx = x[b] - xa, dy = y[b] - ya_below;
       if (dx * dx + dy * dy <= window2) visit(a, b);

@@ -95,6 +95,27 @@ INSTANTIATE_TEST_SUITE_P(Steps, SortedStripsWalk,
                                   (info.param.step_reach < 1.0 ? "_drift" : "_jumps");
                          });
 
+// Each agent's search of the strip above starts where the search of the agent two before it
+// ended, eight slots at a time. Here the strip above crowds 40 agents into two units of x,
+// which the agents below reach, stand among and pass: the start moves by none, a few and
+// more than eight slots, and a start past the first partner would lose pairs of the run.
+TEST(SortedStrips, FindsThePairsOfAStripAboveThatCrowdsInOnePlace) {
+  for (const Topology topology : {Topology::Torus, Topology::Walls}) {
+    const ArenaGeometry arena(60.0, 60.0, topology);
+    const double window = 4.2;
+    std::vector<Vec2> positions;
+    for (int k = 0; k < 40; ++k) positions.push_back({20.0 + 0.05 * k, 5.0 + 0.02 * (k % 7)});
+    for (const double x : {1.0, 5.0, 15.9, 16.0, 18.0, 20.5, 21.0, 21.2, 24.0, 26.5, 30.0, 50.0}) {
+      positions.push_back({x, 3.0});
+    }
+    SortedStrips strips;
+    StepThreads threads;
+    ASSERT_TRUE(SortedStrips::fits(arena, window));
+    strips.update(arena, window, positions, threads);
+    EXPECT_EQ(strip_pairs(strips, positions), brute_force_pairs(arena, positions, window));
+  }
+}
+
 // Agents all crowding into one strip, then spreading out again: strips empty and fill.
 TEST(SortedStrips, FollowsAgentsIntoOneStripAndOutAgain) {
   const ArenaGeometry arena(60.0, 60.0, Topology::Torus);
