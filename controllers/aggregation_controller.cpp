@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/agents_in_state.hpp"
+
 namespace swarmagg {
 
 bool AggregationController::searching(std::uint32_t agent) const {
@@ -43,12 +45,25 @@ struct WaitingView {
 // changes a waiting agent's state or partner.
 void AggregationController::update_waiting(const ControllerInput& input, SwarmState& swarm,
                                            const CounterRng& rng, EventCounts& events) {
+  // The switches that hold for the whole decision are template arguments, so that the
+  // per-agent loop carries no test of them.
+  const bool compacts = rules_.compaction.enabled;
+  if (rules_.join) {
+    if (compacts) return update_waiting_as<true, true>(input, swarm, rng, events);
+    return update_waiting_as<true, false>(input, swarm, rng, events);
+  }
+  if (compacts) return update_waiting_as<false, true>(input, swarm, rng, events);
+  update_waiting_as<false, false>(input, swarm, rng, events);
+}
+
+template <bool kJoin, bool kCompaction>
+void AggregationController::update_waiting_as(const ControllerInput& input, SwarmState& swarm,
+                                              const CounterRng& rng, EventCounts& events) {
   const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
   const AgentState* previous = previous_.data();
   const std::int32_t* aggregate = input.aggregates.aggregate_of.data();
   const NeighbourLists& neighbours = input.neighbours;
   const double radius = rules_.detection_radius;
-  const bool join = rules_.join;
   const CompactionRule& compaction = rules_.compaction;
   const LeaveRule& rule = rules_.leave_rule;
   const bool counts_neighbours =
@@ -60,19 +75,24 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
   // under join: false its waiting partner only: a waiting neighbour whose key (aggregate, or
   // index) is the agent's own key. No key is below -1, so kNoMembers matches nobody.
   constexpr std::int32_t kNoMembers = std::numeric_limits<std::int32_t>::min();
+  // The view is gathered in locals, which the compiler keeps in registers.
   const auto look_around = [&](std::uint32_t agent, std::int32_t partner) {
-    const std::int32_t own = join ? aggregate[agent] : partner;  // negative: none
-    const std::int32_t own_key = compaction.enabled && own >= 0 ? own : kNoMembers;
-    WaitingView view;
+    const std::int32_t own = kJoin ? aggregate[agent] : partner;  // negative: none
+    const std::int32_t own_key = own >= 0 ? own : kNoMembers;
+    int perceived = 0;
+    bool sees_waiting = false;
+    Vec2 force;
     for (const Neighbour& nb : neighbours.of(agent)) {
       if (nb.distance > radius) break;
-      ++view.perceived;
+      ++perceived;
       const bool waited = previous[nb.id] == AgentState::Wait;
-      view.sees_waiting |= waited;
-      const std::int32_t key = join ? aggregate[nb.id] : static_cast<std::int32_t>(nb.id);
-      if (waited & (key == own_key)) add_spring_force(compaction, nb, view.force);
+      sees_waiting |= waited;
+      if constexpr (kCompaction) {
+        const std::int32_t key = kJoin ? aggregate[nb.id] : static_cast<std::int32_t>(nb.id);
+        if (waited & (key == own_key)) add_spring_force(compaction, nb, force);
+      }
     }
-    return view;
+    return WaitingView{perceived, sees_waiting, force};
   };
   if (movers_.size() != swarm.size()) movers_.resize(swarm.size());
   Mover* movers = movers_.data();
@@ -91,7 +111,7 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
         (static_cast<std::uint32_t>(partner) & partner_mask) | (agent & ~partner_mask);
     const bool partner_waits = has_partner & (previous[partner_or_self] == AgentState::Wait);
     if (partner != kNoPartner && !partner_waits) swarm.partner[agent] = kNoPartner;
-    const bool isolated = join ? !view.sees_waiting : !partner_waits;
+    const bool isolated = kJoin ? !view.sees_waiting : !partner_waits;
     if (rules_.resume_when_isolated && isolated) {
       swarm.state[agent] = AgentState::Go;
       swarm.partner[agent] = kNoPartner;
@@ -109,7 +129,7 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
         swarm.leave_time_left[agent] = rules_.leave_timeout;
         if (const auto away = escape_direction(agent, input)) {
           swarm.heading[agent] = *away;
-        } else if (compaction.enabled) {
+        } else if (kCompaction) {
           swarm.heading[agent] = random_heading(rng, input.step, agent, Draw::EnclosedLeave);
         }
         count_leave(input.aggregates.aggregate_of[agent], leavers_left_, events);
@@ -120,9 +140,10 @@ void AggregationController::update_waiting(const ControllerInput& input, SwarmSt
     // +0; the rest move at random to the branch predictor, so each is written to the next
     // slot, which only those that may move keep (squared forces below standing_norm2_
     // surely stand).
-    if (!compaction.enabled) continue;
-    movers[mover_count] = {agent, view.force};
-    mover_count += !(norm2(view.force) < standing_norm2_);
+    if constexpr (kCompaction) {
+      movers[mover_count] = {agent, view.force};
+      mover_count += !(norm2(view.force) < standing_norm2_);
+    }
   }
   mover_count_ = mover_count;
 }
@@ -265,34 +286,17 @@ void AggregationController::write_commands(const SwarmState& swarm,
   }
 }
 
-// Index lists of the agents by the state they start the decision in, filled without
-// branches: each index is written to every list, and only the matching list's end advances.
-// The searching and waiting ends share one 64-bit counter (32 bits each, as indices are
-// 32-bit); the ends advance by table lookups.
+// Index lists of the agents by the state they start the decision in, sixteen agents at a
+// time without branches (core/agents_in_state.hpp).
 void AggregationController::list_by_state(std::size_t n) {
+  const std::span<const AgentState> previous(previous_.data(), n);
   for (IndexList* list : {&searchers_, &waiters_, &leavers_}) {
     if (list->slots.size() != n) list->slots.resize(n);
   }
-  constexpr std::uint64_t kSearcher = 1, kWaiter = std::uint64_t{1} << 32;
-  // Indexed by AgentState: Go, Wait, Leave, Approach (see write_commands).
-  constexpr std::uint64_t kAdvance[kAgentStateCount] = {kSearcher, kWaiter, 0, kSearcher};
-  constexpr std::size_t kLeaver[kAgentStateCount] = {0, 0, 1, 0};
-  std::uint64_t searching_waiting = 0;
-  std::size_t leaving = 0;
-  const AgentState* previous = previous_.data();
-  std::uint32_t* s = searchers_.slots.data();
-  std::uint32_t* w = waiters_.slots.data();
-  std::uint32_t* l = leavers_.slots.data();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const AgentState state = previous[i];
-    s[searching_waiting & 0xFFFFFFFFu] = w[searching_waiting >> 32] = l[leaving] = i;
-    const unsigned index = static_cast<std::uint8_t>(state) & 3u;
-    searching_waiting += kAdvance[index];
-    leaving += kLeaver[index];
-  }
-  searchers_.count = searching_waiting & 0xFFFFFFFFu;
-  waiters_.count = searching_waiting >> 32;
-  leavers_.count = leaving;
+  searchers_.count = list_agents_in_states(previous, AgentState::Go, AgentState::Approach,
+                                           searchers_.slots.data());
+  waiters_.count = list_agents_in_state(previous, AgentState::Wait, waiters_.slots.data());
+  leavers_.count = list_agents_in_state(previous, AgentState::Leave, leavers_.slots.data());
 }
 
 void AggregationController::decide(const ControllerInput& input, SwarmState& swarm,

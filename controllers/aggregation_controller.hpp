@@ -53,6 +53,9 @@ class AggregationController final : public Controller {
                       const CounterRng& rng);
   void update_waiting(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
                       EventCounts& events);
+  template <bool kJoin, bool kCompaction>
+  void update_waiting_as(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
+                         EventCounts& events);
   void join_waiting(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void pair_searchers(const ControllerInput& input, SwarmState& swarm, EventCounts& events);
   void steer_searchers(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng);

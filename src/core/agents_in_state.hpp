@@ -41,11 +41,11 @@ constexpr std::array<std::uint8_t, 256> kSetBitCounts = [] {
 
 }  // namespace agents_in_state_detail
 
-// Writes the indices of the agents whose state is `wanted`, in increasing order, to
-// out[0, count) and returns count. `out` must hold states.size() entries; all of them may be
-// written.
-inline std::size_t list_agents_in_state(std::span<const AgentState> states, AgentState wanted,
-                                        std::uint32_t* out) {
+// Writes the indices of the agents whose state is `wanted` or `also_wanted`, in increasing
+// order, to out[0, count) and returns count. `out` must hold states.size() entries; all of
+// them may be written.
+inline std::size_t list_agents_in_states(std::span<const AgentState> states, AgentState wanted,
+                                         AgentState also_wanted, std::uint32_t* out) {
   const std::size_t n = states.size();
   const AgentState* s = states.data();
   std::size_t count = 0;
@@ -54,6 +54,7 @@ inline std::size_t list_agents_in_state(std::span<const AgentState> states, Agen
   using agents_in_state_detail::kSetBitCounts;
   using agents_in_state_detail::kSetBitPositions;
   const __m128i wanted_bytes = _mm_set1_epi8(static_cast<char>(wanted));
+  const __m128i also_wanted_bytes = _mm_set1_epi8(static_cast<char>(also_wanted));
   const __m128i zero = _mm_setzero_si128();
   // Eight agents from `first` whose bits are `bits`: their indices are first + positions.
   // The stores reach out[count + 7] <= first + 7, within the agents seen so far.
@@ -68,16 +69,23 @@ inline std::size_t list_agents_in_state(std::span<const AgentState> states, Agen
   };
   for (; i + 16 <= n; i += 16) {
     const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
-    const auto bits = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, wanted_bytes)));
+    const auto bits = static_cast<unsigned>(_mm_movemask_epi8(_mm_or_si128(
+        _mm_cmpeq_epi8(bytes, wanted_bytes), _mm_cmpeq_epi8(bytes, also_wanted_bytes))));
     emit_eight(bits & 0xffu, i);
     emit_eight(bits >> 8, i + 8);
   }
 #endif
   for (; i < n; ++i) {
     out[count] = static_cast<std::uint32_t>(i);
-    count += s[i] == wanted;
+    count += (s[i] == wanted) | (s[i] == also_wanted);
   }
   return count;
+}
+
+// The agents whose state is `wanted` (as list_agents_in_states).
+inline std::size_t list_agents_in_state(std::span<const AgentState> states, AgentState wanted,
+                                        std::uint32_t* out) {
+  return list_agents_in_states(states, wanted, wanted, out);
 }
 
 }  // namespace swarmagg

@@ -9,17 +9,29 @@ namespace {
 
 // The plain definition the listing must agree with.
 std::vector<std::uint32_t> listed_one_by_one(const std::vector<AgentState>& states,
-                                             AgentState wanted) {
+                                             AgentState wanted, AgentState also_wanted) {
   std::vector<std::uint32_t> indices;
   for (std::uint32_t i = 0; i < states.size(); ++i) {
-    if (states[i] == wanted) indices.push_back(i);
+    if (states[i] == wanted || states[i] == also_wanted) indices.push_back(i);
   }
   return indices;
+}
+
+std::vector<std::uint32_t> listed_one_by_one(const std::vector<AgentState>& states,
+                                             AgentState wanted) {
+  return listed_one_by_one(states, wanted, wanted);
 }
 
 std::vector<std::uint32_t> listed(const std::vector<AgentState>& states, AgentState wanted) {
   std::vector<std::uint32_t> out(states.size(), 0xdeadbeef);
   out.resize(list_agents_in_state(states, wanted, out.data()));
+  return out;
+}
+
+std::vector<std::uint32_t> listed(const std::vector<AgentState>& states, AgentState wanted,
+                                  AgentState also_wanted) {
+  std::vector<std::uint32_t> out(states.size(), 0xdeadbeef);
+  out.resize(list_agents_in_states(states, wanted, also_wanted, out.data()));
   return out;
 }
 
@@ -44,9 +56,21 @@ TEST(AgentsInState, AgreesWithOneByOneAtEveryLengthAndMix) {
       for (int wanted = 0; wanted < kAgentStateCount; ++wanted) {
         const auto state = static_cast<AgentState>(wanted);
         ASSERT_EQ(listed(states, state), listed_one_by_one(states, state)) << "n = " << n;
+        for (int also = 0; also < kAgentStateCount; ++also) {
+          const auto also_state = static_cast<AgentState>(also);
+          ASSERT_EQ(listed(states, state, also_state), listed_one_by_one(states, state, also_state))
+              << "n = " << n << ", states " << wanted << " and " << also;
+        }
       }
     }
   }
+}
+
+TEST(AgentsInState, ListsTheAgentsInEitherOfTwoStates) {
+  const std::vector<AgentState> states = {AgentState::Go, AgentState::Wait, AgentState::Approach,
+                                          AgentState::Leave, AgentState::Go};
+  EXPECT_EQ(listed(states, AgentState::Go, AgentState::Approach),
+            (std::vector<std::uint32_t>{0, 2, 4}));
 }
 
 TEST(AgentsInState, ListsEveryAgentWhenAllShareTheState) {
