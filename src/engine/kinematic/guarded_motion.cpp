@@ -40,6 +40,14 @@ Vec2 choose(bool when, Vec2 a, Vec2 b) {
   return {pick(a.x, b.x), pick(a.y, b.y)};
 }
 
+// The offset from i to j of a pair that was `start_offset` at the step's start, once its ends
+// have travelled: the agent at hand `travelled` (end j when `agent_is_j`), the other
+// `other_travelled`.
+Vec2 offset_now(Vec2 start_offset, bool agent_is_j, Vec2 travelled, Vec2 other_travelled) {
+  return choose(agent_is_j, start_offset + travelled - other_travelled,
+                start_offset + other_travelled - travelled);
+}
+
 }  // namespace
 
 // Earliest event first; simultaneous events by their pair's agent ids (i, then j; a wall
@@ -298,8 +306,7 @@ void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) 
     const bool agent_is_j = (n.end & 1) != 0;
     const Vec2 relative = choose(agent_is_j, velocity - n.velocity, n.velocity - velocity);
     if (is_zero(relative)) continue;
-    const Vec2 offset = choose(agent_is_j, pair.offset + travelled - n.travelled,
-                               pair.offset + n.travelled - travelled);
+    const Vec2 offset = offset_now(pair.offset, agent_is_j, travelled, n.travelled);
     schedule_events(n.end >> 1, offset, relative, time);
   }
 }
@@ -360,8 +367,7 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
   for (const Neighbour& n : neighbours()) {
     const CandidatePair& pair = pairs_[n.end >> 1];
     const bool agent_is_j = (n.end & 1) != 0;
-    const Vec2 from_i = choose(agent_is_j, pair.offset + travelled - n.travelled,
-                               pair.offset + n.travelled - travelled);
+    const Vec2 from_i = offset_now(pair.offset, agent_is_j, travelled, n.travelled);
     const Vec2 towards = choose(agent_is_j, Vec2{} - from_i, from_i);
     const double distance = norm(towards);
     contacts_[touched] = {n.other, towards * (1.0 / distance)};
@@ -397,7 +403,7 @@ void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
   } else {
     gather_neighbours(agent, time);
     touched_bodies(agent, time, normals_);
-    const Vec2 slide = free_motion(commands_[agent].velocity, normals_);
+    const Vec2 slide = free_motion(commanded, normals_);
     const Vec2 now = velocity_after(agent);
     // Only the agent's own leg changes from here on: the neighbours stay as gathered.
     if (slide.x == now.x && slide.y == now.y) {
