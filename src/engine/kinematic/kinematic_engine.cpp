@@ -6,8 +6,8 @@
 
 #include "core/agent_array.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
-#include "engine/kinematic/neighbour_search.hpp"
 #include "engine/kinematic/step_threads.hpp"
+#include "engine/kinematic/verlet_pairs.hpp"
 #include "geometry/arena_geometry.hpp"
 
 namespace swarmagg {
@@ -21,6 +21,9 @@ struct CommandSummary {
 
 // Agents per move task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerMoveTask = 65536;
+// The Verlet list's skin, in steps of two agents at the nominal speed closing in on each
+// other: the list is searched anew about once every this many steps.
+constexpr double kSkinSteps = 8.0;
 
 // Two running maxima (even and odd agents) keep two comparisons in flight; the maximum of
 // exact values does not depend on the order it is taken in.
@@ -60,24 +63,25 @@ class KinematicEngine final : public Engine {
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
         positions_(initial_positions.begin(), initial_positions.end()),
-        reflections_(positions_.size(), 0) {
+        reflections_(positions_.size(), 0),
+        pairs_(kSkinSteps * 2.0 * spec.robots.speed * spec.engine.dt) {
     // Without perception every agent's list stays empty.
     neighbours_.reset(positions_.size());
-    rebuild_neighbourhood(nominal_speed_, true);
+    rebuild_neighbourhood(nominal_speed_, true, 0.0);
   }
 
   StepReport step(std::span<const MotionCommand> commands,
                   std::span<const Signal> signals) override {
     const CommandSummary summary = summarise(commands);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
-    if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false);
+    if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false, 0.0);
     StepReport report;
     if (summary.guarded) {
       report.encounters =
-          motion_.resolve(search_.candidates(), commands, signals, limits_, positions_);
+          motion_.resolve(pairs_.candidates(), commands, signals, limits_, positions_);
       move_and_rebuild(commands, &motion_, summary.fastest);
     } else {
-      report.encounters = GuardedMotion::count_encounters(search_.candidates(), commands, limits_);
+      report.encounters = GuardedMotion::count_encounters(pairs_.candidates(), commands, limits_);
       move_and_rebuild(commands, nullptr, summary.fastest);
     }
     return report;
@@ -124,7 +128,9 @@ class KinematicEngine final : public Engine {
     };
     threads_.run(tasks, move);
     if (patch_bent) move_bent_from_starts(*motion);
-    rebuild_neighbourhood(std::max(nominal_speed_, fastest), true);
+    // No agent moved farther than the fastest command for dt: the guarded motion only
+    // shortens or projects commanded moves, and a wall's mirror image lies nearer.
+    rebuild_neighbourhood(std::max(nominal_speed_, fastest), true, fastest * limits_.dt);
   }
 
   void remember_starts(std::span<const std::uint32_t> agents) {
@@ -196,10 +202,10 @@ class KinematicEngine final : public Engine {
     return radii;
   }
 
-  void rebuild_neighbourhood(double speed, bool perception) {
+  // `moved`: how far any agent moved at most since the last rebuild.
+  void rebuild_neighbourhood(double speed, bool perception, double moved) {
     perception = perception && sensing_radius_ > 0.0;
-    search_.find(arena_, positions_, radii_for(speed, perception), threads_);
-    if (perception) neighbours_.assign_from_pairs(positions_.size(), search_.close_pairs());
+    pairs_.find(arena_, positions_, radii_for(speed, perception), moved, threads_, neighbours_);
   }
 
   ArenaGeometry arena_;
@@ -211,7 +217,7 @@ class KinematicEngine final : public Engine {
   AgentArray<Vec2> positions_;
   std::vector<std::uint8_t> reflections_;
   StepThreads threads_;
-  NeighbourSearch search_;
+  VerletPairs pairs_;
   NeighbourLists neighbours_;
   GuardedMotion motion_;
   std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed

@@ -9,6 +9,11 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Agents per task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerTask = 16384;
+// Room for this share of the agents (plus a few) changing strip in one update, reserved up
+// front: updates several steps apart (Verlet lists) see more changes than single steps, and
+// the buffers would otherwise reach new heights now and then long into a run.
+constexpr std::size_t kStripChangesRoom = 16;
+constexpr std::size_t kStripChangesFloor = 64;
 
 int tasks_for(std::size_t agents, int strips, const StepThreads& threads) {
   const auto by_work = static_cast<int>(agents / kAgentsPerTask);
@@ -109,6 +114,9 @@ void SortedStrips::restrip(std::span<const Vec2> positions, StepThreads& threads
   const int tasks = tasks_for(agents_, strips_, threads);
   if (leavers_.size() < static_cast<std::size_t>(tasks)) {
     leavers_.resize(static_cast<std::size_t>(tasks));
+    const std::size_t room = agents_ / kStripChangesRoom + kStripChangesFloor;
+    for (std::vector<Arrival>& leavers : leavers_) leavers.reserve(room);
+    arrivals_.reserve(room);
   }
   auto refresh = [&](int task) {
     refresh_strips(positions, task, first_strip(task, tasks), first_strip(task + 1, tasks));

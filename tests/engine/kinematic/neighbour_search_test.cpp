@@ -3,26 +3,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <set>
 #include <tuple>
 #include <vector>
 
+#include "engine/kinematic/pair_values.hpp"
+
 namespace swarmagg {
 namespace {
 
-// A pair as a value: ids, offset and (for close pairs) distance, compared exactly.
-using PairValue = std::tuple<std::uint32_t, std::uint32_t, double, double, double>;
+using testing::candidate_values;
+using testing::close_values;
+using testing::PairValue;
+using testing::uniform_positions;
 
 constexpr SearchRadii kRadii{4.0, 4.2, true};
-
-std::vector<Vec2> uniform_positions(const ArenaGeometry& arena, std::size_t n, unsigned seed) {
-  std::mt19937_64 gen(seed);
-  std::uniform_real_distribution<double> ux(0.0, arena.width()), uy(0.0, arena.height());
-  std::vector<Vec2> positions(n);
-  for (Vec2& p : positions) p = {ux(gen), uy(gen)};
-  return positions;
-}
 
 // The oracle: every pair by brute force, i < j, offset the minimum image from i to j.
 struct Expected {
@@ -46,18 +41,7 @@ Expected brute_force(const ArenaGeometry& arena, const std::vector<Vec2>& positi
 }
 
 Expected found(const NeighbourSearch& search) {
-  Expected f;
-  for (const CandidatePair& p : search.candidates()) {
-    EXPECT_LT(p.i, p.j);
-    EXPECT_TRUE(f.candidates.insert({p.i, p.j, p.offset.x, p.offset.y, 0.0}).second)
-        << "candidate " << p.i << ", " << p.j << " listed twice";
-  }
-  for (const ClosePair& p : search.close_pairs()) {
-    EXPECT_LT(p.i, p.j);
-    EXPECT_TRUE(f.close.insert({p.i, p.j, p.offset.x, p.offset.y, p.distance}).second)
-        << "close pair " << p.i << ", " << p.j << " listed twice";
-  }
-  return f;
+  return {candidate_values(search.candidates()), close_values(search.close_pairs())};
 }
 
 // Strips (large worlds) and the pair finder (worlds under three strips high) must both
