@@ -127,7 +127,8 @@ void NeighbourLists::close_agent(AgentId agent) {
 // An agent's count reaching 2 is rare and unpredictable, so the crowded list is written
 // without a branch (every end written, only the second arrival counted).
 //
-// The pairs come in strip order, so their agents' counts and lists lie at random in memory:
+// The pairs come in strip order (or, from the kinematic engine's Verlet list, by lower id, the
+// higher at random), so their agents' counts and lists lie at random in memory:
 // in large swarms nearly every access misses the cache (at 10^4 agents, the first level).
 // Each pass therefore prefetches what the pair (or crowded agent) kPrefetchAhead places on
 // will touch, so that many misses are in flight at once instead of one after another. One

@@ -6,7 +6,8 @@
 // (geometry/pair_finder.hpp). Either way a pair is reported as a function of the pair alone:
 // i < j and the minimum-image offset from i to j, so results never depend on which search
 // found it. Several threads may search strips at once; each fills its own buffers, joined in
-// strip order, so the result does not depend on the thread count.
+// strip order, so the result does not depend on the thread count. The kinematic engine
+// searches only every few steps, for a Verlet list (verlet_pairs.hpp).
 #include <span>
 #include <vector>
 
