@@ -103,8 +103,8 @@ BENCHMARK(BM_Draw)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The baseline DEPS-NOTES measured (~59 ms): every body a 32-segment triangle fan and every
-// detection circle a 32-segment line loop, one draw call each, same context type. Run it
+// The naive baseline (~59 ms on an unloaded 2-core VM): every body a 32-segment triangle fan and
+// every detection circle a 32-segment line loop, one draw call each, same context type. Run it
 // beside BM_Draw on the same machine at the same time and compare the ratio.
 void BM_DrawTriangleFansBaseline(benchmark::State& state) {
   const Scene scene(side_for(static_cast<int>(state.range(1))), static_cast<int>(state.range(0)));

@@ -100,8 +100,8 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   for (const std::uint32_t agent : waiters_) {
     const std::int32_t partner = swarm.partner[agent];
     const WaitingView view = look_around(agent, partner);
-    // A pair dissolves when a partner stops waiting (SPEC 3, 4): a waiting agent that stays
-    // (isolated_wait: stay) must not keep the link, or the partner's next pair would be
+    // A pair dissolves when a partner stops waiting (docs/controllers.md): a waiting agent that
+    // stays (isolated_wait: stay) must not keep the link, or the partner's next pair would be
     // linked to it too, making one aggregate of three under join: false.
     // Without a partner, its own state is read in the partner's place: selected by a mask,
     // as whether a waiting agent has a partner is a coin toss to the branch predictor.
@@ -232,7 +232,7 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
 
 // Away from the agents it perceives. Deep in a packed aggregate (compaction) the agent is
 // enclosed: no direction is returned, and the agent keeps its heading, which at the start of
-// the episode is drawn uniformly at random (SPEC 3). Nothing here asks where the agent
+// the episode is drawn uniformly at random (docs/controllers.md). Nothing here asks where the agent
 // stands: the bodies around it stop it or let it through.
 std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
                                                             const ControllerInput& input) const {

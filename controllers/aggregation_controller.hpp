@@ -1,6 +1,6 @@
 #pragma once
-// The GO / APPROACH / WAIT / LEAVE state machine (SPEC 3). All agents decide at once from
-// the states of the previous step, so the result never depends on agent order:
+// The GO / APPROACH / WAIT / LEAVE state machine (docs/controllers.md). All agents decide at once
+// from the states of the previous step, so the result never depends on agent order:
 //  - LEAVE agents count down their timeout, then search again (GO, new random heading);
 //  - WAIT agents resume GO when isolated (if the rules say so), else leave with P_l(i);
 //  - searching agents (GO, APPROACH) within s of a waiting agent join it (if allowed); the
@@ -8,7 +8,8 @@
 //    mutual); with joining allowed, a searcher whose neighbour paired joins that pair;
 //  - Soysal's searchers head for the nearest non-leaving agent within s_a (APPROACH);
 //  - with compaction, agents that go on waiting move under the spring force of the waiting
-//    members of their aggregate they perceive (SPEC 3), solid to waiting and leaving bodies.
+//    members of their aggregate they perceive (docs/controllers.md), solid to waiting and leaving
+//    bodies.
 #include <cstdint>
 #include <optional>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // The parameters of the aggregation state machine that Bayindir's, Soysal's and the
-// collision experiment's controllers share (SPEC 3); each controller only builds these.
+// collision experiment's controllers share (docs/controllers.md); each controller only builds
+// these.
 #include <optional>
 
 #include "config/world_spec.hpp"

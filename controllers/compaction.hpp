@@ -1,7 +1,7 @@
 #pragma once
-// SPEC 3 "Compaction", for every controller whose waiting agents close up their aggregate
-// (Bayindir's, Soysal's, the neighbour-count controller): the rule read from the world, the
-// spring velocity of one waiting agent, and the threshold below which a leaver counts as
+// docs/controllers.md, "Compaction", for every controller whose waiting agents close up their
+// aggregate (Bayindir's, Soysal's, the neighbour-count controller): the rule read from the world,
+// the spring velocity of one waiting agent, and the threshold below which a leaver counts as
 // enclosed. Each controller decides who its members are; the arithmetic lives here once.
 #include <algorithm>
 #include <span>

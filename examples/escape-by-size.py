@@ -3,7 +3,7 @@
 per engine, the final mean member spacing, the LEAVE attempts from the rim and from inside with
 the fraction of each that got out, and the escape rate per aggregate of size m (escapes /
 aggregate_time, from summary.json's pooled `leave_by_size`) beside the two leave laws of the
-models (SPEC 5.2, 5.4): every member may leave, m p/dt, and only the periphery may, periph(m) p/dt
+models (docs/models.md): every member may leave, m p/dt, and only the periphery may, periph(m) p/dt
 with periph(m) = min(m, pi (1.20 m^0.48 - 1)).
 
 It also checks that compare.json and escape_rate.csv say the same as the engines' summary.json

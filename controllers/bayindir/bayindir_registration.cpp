@@ -1,5 +1,5 @@
-// Bayindir's GO / WAIT / LEAVE controller (SPEC 3): the aggregation state machine with a
-// constant leave probability p per step; the experiment rules switch joining and leaving.
+// Bayindir's GO / WAIT / LEAVE controller (docs/controllers.md): the aggregation state machine with
+// a constant leave probability p per step; the experiment rules switch joining and leaving.
 #include "controllers/aggregation_controller.hpp"
 #include "controllers/controller_registry.hpp"
 

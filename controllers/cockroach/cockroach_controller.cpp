@@ -37,7 +37,7 @@ int CockroachController::joined_size(std::uint32_t agent, const ControllerInput&
 }
 
 // Away from the agents it perceives; enclosed in a packed aggregate (compaction), a random
-// heading, and the bodies around it decide whether it gets out (SPEC 3).
+// heading, and the bodies around it decide whether it gets out (docs/controllers.md).
 void CockroachController::leave(std::uint32_t agent, const ControllerInput& input,
                                 SwarmState& swarm, const CounterRng& rng) {
   swarm.state[agent] = AgentState::Leave;
@@ -89,8 +89,8 @@ void CockroachController::write_commands(const SwarmState& swarm,
   }
 }
 
-// SPEC 3's spring force from the waiting members of its aggregate that each agent that waited
-// and goes on waiting perceives.
+// The spring force of docs/controllers.md from the waiting members of its aggregate that each agent
+// that waited and goes on waiting perceives.
 void CockroachController::compact(const ControllerInput& input, const SwarmState& swarm,
                                   std::span<MotionCommand> commands) const {
   const std::int32_t* aggregate = input.aggregates.aggregate_of.data();

@@ -10,14 +10,19 @@ namespace {
 // Defaults after the shape Jeanson et al. (2005) measured: stopping grows and leaving falls
 // with the number of waiting neighbours; per step of dt.
 const WorldKey& stop_key() {
-  static const WorldKey key =
-      number_list_key("controller.stop_probability", {0.05, 0.2, 0.5}, 0.0, 1.0, "cockroach");
+  static const WorldKey key = described(
+      number_list_key("controller.stop_probability", {0.05, 0.2, 0.5}, 0.0, 1.0, "cockroach"),
+      "cockroach: probability per step that a searcher perceiving n waiting agents stops, "
+      "entry n (from 1; the last for more)");
   return key;
 }
 
 const WorldKey& leave_key() {
-  static const WorldKey key = number_list_key("controller.leave_probability",
-                                              {0.05, 0.005, 0.001, 0.0002}, 0.0, 1.0, "cockroach");
+  static const WorldKey key =
+      described(number_list_key("controller.leave_probability", {0.05, 0.005, 0.001, 0.0002}, 0.0,
+                                1.0, "cockroach"),
+                "cockroach: probability per step that a waiting agent perceiving n waiting agents "
+                "leaves, entry n (from 0; the last for more)");
   return key;
 }
 

@@ -1,5 +1,5 @@
-// The collision check of the paper (SPEC 3, Figs 7-8). Ghost mode: an ideal gas that only
-// counts encounters and perceives nothing. Paper mode: a meeting pair aggregates and both
+// The collision check of the paper (docs/controllers.md, Figs 7-8). Ghost mode: an ideal gas that
+// only counts encounters and perceives nothing. Paper mode: a meeting pair aggregates and both
 // leave at once (p = 1). Only the kinetic encounter rate models it.
 #include "controllers/aggregation_controller.hpp"
 #include "controllers/controller_registry.hpp"

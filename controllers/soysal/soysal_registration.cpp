@@ -1,5 +1,5 @@
-// Soysal's GO / APPROACH / WAIT / LEAVE controller (SPEC 3): Bayindir's state machine plus
-// APPROACH within s_a, with a size-dependent leave law. Its worlds record partitions and are
+// Soysal's GO / APPROACH / WAIT / LEAVE controller (docs/controllers.md): Bayindir's state machine
+// plus APPROACH within s_a, with a size-dependent leave law. Its worlds record partitions and are
 // described by the partition model.
 #include "config/world_keys.hpp"
 #include "controllers/aggregation_controller.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// A finished run folder read back (SPEC 7), so plots are drawn from the files a user can
-// open, the same whether the run has just finished or ran long ago: the resolved world,
+// A finished run folder read back (docs/reference/outputs.md), so plots are drawn from the files a
+// user can open, the same whether the run has just finished or ran long ago: the resolved world,
 // timeseries.csv, summary.json and, when present, model.csv and partitions.csv.
 #include <filesystem>
 #include <nlohmann/json.hpp>

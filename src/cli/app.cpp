@@ -8,7 +8,8 @@
 namespace swarmagg::cli {
 
 int main(int argc, char** argv) {
-  CLI::App app{"swarmagg: self-organized aggregation in 2D robot swarms"};
+  // Named here, not from argv[0], so the help reads the same however swarmagg was started.
+  CLI::App app{"swarmagg: self-organized aggregation in 2D robot swarms", "swarmagg"};
   app.require_subcommand(1);
   app.set_version_flag("--version", SWARMAGG_VERSION);
   Action action;
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
   add_compare_command(app, action);
   add_validate_command(app, action);
   add_bench_command(app, action);
+  add_keys_command(app, action);
+  add_help_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

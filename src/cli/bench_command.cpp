@@ -98,7 +98,7 @@ int bench_command(const BenchOptions& options) {
 void add_bench_command(CLI::App& app, Action& action) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* command = app.add_subcommand(
-      "bench", "Measure throughput: kinematic and Box2D engines, rendering (see README)");
+      "bench", "Measure throughput: kinematic and Box2D engines, rendering (docs/performance.md)");
   command->add_flag("--json", options->json, "Print one JSON object (for scripts)");
   command->add_flag("--quick", options->quick, "Fewer steps per size (same sizes)");
   command->callback([options, &action] { action = [options] { return bench_command(*options); }; });

@@ -20,6 +20,8 @@ void add_merge_command(CLI::App& app, Action& action);
 void add_reproduce_command(CLI::App& app, Action& action);
 void add_compare_command(CLI::App& app, Action& action);
 void add_plot_command(CLI::App& app, Action& action);
+void add_keys_command(CLI::App& app, Action& action);
+void add_help_command(CLI::App& app, Action& action);
 
 int main(int argc, char** argv);
 

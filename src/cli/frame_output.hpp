@@ -1,6 +1,6 @@
 #pragma once
-// Wires off-screen rendering into a run: which folder frames go to (SPEC 7) and the
-// observer that records every render.every-th step of replicate render.replicate.
+// Wires off-screen rendering into a run: which folder frames go to (docs/reference/outputs.md) and
+// the observer that records every render.every-th step of replicate render.replicate.
 #include <filesystem>
 #include <string>
 #include <string_view>

@@ -1,4 +1,4 @@
-// `swarmagg model WORLD.yaml [--out DIR]`: the world's macroscopic predictions (SPEC 5),
+// `swarmagg model WORLD.yaml [--out DIR]`: the world's macroscopic predictions (docs/models.md),
 // written beside a run of the same world so that the two plot together.
 #include <chrono>
 #include <iostream>

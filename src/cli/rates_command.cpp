@@ -1,6 +1,6 @@
 // `swarmagg rates WORLD.yaml [--engine] [--replicates N] [--seed S] [--threads T] [--set ...]
 // [--out DIR]`: runs the world and measures every model term as events over exposure
-// (SPEC 5.4): rates.csv, rates.json and a plot per term.
+// (docs/models.md): rates.csv, rates.json and a plot per term.
 #include <iostream>
 
 #include "cli/commands.hpp"

@@ -2,7 +2,8 @@
 // The statistics of a comparison of two arms (compare/engine_arm.hpp): the difference in
 // mean final NOA with its Welch interval, KS tests on the final NOA and on the pooled final
 // aggregate sizes, the encounter rates, and the LEAVE episodes pooled over the replicates
-// (attempts and escapes split by rim and inside, SPEC 4's rim rule, and by aggregate size).
+// (attempts and escapes split by rim and inside, the rim rule of docs/models.md, and by aggregate
+// size).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -12,7 +12,8 @@ double fraction(std::int64_t part, std::int64_t whole) {
 }
 
 constexpr const char* kRimRuleText =
-    "SPEC 4: rim = fewer than 6 fellow members within 1.2 x spacing when the attempt starts";
+    "docs/models.md: rim = fewer than 6 fellow members within 1.2 x spacing when the attempt "
+    "starts";
 
 const char* verdict(double p) {
   return p < kSignificance ? "different" : "no significant difference";

@@ -59,7 +59,7 @@ WorldKey real_key(std::string path, Access<double> access, const RealBounds& bou
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(format_number(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), bounds.expected, read, write, {}, {}};
+  return {std::move(path), "number", bounds.expected, read, write, {}, {}, {}};
 }
 
 template <typename Int>
@@ -74,7 +74,7 @@ WorldKey integer_key(std::string path, Access<Int> access, long long low, long l
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), expected, read, write, {}, {}};
+  return {std::move(path), "integer", expected, read, write, {}, {}, {}};
 }
 
 WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
@@ -89,7 +89,7 @@ WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
   };
-  return {std::move(path), expected, read, write, {}, {}};
+  return {std::move(path), "integer", expected, read, write, {}, {}, {}};
 }
 
 WorldKey bool_key(std::string path, Access<bool> access) {
@@ -107,7 +107,7 @@ WorldKey bool_key(std::string path, Access<bool> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)) ? "true" : "false");
   };
-  return {std::move(path), expected, read, write, {}, {}};
+  return {std::move(path), "boolean", expected, read, write, {}, {}, {}};
 }
 
 template <typename Enum>
@@ -134,7 +134,7 @@ WorldKey enum_key(std::string path, Access<Enum> access,
     }
     return YAML::Node();
   };
-  return {std::move(path), expected, read, write, {}, {}};
+  return {std::move(path), "choice", expected, read, write, {}, {}, {}};
 }
 
 WorldKey string_key(std::string path, Access<std::string> access) {
@@ -151,7 +151,7 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)));
   };
-  return {std::move(path), expected, read, write, {}, {}};
+  return {std::move(path), "text", expected, read, write, {}, {}, {}};
 }
 
 // A positive length whose default follows another key (written back resolved).
@@ -163,7 +163,7 @@ WorldKey optional_length_key(std::string path, Access<std::optional<double>> acc
     access(w) = v;
   };
   auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
-  return {std::move(path), kPositive.expected, read, write, {}, {}};
+  return {std::move(path), "number", kPositive.expected, read, write, {}, {}, {}};
 }
 
 WorldKey name_key() {
@@ -178,7 +178,7 @@ WorldKey name_key() {
     w.name = text;
   };
   auto write = [](const WorldSpec& w) { return YAML::Node(w.name); };
-  return {"name", expected, read, write, {}, {}};
+  return {"name", "text", expected, read, write, {}, {}, {}};
 }
 
 WorldKey placement_key() {
@@ -210,7 +210,7 @@ WorldKey placement_key() {
     }
     return list;
   };
-  return {"robots.placement", expected, read, write, {}, {}};
+  return {"robots.placement", "placement", expected, read, write, {}, {}, {}};
 }
 
 // Any registered controller (controller_catalog.hpp), named in the message.
@@ -230,145 +230,250 @@ WorldKey controller_type_key() {
     throw KeyValueError{expected};
   };
   auto write = [](const WorldSpec& w) { return YAML::Node(w.controller.type); };
-  return {"controller.type", expected, read, write, "", {}};
+  return {"controller.type", "choice", expected, read, write, "", {}, {}};
 }
 
 std::vector<WorldKey> build_keys() {
   constexpr long long kMaxAgents = 100'000'000;
   constexpr long long kMaxInt = 1'000'000'000;
   std::vector<WorldKey> keys;
-  keys.push_back(name_key());
-  keys.push_back(real_key(
-      "arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive));
-  keys.push_back(real_key(
-      "arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive));
-  keys.push_back(enum_key<Topology>("arena.topology",
-                                    [](WorldSpec& w) -> Topology& { return w.arena.topology; },
-                                    {{"torus", Topology::Torus}, {"walls", Topology::Walls}}));
-  keys.push_back(integer_key<int>(
-      "robots.count", [](WorldSpec& w) -> int& { return w.robots.count; }, 1, kMaxAgents));
-  keys.push_back(real_key(
-      "robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive));
-  keys.push_back(real_key(
-      "robots.detection_radius", [](WorldSpec& w) -> double& { return w.robots.detection_radius; },
-      kPositive));
-  keys.push_back(real_key(
-      "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative));
-  keys.push_back(placement_key());
-  keys.push_back(controller_type_key());
-  keys.push_back(real_key(
-      "controller.p_leave", [](WorldSpec& w) -> double& { return w.controller.p_leave; },
-      kProbability));
-  keys.push_back(real_key(
-      "controller.leave_timeout",
-      [](WorldSpec& w) -> double& { return w.controller.leave_timeout; }, kNonNegative));
+  keys.push_back(described(name_key(), "the world's name; the default run folder is runs/<name>/"));
+  keys.push_back(described(
+      real_key(
+          "arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive),
+      "arena width W, u"));
+  keys.push_back(described(
+      real_key(
+          "arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive),
+      "arena height H, u"));
   keys.push_back(
-      bool_key("controller.join", [](WorldSpec& w) -> bool& { return w.controller.join; }));
+      described(enum_key<Topology>("arena.topology",
+                                   [](WorldSpec& w) -> Topology& { return w.arena.topology; },
+                                   {{"torus", Topology::Torus}, {"walls", Topology::Walls}}),
+                "torus: an agent leaving one side comes back on the other and every distance is "
+                "the minimum-image one; walls: reflecting sides"));
+  keys.push_back(described(
+      integer_key<int>(
+          "robots.count", [](WorldSpec& w) -> int& { return w.robots.count; }, 1, kMaxAgents),
+      "number of agents N; without it, a placement list sets it"));
+  keys.push_back(described(
+      real_key(
+          "robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive),
+      "body radius r, u"));
   keys.push_back(
-      bool_key("controller.leave", [](WorldSpec& w) -> bool& { return w.controller.leave; }));
-  keys.push_back(enum_key<IsolatedWait>(
-      "controller.isolated_wait",
-      [](WorldSpec& w) -> IsolatedWait& { return w.controller.isolated_wait; },
-      {{"resume", IsolatedWait::Resume}, {"stay", IsolatedWait::Stay}}));
-  keys.push_back(real_key(
-      "controller.approach_radius",
-      [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive));
-  keys.push_back(real_key(
-      "controller.p0", [](WorldSpec& w) -> double& { return w.controller.p0; }, kProbability));
-  keys.push_back(enum_key<LeaveLaw>(
-      "controller.leave_law", [](WorldSpec& w) -> LeaveLaw& { return w.controller.leave_law; },
-      {{"constant", LeaveLaw::Constant},
-       {"inverse", LeaveLaw::Inverse},
-       {"inverse_square", LeaveLaw::InverseSquare}}));
-  keys.push_back(enum_key<LeaveSize>(
-      "controller.leave_size", [](WorldSpec& w) -> LeaveSize& { return w.controller.leave_size; },
-      {{"aggregate", LeaveSize::Aggregate}, {"neighbours", LeaveSize::Neighbours}}));
-  keys.push_back(enum_key<CollisionMode>(
-      "controller.collision_mode",
-      [](WorldSpec& w) -> CollisionMode& { return w.controller.collision_mode; },
-      {{"ghost", CollisionMode::Ghost}, {"paper", CollisionMode::Paper}}));
-  keys.push_back(real_key(
-      "controller.tumble", [](WorldSpec& w) -> double& { return w.controller.tumble; },
-      kProbability));
-  keys.push_back(bool_key("controller.compaction.enabled",
-                          [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }));
-  keys.push_back(optional_length_key(
-      "controller.compaction.spacing",
-      [](WorldSpec& w) -> std::optional<double>& { return w.controller.compaction.spacing; },
-      [](const WorldSpec& w) { return w.compaction_spacing(); }));
-  keys.push_back(real_key(
-      "controller.compaction.gain",
-      [](WorldSpec& w) -> double& { return w.controller.compaction.gain; }, kPositive));
-  keys.push_back(real_key(
-      "controller.compaction.tolerance",
-      [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative));
+      described(real_key(
+                    "robots.detection_radius",
+                    [](WorldSpec& w) -> double& { return w.robots.detection_radius; }, kPositive),
+                "detection radius s, centre to centre, u; at least 2 robots.radius"));
+  keys.push_back(described(
+      real_key(
+          "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative),
+      "speed v, u per tu"));
+  keys.push_back(
+      described(placement_key(),
+                "random: uniform positions without overlapping bodies, uniform headings; or one "
+                "[x, y, heading] per agent, heading in degrees counter-clockwise from +x"));
+  keys.push_back(
+      described(controller_type_key(), "the controller every agent runs (docs/controllers.md)"));
+  keys.push_back(
+      described(real_key(
+                    "controller.p_leave",
+                    [](WorldSpec& w) -> double& { return w.controller.p_leave; }, kProbability),
+                "bayindir: probability per step that a waiting agent starts to leave (p)"));
+  keys.push_back(described(
+      real_key(
+          "controller.leave_timeout",
+          [](WorldSpec& w) -> double& { return w.controller.leave_timeout; }, kNonNegative),
+      "how long a LEAVE lasts before the agent searches again, tu"));
+  keys.push_back(described(
+      bool_key("controller.join", [](WorldSpec& w) -> bool& { return w.controller.join; }),
+      "searchers may join aggregates; false: they stop only for other searchers (aggregates of "
+      "two)"));
+  keys.push_back(described(
+      bool_key("controller.leave", [](WorldSpec& w) -> bool& { return w.controller.leave; }),
+      "waiting agents may leave; false: nobody leaves"));
+  keys.push_back(
+      described(enum_key<IsolatedWait>(
+                    "controller.isolated_wait",
+                    [](WorldSpec& w) -> IsolatedWait& { return w.controller.isolated_wait; },
+                    {{"resume", IsolatedWait::Resume}, {"stay", IsolatedWait::Stay}}),
+                "a waiting agent that perceives no waiting agent any more: resume searching, or "
+                "stay waiting alone"));
+  keys.push_back(described(
+      real_key(
+          "controller.approach_radius",
+          [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive),
+      "soysal: approach radius s_a, u; a searcher moves towards the nearest agent within it"));
+  keys.push_back(described(
+      real_key(
+          "controller.p0", [](WorldSpec& w) -> double& { return w.controller.p0; }, kProbability),
+      "soysal: leave probability per step P_l before controller.leave_law divides it"));
+  keys.push_back(
+      described(enum_key<LeaveLaw>("controller.leave_law",
+                                   [](WorldSpec& w) -> LeaveLaw& { return w.controller.leave_law; },
+                                   {{"constant", LeaveLaw::Constant},
+                                    {"inverse", LeaveLaw::Inverse},
+                                    {"inverse_square", LeaveLaw::InverseSquare}}),
+                "soysal: P_l(i) = p0 (constant), p0/i (inverse) or p0/i^2 (inverse_square), i the "
+                "aggregate's size"));
+  keys.push_back(
+      described(enum_key<LeaveSize>(
+                    "controller.leave_size",
+                    [](WorldSpec& w) -> LeaveSize& { return w.controller.leave_size; },
+                    {{"aggregate", LeaveSize::Aggregate}, {"neighbours", LeaveSize::Neighbours}}),
+                "soysal: i is the size of the tracked aggregate, or the number of perceived agents "
+                "+ 1 (neighbours)"));
+  keys.push_back(
+      described(enum_key<CollisionMode>(
+                    "controller.collision_mode",
+                    [](WorldSpec& w) -> CollisionMode& { return w.controller.collision_mode; },
+                    {{"ghost", CollisionMode::Ghost}, {"paper", CollisionMode::Paper}}),
+                "collision: ghost agents pass through each other (an ideal gas); paper: a meeting "
+                "pair aggregates and both leave at once"));
+  keys.push_back(
+      described(real_key(
+                    "controller.tumble",
+                    [](WorldSpec& w) -> double& { return w.controller.tumble; }, kProbability),
+                "collision: probability per step that an agent draws a new heading"));
+  keys.push_back(described(
+      bool_key("controller.compaction.enabled",
+               [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }),
+      "waiting agents close up their aggregate under a spring force (docs/controllers.md)"));
+  keys.push_back(described(
+      optional_length_key(
+          "controller.compaction.spacing",
+          [](WorldSpec& w) -> std::optional<double>& { return w.controller.compaction.spacing; },
+          [](const WorldSpec& w) { return w.compaction_spacing(); }),
+      "centre distance the members close up to, u; default 2 robots.radius (touching), below "
+      "robots.detection_radius"));
+  keys.push_back(described(
+      real_key(
+          "controller.compaction.gain",
+          [](WorldSpec& w) -> double& { return w.controller.compaction.gain; }, kPositive),
+      "speed per unit of net spring force, per tu, capped at robots.speed"));
+  keys.push_back(described(
+      real_key(
+          "controller.compaction.tolerance",
+          [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative),
+      "net spring force below which a waiting agent stands still, u"));
   // Each registered controller's own keys follow the shared controller keys.
   for (const ControllerCatalogEntry& entry : controller_catalog()) {
     keys.insert(keys.end(), entry.keys.begin(), entry.keys.end());
   }
-  keys.push_back(
+  keys.push_back(described(
       enum_key<EngineType>("engine.type", [](WorldSpec& w) -> EngineType& { return w.engine.type; },
-                           {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}));
-  keys.push_back(real_key(
-      "engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive));
-  keys.push_back(enum_key<ContactResponse>(
-      "engine.contact", [](WorldSpec& w) -> ContactResponse& { return w.engine.contact; },
-      {{"slide", ContactResponse::Slide}, {"stop", ContactResponse::Stop}}));
-  keys.push_back(real_key(
-      "engine.box2d.repulsion_gain",
-      [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative));
-  keys.push_back(real_key(
-      "engine.box2d.linear_damping",
-      [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative));
-  keys.push_back(integer_key<int>(
-      "engine.box2d.velocity_iterations",
-      [](WorldSpec& w) -> int& { return w.engine.box2d.velocity_iterations; }, 1, 100));
-  keys.push_back(integer_key<int>(
-      "engine.box2d.position_iterations",
-      [](WorldSpec& w) -> int& { return w.engine.box2d.position_iterations; }, 1, 100));
-  keys.push_back(integer_key<int>(
-      "engine.box2d.substeps", [](WorldSpec& w) -> int& { return w.engine.box2d.substeps; }, 1,
-      1000));
-  keys.push_back(real_key(
-      "run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive));
-  keys.push_back(integer_key<int>(
-      "run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000));
-  keys.push_back(seed_key("run.seed", [](WorldSpec& w) -> std::uint64_t& { return w.run.seed; }));
-  keys.push_back(integer_key<int>(
-      "run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt));
-  keys.push_back(integer_key<int>(
-      "run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024));
-  keys.push_back(integer_key<int>(
-      "run.trajectories", [](WorldSpec& w) -> int& { return w.run.trajectories; }, 0, kMaxInt));
-  keys.push_back(enum_key<Kappa>(
-      "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
-      {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}));
-  keys.push_back(enum_key<CreationVariant>(
-      "model.creation", [](WorldSpec& w) -> CreationVariant& { return w.model.creation; },
-      {{"original", CreationVariant::Original}, {"collision", CreationVariant::Collision}}));
-  keys.push_back(enum_key<LeavingVariant>(
-      "model.leaving", [](WorldSpec& w) -> LeavingVariant& { return w.model.leaving; },
-      {{"original", LeavingVariant::Original}, {"peripheral", LeavingVariant::Peripheral}}));
+                           {{"kinematic", EngineType::Kinematic}, {"box2d", EngineType::Box2D}}),
+      "kinematic (exact swept encounters and contacts) or box2d (disc bodies with real contacts)"));
   keys.push_back(
-      bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }));
-  keys.push_back(integer_key<int>(
-      "model.stochastic_replicates",
-      [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000));
-  keys.push_back(enum_key<InitialState>(
-      "model.initial_state", [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },
-      {{"placement", InitialState::Placement},
-       {"all_searching", InitialState::AllSearching},
-       {"measured", InitialState::Measured}}));
-  keys.push_back(integer_key<int>(
-      "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
-  keys.push_back(integer_key<int>(
-      "render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 32, 8192));
-  keys.push_back(integer_key<int>(
-      "render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 32, 8192));
-  keys.push_back(integer_key<int>(
-      "render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000));
+      described(real_key(
+                    "engine.dt", [](WorldSpec& w) -> double& { return w.engine.dt; }, kPositive),
+                "length of a step, tu; probabilities per step are per dt"));
+  keys.push_back(described(
+      enum_key<ContactResponse>(
+          "engine.contact", [](WorldSpec& w) -> ContactResponse& { return w.engine.contact; },
+          {{"slide", ContactResponse::Slide}, {"stop", ContactResponse::Stop}}),
+      "kinematic: a body that reaches a contact slides along it for the rest of the step, or stops "
+      "there"));
+  keys.push_back(described(
+      real_key(
+          "engine.box2d.repulsion_gain",
+          [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative),
+      "box2d: strength of the push waiting bodies give leaving ones"));
+  keys.push_back(described(
+      real_key(
+          "engine.box2d.linear_damping",
+          [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative),
+      "box2d: linear damping of every body"));
+  keys.push_back(described(
+      integer_key<int>(
+          "engine.box2d.velocity_iterations",
+          [](WorldSpec& w) -> int& { return w.engine.box2d.velocity_iterations; }, 1, 100),
+      "box2d: velocity iterations of the contact solver per Box2D step"));
+  keys.push_back(described(
+      integer_key<int>(
+          "engine.box2d.position_iterations",
+          [](WorldSpec& w) -> int& { return w.engine.box2d.position_iterations; }, 1, 100),
+      "box2d: position iterations of the contact solver per Box2D step"));
   keys.push_back(
-      string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }));
+      described(integer_key<int>(
+                    "engine.box2d.substeps",
+                    [](WorldSpec& w) -> int& { return w.engine.box2d.substeps; }, 1, 1000),
+                "box2d: Box2D steps per simulation step"));
+  keys.push_back(described(
+      real_key(
+          "run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive),
+      "simulated time of each replicate, tu"));
+  keys.push_back(described(
+      integer_key<int>(
+          "run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000),
+      "number of independent replicates"));
+  keys.push_back(
+      described(seed_key("run.seed", [](WorldSpec& w) -> std::uint64_t& { return w.run.seed; }),
+                "the run's seed; every replicate's generator key derives from it"));
+  keys.push_back(described(
+      integer_key<int>(
+          "run.record_every", [](WorldSpec& w) -> int& { return w.run.record_every; }, 1, kMaxInt),
+      "steps between two rows of timeseries.csv"));
+  keys.push_back(
+      described(integer_key<int>(
+                    "run.threads", [](WorldSpec& w) -> int& { return w.run.threads; }, 0, 1024),
+                "threads; 0: every core"));
+  keys.push_back(described(
+      integer_key<int>(
+          "run.trajectories", [](WorldSpec& w) -> int& { return w.run.trajectories; }, 0, kMaxInt),
+      "store every agent every K steps in trajectories.h5; 0: none"));
+  keys.push_back(described(
+      enum_key<Kappa>(
+          "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
+          {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}),
+      "constant of the encounter rate kappa s v y(y-1)/A: kinetic 4/pi, maxwell sqrt 2, paper (the "
+      "founding paper's fitted constant) (docs/models.md)"));
+  keys.push_back(described(
+      enum_key<CreationVariant>(
+          "model.creation", [](WorldSpec& w) -> CreationVariant& { return w.model.creation; },
+          {{"original", CreationVariant::Original}, {"collision", CreationVariant::Collision}}),
+      "the Bayindir model's creation variant marked chosen: original or collision "
+      "(docs/models.md)"));
+  keys.push_back(described(
+      enum_key<LeavingVariant>(
+          "model.leaving", [](WorldSpec& w) -> LeavingVariant& { return w.model.leaving; },
+          {{"original", LeavingVariant::Original}, {"peripheral", LeavingVariant::Peripheral}}),
+      "the Soysal model's leaving variant marked chosen: original or peripheral (docs/models.md)"));
+  keys.push_back(described(
+      bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }),
+      "cap periph(m) at m (a rim cannot hold more agents than the aggregate)"));
+  keys.push_back(
+      described(integer_key<int>(
+                    "model.stochastic_replicates",
+                    [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000),
+                "replicates of the stochastic Bayindir model; 0: none"));
+  keys.push_back(described(
+      enum_key<InitialState>("model.initial_state",
+                             [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },
+                             {{"placement", InitialState::Placement},
+                              {"all_searching", InitialState::AllSearching},
+                              {"measured", InitialState::Measured}}),
+      "where model predictions start: the placement's expected pairs, all agents searching, or the "
+      "state a run measured"));
+  keys.push_back(described(
+      integer_key<int>(
+          "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt),
+      "draw a frame every K steps; 0: none"));
+  keys.push_back(
+      described(integer_key<int>(
+                    "render.width", [](WorldSpec& w) -> int& { return w.render.width; }, 32, 8192),
+                "frame width, pixels"));
+  keys.push_back(described(
+      integer_key<int>(
+          "render.height", [](WorldSpec& w) -> int& { return w.render.height; }, 32, 8192),
+      "frame height, pixels"));
+  keys.push_back(described(
+      integer_key<int>(
+          "render.replicate", [](WorldSpec& w) -> int& { return w.render.replicate; }, 0, 100000),
+      "the replicate whose frames are drawn"));
+  keys.push_back(
+      described(string_key("render.dir", [](WorldSpec& w) -> std::string& { return w.render.dir; }),
+                "folder for the frames; empty: <out>/frames/ with --out, else renders/<name>/"));
   return keys;
 }
 
@@ -398,8 +503,14 @@ WorldKey number_list_key(std::string path, std::vector<double> defaults, double 
     for (const double v : values) list.push_back(format_number(v));
     return list;
   };
-  WorldKey key{std::move(path), expected, read, write, std::move(controller), {}};
+  WorldKey key{std::move(path), "list of numbers",     expected, read,
+               write,           std::move(controller), {},       {}};
   key.list_defaults = std::move(defaults);
+  return key;
+}
+
+WorldKey described(WorldKey key, std::string meaning) {
+  key.meaning = std::move(meaning);
   return key;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// The registry of world-file keys (SPEC 7): every dotted key path, what it expects, how to
-// read it into a WorldSpec and how to write it back. The loader, `--set`, `validate` and
-// the resolved-world writer all go through this one table.
+// The registry of world-file keys (docs/reference/world-keys.md is printed from it by
+// `swarmagg keys --markdown`): every dotted key path, its type, what it expects, what it
+// means, how to read it into a WorldSpec and how to write it back. The loader, `--set`,
+// `validate`, the resolved-world writer and the reference page all go through this one table.
 #include <yaml-cpp/yaml.h>
 
 #include <functional>
@@ -19,13 +20,18 @@ struct KeyValueError {
 
 struct WorldKey {
   std::string path;      // e.g. "robots.count"
+  std::string type;      // e.g. "integer"
   std::string expected;  // e.g. "a whole number >= 1"
   std::function<void(WorldSpec&, const YAML::Node&)> read;
   std::function<YAML::Node(const WorldSpec&)> write;
   // Non-empty for a registered controller's own key: written back only for its worlds.
   std::string controller;
   std::vector<double> list_defaults;  // number_list_key's defaults
+  std::string meaning;                // one line for the reference: what the key sets, units
 };
+
+// `key` with its meaning, as the reference page prints it.
+WorldKey described(WorldKey key, std::string meaning);
 
 const std::vector<WorldKey>& world_keys();
 const WorldKey* find_world_key(const std::string& path);

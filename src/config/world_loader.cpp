@@ -203,7 +203,7 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
-// Bodies must not overlap at the start (SPEC 1), as random placement guarantees. The pair
+// Bodies must not overlap at the start (docs/worlds.md), as random placement guarantees. The pair
 // named is the first in id order, whatever order the pair finder meets them in.
 void check_no_overlap(const WorldSpec& spec) {
   const auto& placed = spec.robots.placement;

@@ -1,7 +1,7 @@
 #pragma once
 // The immutable description of a world, parsed once from YAML (config/world_loader) and
 // shared read-only by every replicate, engine, controller, observer and model. Every field
-// has the default SPEC.md section 7 gives; the key registry (config/world_keys) maps the
+// has the default docs/reference/world-keys.md lists; the key registry (config/world_keys) maps the
 // dotted YAML key paths onto these fields.
 #include <cmath>
 #include <cstdint>
@@ -25,7 +25,7 @@ enum class ContactResponse { Slide, Stop };
 enum class Kappa { Kinetic, Maxwell, Paper };
 enum class CreationVariant { Original, Collision };
 enum class LeavingVariant { Original, Peripheral };
-// Where the models start (SPEC 5.4): the state after the first decision, i.e. the pairs that
+// Where the models start (docs/models.md): the state after the first decision, i.e. the pairs that
 // random placement formed at once (derived from the placement geometry, or measured by a
 // run), or all agents searching as the paper's models did.
 enum class InitialState { Placement, AllSearching, Measured };
@@ -54,7 +54,7 @@ struct RobotsSpec {
   bool random_placement() const { return placement.empty(); }
 };
 
-// SPEC 3 "Compaction": waiting agents close up their aggregate under a spring force.
+// docs/controllers.md, "Compaction": waiting agents close up their aggregate under a spring force.
 struct CompactionSpec {
   bool enabled = true;
   std::optional<double> spacing;  // u, centre to centre; unset: 2 robots.radius (touching)

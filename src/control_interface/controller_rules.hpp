@@ -9,7 +9,7 @@
 
 namespace swarmagg {
 
-// Which macroscopic model describes the controller's worlds (SPEC 5).
+// Which macroscopic model describes the controller's worlds (docs/models.md).
 enum class ModelFamily : std::uint8_t {
   None,        // no model: no predictions are written
   Encounters,  // only the kinetic encounter rate (the collision check)
@@ -28,8 +28,8 @@ struct ControllerRules {
   bool leaving_happens = false;
   // Agents aggregate at all (false: nothing but encounters is ever counted).
   bool aggregates = true;
-  // Waiting agents move to close up their aggregate (SPEC 3 "Compaction"); without it they
-  // stand still.
+  // Waiting agents move to close up their aggregate (docs/controllers.md, "Compaction"); without it
+  // they stand still.
   bool compacts = false;
   // Only partners (the two agents that formed a pair) are linked into aggregates.
   bool partners_only = false;

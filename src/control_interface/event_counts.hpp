@@ -1,5 +1,5 @@
 #pragma once
-// Cumulative aggregation events of one replicate (SPEC 4).
+// Cumulative aggregation events of one replicate (docs/models.md).
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -15,7 +15,7 @@ struct EventCounts {
 };
 
 // Counts the leave of an agent of aggregate `aggregate` (-1: none). Members of one aggregate
-// leaving in the same decision are counted one after another (SPEC 4): an aggregate of two
+// leaving in the same decision are counted one after another (docs/models.md): an aggregate of two
 // that both leave dissipates once; of five losing two, shrinks twice. `members_left` starts
 // the decision as the aggregates' sizes.
 inline void count_leave(std::int32_t aggregate, std::span<std::int32_t> members_left,

@@ -1,7 +1,7 @@
 #pragma once
 // Circle-packing estimates for an aggregate of m agents shared by both models (Bayindir's
 // fit): outer radius R1(m) = r * 1.20 * m^0.48 for agents of radius r, and the number of
-// agents on its periphery pi (1.20 m^0.48 - 1) (SPEC 5.2, 5.3; the paper prints sqrt(m)).
+// agents on its periphery pi (1.20 m^0.48 - 1) (docs/models.md; the paper prints sqrt(m)).
 namespace swarmagg {
 
 // The paper's fit (Fig 6): R1 = r a m^b and periph = pi (a m^b - 1) with these a, b.

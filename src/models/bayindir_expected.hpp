@@ -1,5 +1,5 @@
 #pragma once
-// The expected-value Bayindir model (SPEC 5.2): per step, with every event computed from the
+// The expected-value Bayindir model (docs/models.md): per step, with every event computed from the
 // state before the step,
 //   C = creation(y), G_m = n_m y g_m, D = loss_2 n_2, S_m = loss_m n_m (m >= 3),
 //   y' = y - 2C - sum G_m + 2D + sum S_m,  n_2' = n_2 + C - D - G_2 + S_3,

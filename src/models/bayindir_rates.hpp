@@ -1,5 +1,5 @@
 #pragma once
-// The per-step event probabilities of the Bayindir model (SPEC 5.2) for one world and
+// The per-step event probabilities of the Bayindir model (docs/models.md) for one world and
 // creation variant, with the experiment rules applied: join: false switches growth off,
 // leave: false switches dissipation and shrinking off, p is controller.p_leave. Sizes are
 // truncated at N (an aggregate of all N agents cannot grow). A collision-controller world
@@ -23,7 +23,7 @@ struct BayindirRates {
   std::vector<double> loss;
 };
 
-// The agent radius the model's aggregate radius R1(m) is built on: r_eff = s/4 (SPEC 5.2
+// The agent radius the model's aggregate radius R1(m) is built on: r_eff = s/4 (docs/models.md
 // [choice]), not robots.radius.
 double bayindir_agent_radius(const WorldSpec& world);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Where the models start (SPEC 5.4, model.initial_state). Random placement lets agents start
+// Where the models start (docs/models.md, model.initial_state). Random placement lets agents start
 // within s of each other; the first decision pairs them at once, before any encounter. The
 // models therefore start from the state after the first decision (step 1), not from all
 // agents searching (the paper's start, kept as `all_searching`).

@@ -1,6 +1,6 @@
 #pragma once
 // Encounter rates of agents moving straight at speed v with detection radius s on area A
-// (SPEC 5.1): Z = kappa s v y(y-1) / A per tu, kappa = 4/pi from kinetic theory (mean
+// (docs/models.md): Z = kappa s v y(y-1) / A per tu, kappa = 4/pi from kinetic theory (mean
 // relative speed 4v/pi, collision width 2s, y(y-1)/2 pairs), sqrt 2 as Bayindir had it, or
 // the paper's fitted Z = C s v y^2 (no area: formula (6) times A^2). Creation of a Bayindir
 // model is the same rate per step of dt among the searching agents.

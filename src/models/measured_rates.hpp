@@ -1,9 +1,9 @@
 #pragma once
-// The `measured` model variants (SPEC 5.4): the same model equations fed with the terms a
+// The `measured` model variants (docs/models.md): the same model equations fed with the terms a
 // simulation measured. Bayindir: creation per searcher pair and growth per (searcher,
 // size-m aggregate) pair; Soysal: pair-up P_e(1) and join P_e(i), the same measurements.
 // A term not measured (fewer than the events an estimate needs, or sizes the runs never
-// held) keeps the model's own value: creation from model.creation, growth from SPEC 5.2 /
+// held) keeps the model's own value: creation from model.creation, growth from docs/models.md /
 // 5.3, leaving from Bayindir's p min(m, periph(m)) or Soysal's model.leaving variant.
 // Agents leave at the measured LEAVE attempt rate per size: an attempt that does not escape
 // rejoins, and that return is already in the measured growth (join) rate.

@@ -1,5 +1,5 @@
 #pragma once
-// Model terms measured by a simulation (SPEC 5.4), in the units the rates outputs use: per
+// Model terms measured by a simulation (docs/models.md), in the units the rates outputs use: per
 // tu, per searcher pair or per (searcher, aggregate) pair. A term that is absent was not
 // measured (too few events, or the world has no such event) and the measured variant falls
 // back to the model's own term for it.

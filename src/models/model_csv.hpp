@@ -1,5 +1,5 @@
 #pragma once
-// Text of the model output files (SPEC 7). model.csv is tidy,
+// Text of the model output files (docs/reference/outputs.md). model.csv is tidy,
 // `model,variant,step,time,quantity,value`: an expected-value variant's predicted columns
 // (not `waiting`, which is N - searching); for a stochastic variant, statistics over the
 // replicates: for noa and encounters the mean (under the column's name), `name:sd` and the

@@ -1,5 +1,5 @@
 #pragma once
-// Every macroscopic prediction that applies to a world (SPEC 5): bayindir and collision
+// Every macroscopic prediction that applies to a world (docs/models.md): bayindir and collision
 // controllers get the Bayindir model, variants `original` and `collision` (expected values)
 // and `original-stochastic`, `collision-stochastic` (model.stochastic_replicates seeded
 // replicates); soysal controllers get the partition model, variants `original` and
@@ -16,7 +16,7 @@
 namespace swarmagg {
 
 // Every variant starts where model.initial_state says (models/initial_state.hpp). With
-// `measured` terms (SPEC 5.4) the `measured` variants are added too (bayindir `measured` and
+// `measured` terms (docs/models.md) the `measured` variants are added too (bayindir `measured` and
 // `measured-stochastic`, soysal `measured`; models/measured_rates.hpp).
 std::vector<VariantPrediction> predict(const WorldSpec& world,
                                        const MeasuredTerms* measured = nullptr);

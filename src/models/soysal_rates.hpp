@@ -1,5 +1,5 @@
 #pragma once
-// Per-step transition probabilities of the Soysal partition model (SPEC 5.3) for one world
+// Per-step transition probabilities of the Soysal partition model (docs/models.md) for one world
 // and leaving variant, with the experiment rules applied (join: false -> no joining,
 // leave: false -> no leaving). Encounter probabilities are swept areas per step:
 //   P_e(1) = 2 s_a (4v/pi) dt / A (two moving agents, mean relative speed 4v/pi);

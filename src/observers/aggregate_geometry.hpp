@@ -1,5 +1,5 @@
 #pragma once
-// The shape of an aggregate (SPEC 4): size m, torus-aware centroid c, outer radius
+// The shape of an aggregate (docs/models.md): size m, torus-aware centroid c, outer radius
 // R1 = max_i |x_i - c| + r, the mean distance from each member to its nearest fellow member
 // (its member spacing), and its rim count.
 //

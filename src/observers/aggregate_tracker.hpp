@@ -1,5 +1,5 @@
 #pragma once
-// Aggregates (SPEC 4): connected components of WAIT agents under "centre distance <= s",
+// Aggregates (docs/models.md): connected components of WAIT agents under "centre distance <= s",
 // torus-aware, recomputed from scratch each time, so an aggregate split by a leaver counts
 // as two. With partner links only (join: false), only the two agents of a pair are linked.
 // Components of one agent are not aggregates.

@@ -3,8 +3,8 @@
 //
 // An attempt starts when an agent in an aggregate of size m goes WAIT -> LEAVE. Then it
 // records m, the other members of that aggregate, and whether the agent stood on its rim
-// (SPEC 4's rule, observers/aggregate_geometry.hpp). The attempt ends when the agent stops
-// leaving (its timeout, LEAVE -> GO); it is an escape when at that moment the agent
+// (the rim rule of docs/models.md, observers/aggregate_geometry.hpp). The attempt ends when the
+// agent stops leaving (its timeout, LEAVE -> GO); it is an escape when at that moment the agent
 // perceives (within s) no member of the aggregate it left that is still waiting. A waiting
 // agent alone (isolated_wait: stay) has no aggregate to leave: no attempt.
 //

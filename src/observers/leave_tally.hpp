@@ -1,6 +1,6 @@
 #pragma once
-// What one replicate's LEAVE episodes add up to (SPEC 4, 5.4): attempts and escapes split by
-// where the leaver stood when it started (rim or inside, SPEC 4's rim rule), and per
+// What one replicate's LEAVE episodes add up to (docs/models.md): attempts and escapes split by
+// where the leaver stood when it started (rim or inside, the rim rule of docs/models.md), and per
 // aggregate size m the attempts, escapes and the exposure, the number of steps times the
 // aggregates of size m that existed, so escapes / (exposure dt) is the escape rate per
 // aggregate of size m, to set beside the models' m p / dt and periph(m) p / dt.

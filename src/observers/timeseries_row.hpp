@@ -1,5 +1,5 @@
 #pragma once
-// One recorded row of a replicate's time series (SPEC 7, timeseries.csv).
+// One recorded row of a replicate's time series (docs/reference/outputs.md, timeseries.csv).
 #include <cstdint>
 
 #include "control_interface/event_counts.hpp"

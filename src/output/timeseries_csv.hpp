@@ -1,5 +1,6 @@
 #pragma once
-// timeseries.csv (SPEC 7): one tidy row per replicate and recorded step, cumulative events.
+// timeseries.csv (docs/reference/outputs.md): one tidy row per replicate and recorded step,
+// cumulative events.
 #include <span>
 #include <string>
 

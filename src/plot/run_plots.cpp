@@ -13,7 +13,7 @@ bool always(const RunFiles&) {
 }
 
 bool forms_aggregates(const RunFiles& run) {
-  // The collision check's worlds are about encounters (SPEC 5.1), not aggregates.
+  // The collision check's worlds are about encounters (docs/models.md), not aggregates.
   return controller_rules(run.world).model != ModelFamily::Encounters;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // A mean over observations that come in independent clusters: the aggregate geometry of
-// SPEC 5.4 (outer radius, rim count by size) observed at every recorded step of every
+// docs/models.md (outer radius, rim count by size) observed at every recorded step of every
 // replicate. Observations of one replicate are not independent (the same aggregate is seen
 // at successive recorded steps), replicates are, so the interval treats each replicate as
 // one cluster: the pooled mean sum x / N with the cluster-robust (ratio estimator) variance

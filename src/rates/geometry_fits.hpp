@@ -1,5 +1,5 @@
 #pragma once
-// The aggregate geometry laws of SPEC 5.4 fitted to the measured `radius` and `rim` rows
+// The aggregate geometry laws of docs/models.md fitted to the measured `radius` and `rim` rows
 // (rates/rate_rows.hpp), over the sizes whose mean was measured (enough observations),
 // weighted by their observations (rates/power_law_fit.hpp):
 //   R1 = r a m^b           fitted as R1 / r = a m^b

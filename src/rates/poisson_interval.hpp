@@ -1,5 +1,5 @@
 #pragma once
-// A rate measured as events over exposure (SPEC 5.4). Given the exposure, the event count is
+// A rate measured as events over exposure (docs/models.md). Given the exposure, the event count is
 // Poisson, so the 95% interval is the exact (Garwood) one: the rate whose Poisson
 // distribution puts 2.5% above (below) the count, from the gamma quantiles
 //   low = Q_gamma(k, 0.025) / E (0 for k = 0),  high = Q_gamma(k + 1, 0.975) / E.

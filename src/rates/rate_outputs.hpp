@@ -1,5 +1,5 @@
 #pragma once
-// The measured-rates outputs of a run (SPEC 5.4), written atomically into a folder:
+// The measured-rates outputs of a run (docs/models.md), written atomically into a folder:
 // rates.csv, rates.json and, when gnuplot is installed, a plot per term (rates-<term>.png).
 #include <filesystem>
 #include <vector>

@@ -5,7 +5,7 @@
 // observed at step k is paired with the events counted during step k + 1. Step 1 is the
 // first decision: it pairs agents that random placement put within s of each other, which
 // no encounter rate describes, so its events and the exposure of step 0 are left out, and
-// its outcome is recorded as the initial state instead (SPEC 5.4). The state observed at
+// its outcome is recorded as the initial state instead (docs/models.md). The state observed at
 // the last step has no decision after it and adds no exposure.
 //
 // The aggregates' geometry is observed separately (observe_shape, at the recorded steps

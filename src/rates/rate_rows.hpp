@@ -1,11 +1,11 @@
 #pragma once
-// The measured terms of SPEC 5.4 as rows: one per term (and size), each with its estimate
+// The measured terms of docs/models.md as rows: one per term (and size), each with its estimate
 // and what every model variant says the term is. Terms:
 //  - creation (Bayindir and collision worlds) / pairup (Soysal): creations per searcher pair
 //    per tu; models: original 2 sqrt 2 s v / A, collision 2 kappa s v / A (8 s v / (pi A)
 //    kinetic), Soysal's P_e(1) / dt;
 //  - growth / join, by the size m joined: growths per searcher per size-m aggregate per tu;
-//    models: 2 rho_m v / A (SPEC 5.2), Soysal's P_e(m) / dt;
+//    models: 2 rho_m v / A (docs/models.md), Soysal's P_e(m) / dt;
 //  - initial, by size m: aggregates of size m right after the first decision per replicate
 //    (exposure: replicates), against the placement expectation (models/initial_state.hpp).
 //  - attempt / escape, by the size m left: LEAVE attempts (escapes: attempts that ended

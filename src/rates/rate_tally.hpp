@@ -1,5 +1,5 @@
 #pragma once
-// The events and exposures of SPEC 5.4, summed over the steps of one or more replicates.
+// The events and exposures of docs/models.md, summed over the steps of one or more replicates.
 // Exposures are kept in steps (whole numbers, so sums are exact and independent of the
 // order replicates are merged in); multiply by dt for tu. "Searchers" are the model's y:
 // every agent in no aggregate (a LEAVE agent too: the models have no leave timeout), or
@@ -25,7 +25,7 @@ struct RateTally {
   // LEAVE episodes by the size m of the aggregate left (observers/leave_episodes.hpp): the
   // attempts, the escapes and their exposure (aggregates of size m at each decision).
   std::vector<std::uint64_t> attempts, escapes, leave_aggregate_steps;
-  // [m] the geometry of size-m aggregates (SPEC 4) observed at the recorded steps after the
+  // [m] the geometry of size-m aggregates (docs/models.md) observed at the recorded steps after the
   // first decision, one cluster per replicate: outer radius R1 and rim count.
   std::vector<ClusteredMean> outer_radius, rim;
 

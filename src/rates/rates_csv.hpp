@@ -1,5 +1,5 @@
 #pragma once
-// rates.csv (SPEC 5.4), tidy: term,size,events,exposure,rate,ci_low,ci_high,model,variant,
+// rates.csv (docs/models.md), tidy: term,size,events,exposure,rate,ci_low,ci_high,model,variant,
 // model_rate. One row per model variant that predicts the term (a term with no model has
 // one row with the last three empty); rate and interval are empty when there were too few
 // events; size is empty where it does not apply. Rates are per tu (the `initial` term:

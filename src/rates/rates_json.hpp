@@ -1,5 +1,5 @@
 #pragma once
-// rates.json (SPEC 5.4): every measured term with its 95% interval and, per model variant,
+// rates.json (docs/models.md): every measured term with its 95% interval and, per model variant,
 // the model's value and the ratio measured / model with its interval; the initial state;
 // which terms are not measured yet and why; what the measured variant took from the model.
 #include <string>

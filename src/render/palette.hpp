@@ -1,6 +1,6 @@
 #pragma once
 // The colours of a rendered frame. Agent states use the Okabe-Ito palette, which stays
-// distinguishable under the common colour-vision deficiencies; the README legend quotes
+// distinguishable under the common colour-vision deficiencies; docs/rendering.md's legend quotes
 // these values. Aggregates are shaded with light tints keyed by their lowest member index,
 // so an aggregate keeps its tint from frame to frame while that member stays in it.
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
-// What compaction (SPEC 3) changes in one Bayindir or Soysal experiment, from the same figure
-// reproduced twice: with compaction as the world says (the SPEC default, on) and with
+// What compaction (docs/controllers.md) changes in one Bayindir or Soysal experiment, from the same
+// figure reproduced twice: with compaction as the world says (the default, on) and with
 // controller.compaction.enabled=false. Beside each model variant's error it keeps the
 // simulated quantities that explain a change: how tightly members stand, how often searchers
 // join aggregates against the model's capture radius, and how many LEAVE attempts get out.

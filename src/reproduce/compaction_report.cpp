@@ -240,7 +240,8 @@ std::string compaction_section(const std::vector<CompactionEffect>& effects,
     return text + "No Bayindir or Soysal world ran with compaction on, so nothing was compared.\n";
   }
   text +=
-      "Everything above runs with compaction on (SPEC 3, the default: waiting agents close up "
+      "Everything above runs with compaction on (docs/controllers.md, the default: waiting agents "
+      "close up "
       "to touching). Every Bayindir and Soysal experiment also ran with "
       "`controller.compaction.enabled=false` (runs and plots in `" +
       off_folder +

@@ -1,9 +1,9 @@
 #pragma once
-// REPORT.md's section on compaction (SPEC 3): every Bayindir and Soysal experiment's model
-// errors with compaction on (the SPEC default, the rest of the report) and off, what changed
-// in the simulation (member spacing, growth against the model's capture radius, the fraction
-// of LEAVE attempts that get out), a paragraph written from those numbers, and the paper's
-// claims whose verdict differs between the two.
+// REPORT.md's section on compaction (docs/controllers.md): every Bayindir and Soysal experiment's
+// model errors with compaction on (the default, the rest of the report) and off, what changed in
+// the simulation (member spacing, growth against the model's capture radius, the fraction of LEAVE
+// attempts that get out), a paragraph written from those numbers, and the paper's claims whose
+// verdict differs between the two.
 #include <string>
 #include <vector>
 

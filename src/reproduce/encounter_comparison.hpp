@@ -2,7 +2,7 @@
 // Simulated encounter frequency against collision theory (Figs 7-8), from a collision
 // world's timeseries.csv: each replicate's final cumulative encounter count divided by the
 // run's duration, averaged over replicates; beside it the kinetic prediction
-// Z = (4/pi) s v N(N-1)/A (SPEC 5.1) and the paper's fitted Z = C s v N^2.
+// Z = (4/pi) s v N(N-1)/A (docs/models.md) and the paper's fitted Z = C s v N^2.
 #include <filesystem>
 
 #include "config/world_spec.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// The paper's figures (SPEC 6) as data: which worlds of worlds/paper/ each one plots and how.
-// One figure per world for the NOA and partition experiments; the two collision checks put
+// The paper's figures (docs/reproducing.md) as data: which worlds of worlds/paper/ each one plots
+// and how. One figure per world for the NOA and partition experiments; the two collision checks put
 // eleven worlds on one axis each.
 #include <string>
 #include <vector>

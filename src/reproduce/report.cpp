@@ -260,14 +260,16 @@ std::string report_markdown(const ReportContext& context, const std::vector<Figu
       "`runs/<world>/`.\n\n"
       "Model variants: Bayindir `original` (creation sqrt 2 s v dt y^2 / A), `collision` (kinetic "
       "theory, "
-      "(4/pi) s v dt y(y-1) / A, SPEC 5.1), `collision-paper` (the paper's improved model with its "
+      "(4/pi) s v dt y(y-1) / A, docs/models.md), `collision-paper` (the paper's improved model "
+      "with its "
       "fitted "
       "constant, C s v y^2 dt; it has no area term, so a constant fitted on one arena cannot hold "
       "on "
       "another: see the deviation columns of Figs 7-8); Soysal `original` (every member may leave) "
       "and `peripheral` "
       "(uncapped "
-      "periphery, `periphery_cap: false`, as the paper's 5-agent improvement needs; SPEC 5.3).\n\n";
+      "periphery, `periphery_cap: false`, as the paper's 5-agent improvement needs; "
+      "docs/models.md).\n\n";
   text += "## Collision theory (Figs 7-8)\n\n" + encounter_table(results) + "\n" +
           figure_images(results, is_encounter_figure);
   text +=
@@ -283,8 +285,9 @@ std::string report_markdown(const ReportContext& context, const std::vector<Figu
       "length (transient included, as the simulation's fractions are).\n\n" +
       partition_table(results) + "\n" + figure_images(results, is_partition_figure);
   text +=
-      "## Why the models miss\n\nEach run measures the terms the models are built from (SPEC "
-      "5.4; `runs/<world>/rates.csv`, exact Poisson 95% intervals, terms with fewer than 10 "
+      "## Why the models miss\n\nEach run measures the terms the models are built from "
+      "(docs/models.md; "
+      "`runs/<world>/rates.csv`, exact Poisson 95% intervals, terms with fewer than 10 "
       "events left out). The table gives the term furthest from the world's model variant "
       "(ratio measured / model), and the error (NOA RMSE or TV distance, as above) of the paper's "
       "variants beside that of the `measured` variant: the same equations fed with the measured "

@@ -3,9 +3,9 @@
 // <out>/runs/<world>/ with the model outputs beside it, compares each experiment with the
 // models, draws one PNG per paper figure into <out>/plots/ and writes <out>/REPORT.md.
 // --quick is the same path with fewer replicates and shorter runs, applied as overrides.
-// Every Bayindir and Soysal experiment whose world compacts (SPEC 3, the default) runs a
-// second time with controller.compaction.enabled=false into <out>/compaction-off/{runs,
-// plots}/; the report sets the two side by side and <out>/compaction.csv holds the numbers.
+// Every Bayindir and Soysal experiment whose world compacts (docs/controllers.md, the default) runs
+// a second time with controller.compaction.enabled=false into <out>/compaction-off/{runs, plots}/;
+// the report sets the two side by side and <out>/compaction.csv holds the numbers.
 #include <filesystem>
 #include <ostream>
 #include <string>

@@ -150,7 +150,7 @@ void check_events(const CheckedState& s, int waiting) {
     violated(s, "events counted that the rules rule out" + show());
 }
 
-// Solid to each other during the step (SPEC 2; controllers' blocked_by masks).
+// Solid to each other during the step (docs/architecture.md; controllers' blocked_by masks).
 bool solid(AgentState a, AgentState b, bool join) {
   const auto blocked = [join](AgentState mover) {
     return mover == AgentState::Leave ||
@@ -249,7 +249,7 @@ void InvariantChecker::check_motion(const CheckedState& s) const {
   const double slack = kRounding * (longest_side(s.spec) + reach);
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
     const double moved = geometry.distance(positions_[i], s.positions[i]);
-    // Waiting agents move only to close up their aggregate (SPEC 3 "Compaction").
+    // Waiting agents move only to close up their aggregate (docs/controllers.md, "Compaction").
     const double limit = s.swarm.state[i] == AgentState::Wait && !s.rules.compacts ? 0.0 : reach;
     if (moved > limit + slack) {
       violated(s, agent(s, i) + " moved " + format_number(moved) + " from " + point(positions_[i]) +

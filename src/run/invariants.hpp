@@ -23,8 +23,8 @@
 //  - cumulative event counts never decrease;
 //  - kinematic engine (exact): no agent moves farther than v dt, waiting agents stay put;
 //  - two bodies solid to each other during the step (a WAIT agent and a LEAVE agent, or a
-//    searching one when joining is allowed: SPEC 2) do not sink into each other: their
-//    overlap grows by at most the engine's tolerance (rounding for the kinematic engine; r
+//    searching one when joining is allowed: docs/architecture.md) do not sink into each other:
+//    their overlap grows by at most the engine's tolerance (rounding for the kinematic engine; r
 //    for Box2D, which lets bodies overlap by a substep's travel before it resolves a contact).
 #include <cstdint>
 #include <span>

@@ -1,6 +1,6 @@
 #pragma once
-// The macroscopic predictions written beside a run (SPEC 7): model.csv (tidy, every
-// variant) and model-timeseries/<model>-<variant>.csv (the simulation's timeseries.csv
+// The macroscopic predictions written beside a run (docs/reference/outputs.md): model.csv (tidy,
+// every variant) and model-timeseries/<model>-<variant>.csv (the simulation's timeseries.csv
 // columns, so model and simulation plot together).
 #include <filesystem>
 #include <vector>

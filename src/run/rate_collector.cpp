@@ -52,7 +52,7 @@ class RateObserver final : public ReplicateObserver {
     copy(leave.aggregate_steps_by_size, tally.leave_aggregate_steps);
   }
 
-  // The aggregates' geometry (SPEC 4), measured as summary.json's final aggregates are, at
+  // The aggregates' geometry (docs/models.md), measured as summary.json's final aggregates are, at
   // the recorded steps only (O(m^2) per aggregate).
   void observe_shapes(const Replicate& replicate) {
     members_.build(replicate.aggregates());

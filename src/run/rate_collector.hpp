@@ -1,5 +1,5 @@
 #pragma once
-// Measured rates of a run (SPEC 5.4): an observer per replicate feeds a RateRecorder every
+// Measured rates of a run (docs/models.md): an observer per replicate feeds a RateRecorder every
 // step, and the collector merges the replicates' tallies. Each observer writes only its own
 // replicate's slot, so replicates may run in any threads; the merged sums are whole numbers,
 // identical for any thread count.

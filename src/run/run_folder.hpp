@@ -1,6 +1,6 @@
 #pragma once
-// The run output folder (SPEC 7): world.resolved.yaml, timeseries.csv, summary.json and,
-// for Soysal worlds, partitions.csv; each written atomically.
+// The run output folder (docs/reference/outputs.md): world.resolved.yaml, timeseries.csv,
+// summary.json and, for Soysal worlds, partitions.csv; each written atomically.
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -3,7 +3,8 @@
 //
 //   name: p-leave-vs-count          # optional; default: the file name without .yaml
 //   base: ../../worlds/examples/demo.yaml   # relative to the sweep file
-//   parameters:                     # world key paths (SPEC 7) -> non-empty lists of values
+//   parameters:                     # world key paths (docs/reference/world-keys.md) -> non-empty
+//   lists of values
 //     robots.count: [30, 60]
 //     controller.p_leave: [0.0005, 0.001, 0.005]
 //   replicates: 3                   # per point; default: the base world's run.replicates

@@ -179,8 +179,8 @@ std::vector<Case> kinematic_cases() {
   // Large enough that two threads share the neighbour search and the strip sort
   // (16,384 agents per task); fewer steps, to keep the test quick. Bayindir's buffers grew
   // at steps 97 and 250 here (seeds 8 and 9 alike) while waiting agents stood still; with
-  // compaction (SPEC 3) closing aggregates add close pairs, and steps 100-200 saw buffers
-  // grow: the window is taken after the packs have formed (400-500, measured clean).
+  // compaction (docs/controllers.md) closing aggregates add close pairs, and steps 100-200 saw
+  // buffers grow: the window is taken after the packs have formed (400-500, measured clean).
   for (const auto& [name, type] : {controllers[0], controllers[1]}) {
     Case c;
     c.name = std::string(name) + "_40000_agents_2_threads";

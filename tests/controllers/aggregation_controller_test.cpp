@@ -269,8 +269,8 @@ TEST(CollisionController, PaperModePairsThenBothLeaveAtOnce) {
   EXPECT_EQ(f.events.dissipations, 1u);
 }
 
-// SPEC 3 "Compaction". Waiting agents that go on waiting close up under the spring force of
-// the waiting members of their aggregate they perceive.
+// docs/controllers.md, "Compaction". Waiting agents that go on waiting close up under the spring
+// force of the waiting members of their aggregate they perceive.
 constexpr SignalMask kLeaveMask = mask_of(static_cast<Signal>(AgentState::Leave));
 
 TEST(Compaction, WaitingMembersPullEachOtherToTheSpacingAtMostAtV) {

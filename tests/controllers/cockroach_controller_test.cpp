@@ -103,8 +103,8 @@ TEST(CockroachController, ALeaverSearchesAgainAfterItsTimeout) {
   EXPECT_EQ(f.swarm.state[a], AgentState::Go);
 }
 
-// Compaction (SPEC 3) is on by default: a waiting agent that goes on waiting moves under the
-// spring force of the waiting members of its aggregate it perceives, solid to every body.
+// Compaction (docs/controllers.md) is on by default: a waiting agent that goes on waiting moves
+// under the spring force of the waiting members of its aggregate it perceives, solid to every body.
 TEST(CockroachController, WaitingMembersCloseUpUnderCompaction) {
   ControllerFixture f(cockroach("[0]", "[0]"));
   const auto a = f.add(10, 10, AgentState::Wait);
@@ -129,7 +129,7 @@ TEST(CockroachController, WaitingMembersCloseUpUnderCompaction) {
 }
 
 // A leaver whose neighbours surround it (their offsets nearly cancel) is enclosed: it draws a
-// random heading (SPEC 3) instead of the direction of the small remainder.
+// random heading (docs/controllers.md) instead of the direction of the small remainder.
 TEST(CockroachController, AnEnclosedLeaverDrawsARandomHeading) {
   // Only an agent that perceives six waiting agents leaves: the centre of the ring.
   const auto leaver = [](bool compaction) {

@@ -6,7 +6,7 @@ namespace swarmagg {
 namespace {
 
 TEST(AggregateShape, PeripheryMatchesTheValuesQuotedInTheSpec) {
-  // SPEC 5.3: 3.25, 4.19, 5.02 for i = 3, 4, 5 (pi (1.20 i^0.48 - 1), uncapped).
+  // docs/models.md: 3.25, 4.19, 5.02 for i = 3, 4, 5 (pi (1.20 i^0.48 - 1), uncapped).
   EXPECT_NEAR(periphery_agents(3), 3.2461780906421134, 1e-12);
   EXPECT_NEAR(periphery_agents(4), 4.192052875853893, 1e-12);
   EXPECT_NEAR(periphery_agents(5), 5.02116157966924, 1e-12);

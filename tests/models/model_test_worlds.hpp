@@ -1,5 +1,5 @@
 #pragma once
-// Worlds for the model tests, set like the paper's experiments (SPEC 6): s = 4, r = 1,
+// Worlds for the model tests, set like the paper's experiments (docs/reproducing.md): s = 4, r = 1,
 // v = 1, dt = 0.1.
 #include "config/world_spec.hpp"
 

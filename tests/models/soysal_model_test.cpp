@@ -42,7 +42,7 @@ TEST(SoysalModel, StartsFreeAndReportsNormalisedDistributions) {
 }
 
 TEST(SoysalModel, CappedPeripheralEqualsOriginalUpToFiveAgents) {
-  // SPEC 5.3: with the cap, periph(i) = i for i <= 5, so the variants coincide.
+  // docs/models.md: with the cap, periph(i) = i for i <= 5, so the variants coincide.
   WorldSpec world = testing::soysal_world(5, 150.0);
   world.run.duration = 1e5;
   world.model.periphery_cap = true;

@@ -24,7 +24,7 @@ struct Stepper {
   }
 };
 
-// A 7-hexagon at 2r: the centre (0) is inside, the ring (1..6) is rim (SPEC 4).
+// A 7-hexagon at 2r: the centre (0) is inside, the ring (1..6) is rim (docs/models.md).
 TEST(LeaveEpisodes, SplitsAttemptsByRimAndInside) {
   Stepper s;
   const AgentId centre = s.scene.add_hexagon(50.0, 50.0, 1, 2.0);

@@ -111,7 +111,7 @@ TEST(AggregateSummary, MeanMemberSpacingWeighsEveryMemberOnce) {
 
 // A hand-placed 19-pack at 2r (centre, ring of 6, ring of 12, in that order) that leaves
 // often: the first attempt of each seed is inside when the leaver is one of the inner
-// seven, rim otherwise (SPEC 4: the outer ring has at most 4 fellows within 2.4).
+// seven, rim otherwise (docs/models.md: the outer ring has at most 4 fellows within 2.4).
 WorldSpec packed_world(std::uint64_t seed) {
   testing::Scene scene;
   scene.add_hexagon(20.0, 20.0, 2, 2.0 + 1e-6);  // a hair apart: placed bodies never overlap

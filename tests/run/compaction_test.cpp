@@ -1,5 +1,5 @@
-// Compaction (SPEC 3) on both engines, with the controllers unchanged: waiting agents close
-// up to touching and hold a packed aggregate still; bodies never overlap; a leaver enclosed
+// Compaction (docs/controllers.md) on both engines, with the controllers unchanged: waiting agents
+// close up to touching and hold a packed aggregate still; bodies never overlap; a leaver enclosed
 // by its aggregate is held by the bodies around it, one on the rim gets out. No rule looks at
 // where an agent stands, so the last two are what the engines' contacts make of the same
 // commands.
@@ -152,7 +152,7 @@ TEST_P(Compaction, UnderJoinFalsePartnersCloseToTheSpacing) {
 }
 
 // Whether `leaver`, sent to LEAVE by hand after the pack has settled for 20 steps, escaped
-// (SPEC 4): at the end of its timeout it perceived no waiting agent. No two bodies may come
+// (docs/models.md): at the end of its timeout it perceived no waiting agent. No two bodies may come
 // closer than contact allows on the way.
 bool escapes(const WorldSpec& spec, const std::vector<Vec2>& start, AgentId leaver,
              std::uint64_t seed) {
@@ -182,7 +182,7 @@ constexpr int kTrials = 100;
 
 // A leaver at the centre of a packed 19-pack has six bodies around it, each pulled in by the
 // rest of the pack; whatever heading it draws, it must not get out in any trial (it is the
-// case SPEC 3 says contacts alone must decide).
+// case docs/controllers.md says contacts alone must decide).
 TEST_P(Compaction, AnEnclosedLeaverNeverGetsOut) {
   int escaped = 0;
   for (int trial = 0; trial < kTrials; ++trial) {

@@ -47,7 +47,7 @@ struct GoldenWorld {
 
 // Overrides every golden world takes: short runs on two threads.
 const std::vector<std::string> kShared = {"run.replicates=2", "run.threads=2"};
-// Compaction (SPEC 3) moves waiting agents; switched off, the outputs are those of the
+// Compaction (docs/controllers.md) moves waiting agents; switched off, the outputs are those of the
 // still-standing waiting agents the paper worlds' hashes were recorded with.
 const std::string kStillWaiting = "controller.compaction.enabled=false";
 // The kinematic engine halted bodies at contact when these hashes were recorded; it slides

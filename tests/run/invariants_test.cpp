@@ -34,7 +34,8 @@ struct Scene {
   ControllerRules rules;
   std::int64_t step = 1;
 
-  // The world is a 40 x 40 torus with the defaults SPEC 7 gives, changed by `overrides`.
+  // The world is a 40 x 40 torus with the defaults docs/reference/world-keys.md gives, changed by
+  // `overrides`.
   Scene(const std::vector<std::string>& overrides, std::vector<Vec2> at,
         std::vector<AgentState> states)
       : spec(load_world_text("arena: {width: 40, height: 40}\nrobots: {count: 3}\n", "scene.yaml",
@@ -228,7 +229,7 @@ TEST(Invariants, KinematicAgentsMoveAtMostVdtAndWaitingOnesNotAtAll) {
   EXPECT_THAT(violation(checker, scene), HasSubstr("agent 0 (WAIT) moved 0.0625"));
 }
 
-// With compaction (SPEC 3) waiting agents close up, at most at v like everyone else.
+// With compaction (docs/controllers.md) waiting agents close up, at most at v like everyone else.
 TEST(Invariants, CompactingWaitingAgentsMoveAtMostVdt) {
   InvariantChecker checker;
   Scene scene = pair_and_searcher();

@@ -73,7 +73,7 @@ void expect_identical(const EndState& one, const EndState& many, int threads) {
 
 void check_thread_counts(const std::string& type) {
   const WorldSpec spec = identity_world(type);
-  // Waiting agents move too (SPEC 3's default), through the same guarded solver.
+  // Waiting agents move too (on by default, docs/controllers.md), through the same guarded solver.
   EXPECT_TRUE(spec.controller.compaction.enabled);
   const EndState one = run(spec, 1);
   // The comparison must see a world that did something.

@@ -30,7 +30,7 @@ inline bool perceives_waiting(const NeighbourLists& neighbours, const SwarmState
 
 // Runs `spec` from `start`, sends `leaver` to LEAVE at step `leave_at` (every agent must be
 // waiting by then) and returns whether it still perceived a waiting agent when its timeout ran
-// out, in the decision that ends it: then it joins again and did not get out (SPEC 4).
+// out, in the decision that ends it: then it joins again and did not get out (docs/models.md).
 // `after_step` sees the engine after every step taken before that decision. A LEAVE state
 // that never ends within 400 steps fails the test and counts as not out.
 inline bool caught_at_timeout(const WorldSpec& spec, const std::vector<Vec2>& start, AgentId leaver,

@@ -1,5 +1,5 @@
 #pragma once
-// The Box2D 2.4 engine (SPEC section 2). Every agent is a dynamic disc body of radius r with
+// The Box2D 2.4 engine (docs/architecture.md). Every agent is a dynamic disc body of radius r with
 // sensor discs whose begin/end events give its perceived agents and first contacts; contacts
 // between bodies are real where MotionCommand::blocked_by says so, guarded moves stop a body
 // in the (sub)step its sensor fired, and repelled_by signals push a body away within s. On a

@@ -1,4 +1,4 @@
-// Encounters in ghost mode (agents pass over each other) against kinetic theory (SPEC 5.1):
+// Encounters in ghost mode (agents pass over each other) against kinetic theory (docs/models.md):
 // y agents at speed v with independent uniform headings on area A meet at
 // Z = (4/pi) s v y (y - 1) / A first contacts per tu.
 #include <gtest/gtest.h>

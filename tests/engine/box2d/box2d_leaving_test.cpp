@@ -1,7 +1,7 @@
 // "Only peripheral agents can get out of an aggregate" must emerge from the Box2D engine's
-// real contacts and the repulsion of waiting agents (SPEC 2), with the controllers unchanged:
-// a LEAVE agent in the middle of a packed aggregate cannot get out within its timeout, one on
-// the rim can.
+// real contacts and the repulsion of waiting agents (docs/architecture.md), with the controllers
+// unchanged: a LEAVE agent in the middle of a packed aggregate cannot get out within its timeout,
+// one on the rim can.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The torus seam of the Box2D engine: sensing and collisions across an edge behave exactly as
-// in mid-arena (SPEC 2; DEPS-NOTES: naive ghosts act like walls of infinite mass).
+// in mid-arena (docs/architecture.md: naive ghosts act like walls of infinite mass).
 #include <gtest/gtest.h>
 
 #include <vector>

@@ -118,8 +118,8 @@ TEST(KinematicEngine, BlockedBodyStopsAtContactAndMayStillMoveAway) {
   EXPECT_NEAR(engine->positions()[0].x, 47.0, 1e-9);
 }
 
-// Compaction's moves (SPEC 3): two waiting bodies closing in on each other, each blocked by
-// the other, stop together at contact.
+// Compaction's moves (docs/controllers.md): two waiting bodies closing in on each other, each
+// blocked by the other, stop together at contact.
 TEST(KinematicEngine, TwoBlockedBodiesMovingTogetherStopAtContact) {
   WorldSpec spec = arena_world(100.0, 100.0);
   auto engine = make_kinematic_engine(spec, std::vector<Vec2>{{48.25, 50.0}, {51.75, 50.0}});

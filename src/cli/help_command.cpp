@@ -1,0 +1,55 @@
+// `swarmagg help [--markdown]`: the help of every command in one page. `--markdown` prints
+// docs/reference/cli.md, which a test compares with this output, so the page cannot drift
+// from the options the commands really take.
+#include <iostream>
+
+#include "cli/commands.hpp"
+
+namespace swarmagg::cli {
+namespace {
+
+void print_markdown(CLI::App& app) {
+  std::cout
+      << "# Command-line reference\n\n"
+      << "<!-- Generated from the commands' own --help; do not edit by hand. -->\n"
+      << "Regenerate this page after adding or changing a command or option:\n\n"
+      << "```sh\nbuild/swarmagg help --markdown > docs/reference/cli.md\n```\n\n"
+      << "(the test `docs_reference` fails while the page differs from that output).\n\n"
+      << "Exit codes: 0 success; 2 bad input (the message names the file, line and key); 1"
+         " failure; 130 or 143 interrupted by SIGINT or SIGTERM (completed outputs are intact,"
+         " nothing half-written remains). Every command that takes a world also takes `--set"
+         " key.path=value` (repeatable) with the keys of [world-keys.md](world-keys.md).\n\n"
+      << "```text\n"
+      << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal)
+      << "```\n";
+  for (CLI::App* command : app.get_subcommands({})) {
+    std::cout << "\n## " << command->get_name() << "\n\n"
+              << command->get_description() << ".\n\n"
+              << "```text\n"
+              << command->help(app.get_name()) << "```\n";
+  }
+}
+
+}  // namespace
+
+void add_help_command(CLI::App& app, Action& action) {
+  auto markdown = std::make_shared<bool>(false);
+  CLI::App* command =
+      app.add_subcommand("help", "Print the help of every command (docs/reference/cli.md)");
+  command->add_flag("--markdown", *markdown,
+                    "Print the page docs/reference/cli.md: every command's --help");
+  command->callback([markdown, &app, &action] {
+    action = [markdown, &app] {
+      if (*markdown) {
+        print_markdown(app);
+      } else {
+        for (CLI::App* sub : app.get_subcommands({})) {
+          std::cout << sub->help(app.get_name()) << "\n";
+        }
+      }
+      return 0;
+    };
+  });
+}
+
+}  // namespace swarmagg::cli
