@@ -4,15 +4,14 @@
 // depends only on how many waiting agents it perceives, not on an aggregate it cannot see.
 //  - A GO agent that perceives n >= 1 waiting agents within s stops (WAIT, a growth) with
 //    probability stop_probability[n] per step; if it does not stop it heads away from them.
-//  - Searchers that perceive no waiting agent pair up as in docs/controllers.md (nearest first,
-//  pairs are
-//    mutual; a creation), so aggregates can start.
+//  - Searchers that perceive no waiting agent pair up as Bayindir's do (nearest first, pairs
+//    are mutual; a creation), so aggregates can start.
 //  - A WAIT agent that perceives n waiting agents (n >= 0) leaves with probability
 //    leave_probability[n] per step.
-//  - LEAVE as in docs/controllers.md: away from the agents it perceives for leave_timeout, then GO.
-//  - With compaction (docs/controllers.md), agents that go on waiting close up under the spring
-//  force of
-//    the waiting members of their aggregate they perceive, solid to every body.
+//  - LEAVE as for every controller: away from the agents it perceives for leave_timeout,
+//    then GO (docs/controllers.md).
+//  - With compaction (docs/controllers.md), agents that go on waiting close up under the
+//    spring force of the waiting members of their aggregate they perceive, solid to every body.
 // The last entry of each list holds for larger n. All agents decide at once from the states
 // of the previous step, so the result never depends on agent order.
 #include <cstdint>

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Every relative link and image in README.md, CHANGELOG.md and docs/ resolves: the file (or
-folder) exists in the repository and, for `page.md#anchor`, the page has that heading.
-Also refuses links that leave the repository.
+"""Every relative link and image in the repository's Markdown pages (README.md, CHANGELOG.md,
+docs/, ...) resolves: the file (or folder) exists in the repository and, for `page.md#anchor`,
+the page has that heading. Also refuses links that leave the repository.
 
 Usage: check_links.py SOURCE_DIR
 """
@@ -13,22 +13,25 @@ LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 FENCE = re.compile(r"^\s*```")
 
 
-def prose(text):
-    """The page without its fenced code blocks and inline code, where links are not links."""
+def outside_fences(text):
     kept, inside = [], False
     for line in text.splitlines():
         if FENCE.match(line):
             inside = not inside
-            continue
-        if not inside:
-            kept.append(re.sub(r"`[^`]*`", "", line))
-    return "\n".join(kept)
+        elif not inside:
+            kept.append(line)
+    return kept
+
+
+def prose(text):
+    """The page without code blocks and inline code, where links are not links."""
+    return "\n".join(re.sub(r"`[^`]*`", "", line) for line in outside_fences(text))
 
 
 def anchors(page):
     """GitHub's heading anchors of a Markdown page."""
     found = set()
-    for line in prose(page.read_text()).splitlines():
+    for line in outside_fences(page.read_text()):
         heading = re.match(r"^#{1,6}\s+(.*?)\s*#*\s*$", line)
         if heading:
             slug = re.sub(r"[^\w\- ]", "", heading.group(1).lower()).replace(" ", "-")
@@ -38,7 +41,13 @@ def anchors(page):
 
 def main():
     root = Path(sys.argv[1]).resolve()
-    pages = [root / "README.md", root / "CHANGELOG.md"] + sorted((root / "docs").rglob("*.md"))
+    pages = [root / "README.md", root / "CHANGELOG.md"]
+    for page in sorted(root.rglob("*.md")):
+        top = page.relative_to(root).parts[0]
+        # Build folders and the outputs of runs are not the repository's pages.
+        if page in pages or top in {".git", "runs", "renders", "reproduce"} or top.startswith("build"):
+            continue
+        pages.append(page)
     problems, checked = [], 0
     for page in pages:
         if not page.exists():

@@ -2,7 +2,8 @@
 """Runs the commands of the README and the tutorial pages as a reader would, and checks the
 outputs the pages quote.
 
-Usage: run_docs.py SWARMAGG SOURCE_DIR [PAGE ...]   (pages default: README.md, docs/tutorial/*.md)
+Usage: run_docs.py SWARMAGG SOURCE_DIR [PAGE ...]
+(pages default: README.md, docs/worlds.md, docs/tutorial/*.md)
 
 Each page runs in its own temporary folder holding `build/swarmagg` (the binary under test)
 and links to the repository's worlds/, examples/, controllers/ and scripts/, so the pages'
@@ -149,7 +150,7 @@ def run_page(page, source_dir, swarmagg):
 
 def main():
     swarmagg, source_dir = sys.argv[1], Path(sys.argv[2]).resolve()
-    pages = sys.argv[3:] or ["README.md"] + sorted(
+    pages = sys.argv[3:] or ["README.md", "docs/worlds.md"] + sorted(
         str(p.relative_to(source_dir)) for p in (source_dir / "docs" / "tutorial").glob("*.md"))
     failures = 0
     for page in pages:
