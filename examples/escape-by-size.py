@@ -13,7 +13,7 @@ b near 0.5 the periphery law. Standard library only.
 
     build/swarmagg compare worlds/examples/compact.yaml --set robots.count=200 \\
         --set run.duration=3000 --replicates 6 --out runs/dense-compare
-    python3 examples/escape-by-size.py runs/dense-compare
+    /usr/bin/python3 examples/escape-by-size.py runs/dense-compare
 """
 import csv
 import json

@@ -19,10 +19,20 @@ std::string default_text(const WorldKey& key) {
   return out.c_str();
 }
 
-std::string table_cell(const std::string& text) {
+// Text inside a code span of a Markdown table cell: only '|' would end the cell.
+std::string code_cell(const std::string& text) {
   std::string cell;
   for (const char c : text) cell += c == '|' ? std::string("\\|") : std::string(1, c);
   return cell;
+}
+
+// Plain text in a Markdown table cell, where "<name>" would also read as an HTML tag.
+std::string table_cell(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    escaped += c == '<' ? std::string("&lt;") : c == '>' ? std::string("&gt;") : std::string(1, c);
+  }
+  return code_cell(escaped);
 }
 
 std::string block_of(const std::string& path) {
@@ -61,7 +71,7 @@ void print_markdown() {
                 << "|---|---|---|---|---|\n";
     }
     std::cout << "| `" << key.path << "` | " << key.type << " | " << table_cell(key.expected)
-              << " | `" << table_cell(default_text(key)) << "` | " << table_cell(key.meaning)
+              << " | `" << code_cell(default_text(key)) << "` | " << table_cell(key.meaning)
               << " |\n";
   }
 }

@@ -10,8 +10,8 @@
 
 namespace {
 
-using ::testing::HasSubstr;
 using swarmagg::testing::run_swarmagg;
+using ::testing::HasSubstr;
 
 TEST(KeysCommand, EveryKeyOfTheTableHasATypeAndAMeaning) {
   for (const swarmagg::WorldKey& key : swarmagg::world_keys()) {
@@ -23,8 +23,9 @@ TEST(KeysCommand, EveryKeyOfTheTableHasATypeAndAMeaning) {
 TEST(KeysCommand, ListsEveryKeyWithItsDefault) {
   const auto outcome = run_swarmagg("keys");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  const std::string lines = "\n" + outcome.output;  // each key starts a line
   for (const std::string& path : swarmagg::world_key_paths()) {
-    EXPECT_THAT(outcome.output, HasSubstr("\n" + path + "  (")) << path;
+    EXPECT_THAT(lines, HasSubstr("\n" + path + "  (")) << path;
   }
   EXPECT_THAT(outcome.output, HasSubstr("robots.count  (integer, default 150)"));
   EXPECT_THAT(outcome.output, HasSubstr("controller.stop_probability  (list of numbers, default "
