@@ -4,6 +4,7 @@
 // replicate index give the same states, step for step (state_hash() == final_state_hash).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <array>
 #include <memory>
@@ -84,7 +85,7 @@ class Simulation {
 
   std::string hash() const { return state_hash_text(state_hash(*replicate_)); }
 
-  void render_png(const std::string& path, Size size) {
+  void render_png(const std::filesystem::path& path, Size size) {
     FrameRenderer& renderer = renderer_for(size);
     write_png(path, renderer.width(), renderer.height(), renderer.render(replicate_->snapshot()),
               kFrameCompression);

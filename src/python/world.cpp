@@ -1,6 +1,7 @@
 #include "python/world.hpp"
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
@@ -43,10 +44,10 @@ std::vector<WorldOverride> set_overrides(const py::dict& set) {
   return overrides;
 }
 
-World load(const std::string& path, const py::dict& set) {
+World load(const std::filesystem::path& path, const py::dict& set) {
   const std::vector<WorldOverride> overrides = set_overrides(set);
   return {std::make_shared<const WorldSpec>(
-      reading_file([&] { return load_world_with(path, overrides); }))};
+      reading_file([&] { return load_world_with(path.string(), overrides); }))};
 }
 
 std::string engine_name(const WorldSpec& spec) {

@@ -62,7 +62,7 @@ def test_render_png_draws_the_pixels_of_the_run_frames(cli, demo, tmp_path):
         "--render-every", 100, "--render-size", "96x80", "--quiet", "--no-plots", "--no-model")
     sim = sa.Simulation(sa.load_world(str(demo), set=SMALL), seed=4)
     sim.step(100)
-    sim.render_png(str(tmp_path / "python.png"), size=(96, 80))
+    sim.render_png(tmp_path / "python.png", size=(96, 80))
     drawn = matplotlib.image.imread(tmp_path / "python.png")
     recorded = matplotlib.image.imread(tmp_path / "frames" / "frame_000001.png")
     assert drawn.shape[:2] == (80, 96)

@@ -9,7 +9,7 @@ def test_a_bad_world_raises_world_error_naming_file_line_and_key(tmp_path):
     path = tmp_path / "bad.yaml"
     path.write_text("name: bad\nrobots:\n  count: many\n")
     with pytest.raises(sa.WorldError) as error:
-        sa.load_world(str(path))
+        sa.load_world(path)  # a str or any os.PathLike
     message = str(error.value)
     assert str(path) in message
     assert "robots.count" in message
