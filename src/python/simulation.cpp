@@ -16,6 +16,7 @@
 #include "core/errors.hpp"
 #include "python/bindings.hpp"
 #include "python/world.hpp"
+#include "render/frame_recorder.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/png_writer.hpp"
 #include "run/replicate.hpp"
@@ -27,7 +28,7 @@ namespace swarmagg::python {
 namespace {
 
 // The PNG level frame recorders use, so a frame written here is the recorder's file.
-constexpr int kFrameCompression = 1;
+const int kFrameCompression = FrameRecorderOptions{}.compression_level;
 // Steps between two looks at Python's signals inside step(n).
 constexpr std::int64_t kStepsBetweenSignalChecks = 1024;
 
@@ -52,7 +53,8 @@ class Simulation {
     }
   }
 
-  // A read-only view owned by `self` (the Python object), so the arrays outlive no one.
+  // A read-only view whose base is `self`, the Python Simulation: the simulation lives as long
+  // as any view of it.
   template <typename T>
   static py::array view(const T* data, std::vector<py::ssize_t> shape,
                         std::vector<py::ssize_t> strides, const py::object& self) {
