@@ -127,6 +127,12 @@ class Simulation {
   std::unique_ptr<FrameRenderer> renderer_;
 };
 
+// A view property: the view's base is the Python object the attribute was read from.
+template <py::array (Simulation::*View)(const py::object&) const>
+py::array view_of(const py::object& self) {
+  return (self.cast<const Simulation&>().*View)(self);
+}
+
 }  // namespace
 
 void bind_simulation(py::module_& module) {
@@ -147,21 +153,15 @@ void bind_simulation(py::module_& module) {
            py::arg("engine") = py::none())
       .def("step", &Simulation::step, py::arg("steps") = 1,
            "Advances by `steps` steps of dt (Ctrl-C stops it between steps).")
+      .def_property_readonly("positions", &view_of<&Simulation::positions>,
+                             "numpy.ndarray (N, 2) float64, read-only view: agent centres (x, y).")
+      .def_property_readonly("headings", &view_of<&Simulation::headings>,
+                             "numpy.ndarray (N, 2) float64, read-only view: unit heading vectors.")
       .def_property_readonly(
-          "positions",
-          [](const py::object& self) { return self.cast<const Simulation&>().positions(self); },
-          "numpy.ndarray (N, 2) float64, read-only view: agent centres (x, y).")
-      .def_property_readonly(
-          "headings",
-          [](const py::object& self) { return self.cast<const Simulation&>().headings(self); },
-          "numpy.ndarray (N, 2) float64, read-only view: unit heading vectors.")
-      .def_property_readonly(
-          "states",
-          [](const py::object& self) { return self.cast<const Simulation&>().states(self); },
+          "states", &view_of<&Simulation::states>,
           "numpy.ndarray (N,) int8, read-only view: controller states, values of swarmagg.State.")
       .def_property_readonly(
-          "aggregates",
-          [](const py::object& self) { return self.cast<const Simulation&>().aggregates(self); },
+          "aggregates", &view_of<&Simulation::aggregates>,
           "numpy.ndarray (N,) int32, read-only view: aggregate id of each agent (0 .. noa-1), "
           "-1 for agents in no aggregate.")
       .def_property_readonly(
