@@ -12,13 +12,17 @@ FOREVER = {"run.duration": 1e6}
 PATIENCE = 60  # s; a child still running then is a hang, not slowness
 
 
-def interrupt_child(script: str) -> subprocess.CompletedProcess:
+def interrupt_child(script: str, ready=lambda: True) -> subprocess.CompletedProcess:
     """Starts `script` in a fresh interpreter, sends SIGINT once it says it is about to make
-    its long call, and returns how it ended."""
+    its long call and `ready()` holds, and returns how it ended."""
     child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script)], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     assert child.stdout.readline().strip() == "calling"
     time.sleep(1.0)  # let the call get into its loop
+    deadline = time.monotonic() + PATIENCE
+    while not ready():
+        assert time.monotonic() < deadline, "the call never got where it should be interrupted"
+        time.sleep(0.1)
     child.send_signal(signal.SIGINT)
     try:
         out, err = child.communicate(timeout=PATIENCE)
@@ -49,6 +53,7 @@ def test_ctrl_c_stops_a_sweep_and_leaves_only_complete_runs(demo, tmp_path):
     sweep_file.write_text(f"name: long\nbase: {demo}\nparameters:\n  run.duration: [1, 1000000]\n"
                           "replicates: 2\nseed: 3\n")
     out = tmp_path / "out"
+    short_runs_done = lambda: len(list(out.glob("runs/run.duration=1/rep-*/world.resolved.yaml"))) == 2
     ended = interrupt_child(f"""
         import swarmagg as sa
         print("calling", flush=True)
@@ -56,7 +61,7 @@ def test_ctrl_c_stops_a_sweep_and_leaves_only_complete_runs(demo, tmp_path):
             sa.sweep({str(sweep_file)!r}, out={str(out)!r}, threads=2)
         except KeyboardInterrupt:
             print("interrupted", flush=True)
-    """)
+    """, ready=short_runs_done)
     assert ended.returncode == 0, ended.stderr
     assert ended.stdout.splitlines() == ["interrupted"]
     runs = [p for p in (out / "runs").glob("*/rep-*")]
