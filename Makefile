@@ -14,7 +14,8 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# bin/swarmagg, share/doc/swarmagg (README, docs) and share/swarmagg (worlds, examples).
+# bin/swarmagg, share/doc/swarmagg (README, docs), share/swarmagg (worlds, examples) and the
+# Python package in lib/python3.X/dist-packages/swarmagg (docs/python.md).
 PREFIX ?= /usr/local
 install: build
 	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)

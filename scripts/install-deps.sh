@@ -3,11 +3,15 @@
 # `make demo` and `make test` work on a fresh Debian 12 machine with one command.
 # libhdf5-dev builds trajectories.h5; slurm-wlm and munge are only for the test that runs
 # the Slurm example under a real single-node Slurm (tests/cluster/, part of `make test`);
-# python3-h5py reads trajectories.h5 in the README's example.
+# python3-h5py reads trajectories.h5 in the README's example. The Python module (`import
+# swarmagg`, docs/python.md) builds with pybind11-dev and python3-dev for Debian's
+# /usr/bin/python3, returns numpy arrays and pandas frames, and its tests run under pytest,
+# the tutorial's plots with matplotlib.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
   libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev
-  libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge)
+  libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib)
 optional=(ffmpeg python3-h5py)
 missing=()
 for p in "${packages[@]}"; do

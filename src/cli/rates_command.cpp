@@ -8,9 +8,8 @@
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
 #include "run/interrupt.hpp"
-#include "run/rate_collector.hpp"
+#include "run/measured_run.hpp"
 #include "run/run_folder.hpp"
-#include "run/world_runner.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -26,16 +25,15 @@ int rates_command(const RatesCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
   install_interrupt_handlers();
-  RateCollector collector(spec);
   RunOptions run_options;
   run_options.progress = !options.quiet;
-  run_options.observers = [&collector](int index) { return collector.observer(index); };
-  const RunResult result = run_world(spec, run_options);
-  const std::vector<RateRow> rows = write_rate_outputs(spec, collector.total(), out);
+  const MeasuredRun run = run_world_measuring(spec, run_options, true);
+  const std::vector<RateRow> rows = write_rate_outputs(spec, *run.rates, out);
   if (options.quiet) return 0;
   for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
   std::cout << spec.name << ": rates of " << spec.run.replicates << " replicates x " << spec.steps()
-            << " steps in " << result.wall_seconds << " s; outputs in " << out.string() << "/\n";
+            << " steps in " << run.result.wall_seconds << " s; outputs in " << out.string()
+            << "/\n";
   return 0;
 }
 

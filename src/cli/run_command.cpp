@@ -15,8 +15,9 @@
 #include "rates/rates_text.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
+#include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
-#include "run/rate_collector.hpp"
+#include "run/replicate_observer.hpp"
 #include "run/run_folder.hpp"
 #include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
@@ -118,14 +119,8 @@ int run_command(const RunCommandOptions& options) {
   run_options.observers =
       both_observers(frame_observers(spec, frames),
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
-  // The measured initial state comes from the rates too, so that key collects them.
-  const bool measure = options.rates || spec.model.initial_state == InitialState::Measured;
-  RateCollector collector(spec);
-  if (measure) {
-    run_options.observers = both_observers(
-        run_options.observers, [&collector](int index) { return collector.observer(index); });
-  }
-  const RunResult result = run_world(spec, run_options);
+  const MeasuredRun run = run_world_measuring(spec, run_options, options.rates);
+  const RunResult& result = run.result;
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
   if (trajectories) {
@@ -136,9 +131,9 @@ int run_command(const RunCommandOptions& options) {
   write_run_folder(spec, result, out);
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;
-  if (measure) {
-    const RateTally tally = collector.total();
-    rows = options.rates ? write_rate_outputs(spec, tally, out) : measured_rate_rows(spec, tally);
+  if (run.rates) {
+    rows = options.rates ? write_rate_outputs(spec, *run.rates, out)
+                         : measured_rate_rows(spec, *run.rates);
     measured = measured_terms(rows);
   }
   if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);

@@ -6,8 +6,8 @@
 #include "config/world_writer.hpp"
 #include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
+#include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
-#include "run/rate_collector.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg {
@@ -41,14 +41,10 @@ bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
   // The run measures the model terms as it goes; the measured variants need them, so the
   // models follow the run, and world.resolved.yaml, written last by write_run_folder, marks
   // the folder complete with the rates and model outputs beside it.
-  RateCollector collector(spec);
-  RunOptions measuring = options;
-  measuring.observers = both_observers(
-      options.observers, [&collector](int index) { return collector.observer(index); });
-  const RunResult result = run_world(spec, measuring);
-  const MeasuredTerms terms = measured_terms(write_rate_outputs(spec, collector.total(), folder));
+  const MeasuredRun run = run_world_measuring(spec, options, true);
+  const MeasuredTerms terms = measured_terms(write_rate_outputs(spec, *run.rates, folder));
   write_model_outputs(spec, paper_predictions(spec, &terms), folder);
-  write_run_folder(spec, result, folder);
+  write_run_folder(spec, run.result, folder);
   return false;
 }
 

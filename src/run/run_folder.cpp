@@ -10,6 +10,7 @@
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/aggregate_summary.hpp"
+#include "run/state_hash.hpp"
 #include "swarmagg_version.hpp"
 
 namespace swarmagg {
@@ -32,6 +33,7 @@ nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
   nlohmann::json summary = {{"replicate", r.index},
                             {"seed", r.seed},
                             {"wall_seconds", r.wall_seconds},
+                            {"final_state_hash", state_hash_text(r.final_state_hash)},
                             {"final",
                              {{"step", last.step},
                               {"time", last.time},

@@ -3,9 +3,13 @@
 # prefix, checks the layout the README promises, and runs the installed binary on an
 # installed world and an installed sweep from another folder (the sweep's relative `base:`
 # must still resolve).
-#   tests/install/install_test.sh BUILD_DIR
+# With the Python module built, also imports the installed `swarmagg` package from the
+# prefix (PYTHONPATH=<prefix>/<python dir>, as docs/python.md says) and runs a world with it.
+#   tests/install/install_test.sh BUILD_DIR [PYTHON PYTHON_DIR]
 set -euo pipefail
-build_dir=${1:?usage: install_test.sh BUILD_DIR}
+build_dir=${1:?usage: install_test.sh BUILD_DIR [PYTHON PYTHON_DIR]}
+python=${2:-}
+python_dir=${3:-}
 tmp=$(mktemp -d /tmp/swarmagg-install.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -29,4 +33,21 @@ swarmagg run "$share/worlds/examples/demo.yaml" --replicates 1 --set run.duratio
 [[ -f run/world.resolved.yaml ]] || fail "the installed binary wrote no run"
 swarmagg sweep "$share/examples/sweeps/p-leave-vs-count.yaml" --list | grep -q pending ||
   fail "the installed sweep does not load"
+if [[ -n $python ]]; then
+  package=$tmp/prefix/$python_dir/swarmagg
+  [[ -f $package/__init__.py ]] || fail "the Python package is not in $python_dir"
+  ls "$package"/_core*.so >/dev/null 2>&1 || fail "the Python extension is not in $python_dir"
+  PYTHONPATH=$tmp/prefix/$python_dir PYTHONNOUSERSITE=1 "$python" - "$share" "$package" <<'PY' ||
+import sys
+from pathlib import Path
+import swarmagg as sa
+share, package = sys.argv[1], Path(sys.argv[2])
+assert Path(sa.__file__).parent == package, f"imported {sa.__file__}, not the installed package"
+world = sa.load_world(f"{share}/worlds/examples/demo.yaml", set={"run.duration": 5})
+frame = sa.run(world, replicates=1).timeseries()
+assert list(frame["step"])[-1] == world.steps, frame
+PY
+    fail "the installed Python module does not import or run"
+  echo "the installed Python module imports from the prefix and runs the installed world"
+fi
 echo "installed into a temporary prefix; the installed swarmagg runs the installed world and sweep"

@@ -1,0 +1,49 @@
+"""swarmagg.sweep(): a sweep file run and merged as `swarmagg sweep` does."""
+
+import json
+import os
+from pathlib import Path
+
+import pandas as pd
+
+from . import _core
+
+
+class Sweep:
+    """A finished sweep's folder and its merged, tidy files."""
+
+    def __init__(self, report: dict):
+        self._report = report
+        self.out = Path(report["out"])
+
+    @property
+    def report(self) -> dict:
+        """name, out, runs, already_complete, ran, threads, wall_seconds."""
+        return dict(self._report)
+
+    def results(self) -> pd.DataFrame:
+        """sweep_timeseries.csv: the swept parameters' columns, then timeseries.csv's, one row
+        per run and recorded step (`replicate` is the sweep's replicate index)."""
+        return pd.read_csv(self.out / "sweep_timeseries.csv")
+
+    def summary(self) -> pd.DataFrame:
+        """sweep_summary.csv: per point and observable, statistics of the final values."""
+        return pd.read_csv(self.out / "sweep_summary.csv")
+
+    def partitions(self) -> pd.DataFrame:
+        """sweep_partitions.csv (Soysal worlds)."""
+        return pd.read_csv(self.out / "sweep_partitions.csv")
+
+    def manifest(self) -> dict:
+        """sweep.json: the sweep as run (base world, parameters, replicates, seed)."""
+        return json.loads((self.out / "sweep.json").read_text())
+
+
+def sweep(path: str | os.PathLike, out: str | os.PathLike | None = None, threads: int = 0) -> Sweep:
+    """Runs the sweep file's runs that are not complete yet into `out` (default
+    runs/<sweep name>, as the CLI), then merges them, as `swarmagg sweep SWEEP --out OUT
+    --threads T --no-plots`. Resumable: complete runs are kept. threads=0 uses every core.
+    Runs without the GIL; Ctrl-C raises KeyboardInterrupt, and runs in progress leave
+    nothing behind. A bad sweep file raises WorldError.
+    """
+    return Sweep(_core.sweep(os.fspath(path), None if out is None else os.fspath(out), threads))

@@ -1,0 +1,30 @@
+#include "python/errors.hpp"
+
+#include "python/bindings.hpp"
+#include "run/interrupt.hpp"
+
+namespace py = pybind11;
+
+namespace swarmagg::python {
+
+void bind_errors(py::module_& module) {
+  // Never destroyed: its destructor would run after the interpreter is gone.
+  static auto* world_error =
+      new py::exception<FileInputError>(module, "WorldError", PyExc_ValueError);
+  world_error->attr("__doc__") =
+      "A world or sweep file, or a `set` key, is wrong. The message is the CLI's: the file, "
+      "the line, the key and what was expected. A subclass of ValueError.";
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const FileInputError& e) {
+      (*world_error)(e.what());
+    } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const Interrupted&) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+    }
+  });
+}
+
+}  // namespace swarmagg::python

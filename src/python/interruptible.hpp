@@ -1,0 +1,40 @@
+#pragma once
+// Long calls (run, rates, sweep, a model) run without the GIL and stop soon after Ctrl-C.
+// The work runs on a worker thread, in the library's own thread pool below it; the calling
+// thread waits without the GIL and, every 50 ms, lets Python handle its signals. When a
+// handler raises (Ctrl-C: KeyboardInterrupt), the library's interrupt flag
+// (run/interrupt.hpp) asks the work to stop at its next check, which the library's runs
+// pass at least every 1024 steps; whatever the work writes, it writes atomically, so an
+// interrupted call leaves nothing half-written. Python's own handlers stay in place.
+#include <pybind11/pybind11.h>
+
+#include <future>
+#include <thread>
+#include <utility>
+
+namespace swarmagg::python {
+
+namespace detail {
+// Waits for `done` without the GIL; false when a Python signal handler raised meanwhile
+// (the work was then asked to stop and has finished, and the Python error is set).
+bool wait_or_interrupt(const std::future<void>& done);
+}  // namespace detail
+
+template <typename Work>
+auto call_interruptibly(Work work) -> decltype(work()) {
+  using Result = decltype(work());
+  std::packaged_task<Result()> task(std::move(work));
+  std::future<Result> result = task.get_future();
+  std::promise<void> finished;
+  std::future<void> done = finished.get_future();
+  std::thread worker([&task, &finished] {
+    task();
+    finished.set_value();
+  });
+  const bool completed = detail::wait_or_interrupt(done);
+  worker.join();
+  if (!completed) throw pybind11::error_already_set();
+  return result.get();
+}
+
+}  // namespace swarmagg::python

@@ -1,0 +1,102 @@
+// swarmagg.run() and swarmagg.rates(): the replicates of a world in the CLI's thread pool,
+// without the GIL. The outputs come back as the texts `swarmagg run` writes (timeseries.csv,
+// summary.json, model.csv, partitions.csv, rates.csv, rates.json), made by the same
+// functions, so a frame read from them equals the file.
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "controllers/controller_registry.hpp"
+#include "core/errors.hpp"
+#include "models/model_csv.hpp"
+#include "models/predictions.hpp"
+#include "output/timeseries_csv.hpp"
+#include "python/bindings.hpp"
+#include "python/interruptible.hpp"
+#include "python/world.hpp"
+#include "rates/rate_rows.hpp"
+#include "rates/rates_csv.hpp"
+#include "rates/rates_json.hpp"
+#include "run/measured_run.hpp"
+#include "run/run_folder.hpp"
+
+namespace py = pybind11;
+
+namespace swarmagg::python {
+namespace {
+
+class RunOutput {
+ public:
+  RunOutput(std::shared_ptr<const WorldSpec> spec, MeasuredRun run)
+      : spec_(std::move(spec)), run_(std::move(run)) {
+    if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates);
+  }
+
+  World world() const { return {spec_}; }
+  std::string timeseries_csv_text() const { return timeseries_csv(all_rows(run_.result)); }
+  std::string summary_json() const { return run_summary(*spec_, run_.result).dump(); }
+  std::string partitions_csv_text() const {
+    if (!controller_rules(*spec_).records_partitions) {
+      throw InputError("partitions: the world's controller (" + spec_->controller.type +
+                       ") records no partitions; Soysal worlds do");
+    }
+    return partitions_csv(run_.result, spec_->steps());
+  }
+  // model.csv of `swarmagg run`: with the measured variants when the run measured rates.
+  std::string model_csv_text() const {
+    std::optional<MeasuredTerms> terms;
+    if (run_.rates) terms = measured_terms(rate_rows_);
+    return call_interruptibly(
+        [&] { return model_csv(predict(*spec_, terms ? &*terms : nullptr), spec_->engine.dt); });
+  }
+  bool measured() const { return run_.rates.has_value(); }
+  std::string rates_csv_text() const { return rates_csv(rows()); }
+  std::string rates_json_text() const { return rates_json(*spec_, *run_.rates, rows()); }
+
+ private:
+  const std::vector<RateRow>& rows() const {
+    if (!run_.rates) throw InputError("rates: this run measured no rates; run it with rates=True");
+    return rate_rows_;
+  }
+
+  std::shared_ptr<const WorldSpec> spec_;
+  MeasuredRun run_;
+  std::vector<RateRow> rate_rows_;
+};
+
+RunOutput run(const World& world, std::optional<long long> replicates,
+              std::optional<long long> seed, std::optional<long long> threads,
+              std::optional<std::string> engine, bool rates) {
+  std::vector<WorldOverride> overrides;
+  add_argument(overrides, "engine.type", engine, "engine");
+  add_argument(overrides, "run.replicates", replicates, "replicates");
+  add_argument(overrides, "run.seed", seed, "seed");
+  add_argument(overrides, "run.threads", threads, "threads");
+  const World ran = with_overrides(world, overrides);
+  MeasuredRun result =
+      call_interruptibly([&] { return run_world_measuring(*ran.spec, RunOptions{}, rates); });
+  return RunOutput(ran.spec, std::move(result));
+}
+
+}  // namespace
+
+void bind_run(py::module_& module) {
+  py::class_<RunOutput>(module, "RunOutput", "The outputs of run(), as the CLI's texts.")
+      .def_property_readonly("world", &RunOutput::world)
+      .def("timeseries_csv", &RunOutput::timeseries_csv_text)
+      .def("summary_json", &RunOutput::summary_json)
+      .def("partitions_csv", &RunOutput::partitions_csv_text)
+      .def("model_csv", &RunOutput::model_csv_text)
+      .def_property_readonly("measured", &RunOutput::measured)
+      .def("rates_csv", &RunOutput::rates_csv_text)
+      .def("rates_json", &RunOutput::rates_json_text);
+  module.def("run", &run, py::arg("world"), py::arg("replicates") = py::none(),
+             py::arg("seed") = py::none(), py::arg("threads") = py::none(),
+             py::arg("engine") = py::none(), py::arg("rates") = false,
+             "Runs the world's replicates (see swarmagg.run).");
+}
+
+}  // namespace swarmagg::python

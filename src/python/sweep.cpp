@@ -1,0 +1,51 @@
+// swarmagg.sweep(): a sweep file run as `swarmagg sweep` runs it unsharded (resumable, into
+// its folder, then merged), without plots and without the GIL. The tidy merged files are
+// read by python/swarmagg/.
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+
+#include "python/bindings.hpp"
+#include "python/errors.hpp"
+#include "python/interruptible.hpp"
+#include "sweep/sweep_loader.hpp"
+#include "sweep/sweep_merge.hpp"
+#include "sweep/sweep_runner.hpp"
+
+namespace py = pybind11;
+
+namespace swarmagg::python {
+namespace {
+
+py::dict sweep(const std::string& path, std::optional<std::string> out, int threads) {
+  if (threads < 0)
+    throw InputError("threads: expected 0 (all cores) or more, got " + std::to_string(threads));
+  const SweepPlan plan = reading_file([&] { return load_sweep(path); });
+  SweepOptions options;
+  options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;
+  options.threads = threads;
+  const SweepReport report = call_interruptibly([&] {
+    const SweepReport ran = run_sweep(plan, options);
+    merge_sweep({options.out}, options.out);
+    return ran;
+  });
+  py::dict result;
+  result["name"] = plan.name;
+  result["out"] = options.out.string();
+  result["runs"] = report.selected;
+  result["already_complete"] = report.already_complete;
+  result["ran"] = report.ran;
+  result["threads"] = report.threads;
+  result["wall_seconds"] = report.wall_seconds;
+  return result;
+}
+
+}  // namespace
+
+void bind_sweep(py::module_& module) {
+  module.def("sweep", &sweep, py::arg("path"), py::arg("out") = py::none(), py::arg("threads") = 0,
+             "Runs and merges a sweep (see swarmagg.sweep).");
+}
+
+}  // namespace swarmagg::python

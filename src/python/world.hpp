@@ -1,0 +1,33 @@
+#pragma once
+// swarmagg.World: a loaded, checked world (config/world_spec.hpp), immutable and shared by
+// the runs and simulations made from it. Python arguments that stand for world keys
+// (replicates, seed, threads, engine) are applied as overrides of those keys, exactly as the
+// CLI's typed options are, so a call and the same command line run the same world.
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/world_override.hpp"
+#include "config/world_spec.hpp"
+
+namespace swarmagg::python {
+
+struct World {
+  std::shared_ptr<const WorldSpec> spec;
+};
+
+// The override of world key `key` by the Python argument `name`, when it was given.
+template <typename T>
+void add_argument(std::vector<WorldOverride>& overrides, const char* key,
+                  const std::optional<T>& value, const char* name) {
+  if (value) overrides.push_back(typed_override(key, *value, name));
+}
+
+// `world` with `overrides` applied and checked again; InputError (ValueError) when a value
+// does not fit its key.
+World with_overrides(const World& world, const std::vector<WorldOverride>& overrides);
+
+}  // namespace swarmagg::python

@@ -1,0 +1,35 @@
+"""sweep(): the CLI's sweep, merged, as tidy frames."""
+
+import pandas as pd
+
+import swarmagg as sa
+
+
+def write_sweep(folder, demo):
+    path = folder / "small.yaml"
+    path.write_text(f"name: small\nbase: {demo}\nparameters:\n"
+                    "  controller.p_leave: [0.001, 0.01]\n  run.duration: [15]\n"
+                    "replicates: 2\nseed: 11\n")
+    return path
+
+
+def test_sweep_results_equal_the_cli_sweep(cli, demo, tmp_path):
+    path = write_sweep(tmp_path, demo)
+    cli("sweep", path, "--out", tmp_path / "cli", "--quiet", "--no-plots", "--threads", 2)
+    done = sa.sweep(path, out=tmp_path / "python", threads=2)
+    assert done.report["runs"] == 4 and done.report["ran"] == 4
+    results = done.results()
+    pd.testing.assert_frame_equal(results, pd.read_csv(tmp_path / "cli" / "sweep_timeseries.csv"))
+    pd.testing.assert_frame_equal(done.summary(),
+                                  pd.read_csv(tmp_path / "cli" / "sweep_summary.csv"))
+    assert list(results.columns[:2]) == ["controller.p_leave", "run.duration"]
+    assert set(results["controller.p_leave"]) == {0.001, 0.01}
+    assert done.manifest()["name"] == "small"
+
+
+def test_a_sweep_run_again_keeps_its_complete_runs(demo, tmp_path):
+    path = write_sweep(tmp_path, demo)
+    first = sa.sweep(path, out=tmp_path / "out")
+    again = sa.sweep(path, out=tmp_path / "out")
+    assert (again.report["already_complete"], again.report["ran"]) == (4, 0)
+    pd.testing.assert_frame_equal(first.results(), again.results())
