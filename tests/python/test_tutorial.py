@@ -1,4 +1,4 @@
-"""The tutorial's code runs as written (docs/tutorial/python.md), in a scratch folder that
+"""The tutorial's code runs as written (docs/tutorial/07-python.md), in a scratch folder that
 holds the repository's worlds and examples as a clone does."""
 
 import os
@@ -8,7 +8,7 @@ import matplotlib.image
 
 from conftest import ROOT
 
-TUTORIAL = ROOT / "docs" / "tutorial" / "python.md"
+TUTORIAL = ROOT / "docs" / "tutorial" / "07-python.md"
 
 
 def code_blocks(markdown: str) -> list[str]:
