@@ -359,6 +359,10 @@ std::vector<WorldKey> build_keys() {
       {{"placement", InitialState::Placement},
        {"all_searching", InitialState::AllSearching},
        {"measured", InitialState::Measured}}));
+  keys.push_back(optional_length_key(
+      "rates.return_window",
+      [](WorldSpec& w) -> std::optional<double>& { return w.rates.return_window; },
+      [](const WorldSpec& w) { return w.return_window(); }));
   keys.push_back(integer_key<int>(
       "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt));
   keys.push_back(integer_key<int>(
@@ -434,8 +438,8 @@ const WorldKey* find_world_key(const std::string& path) {
 
 const std::vector<std::string>& world_blocks() {
   static const std::vector<std::string> blocks = {
-      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d",
-      "run",   "model",  "render"};
+      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d", "run",
+      "model", "rates",  "render"};
   return blocks;
 }
 

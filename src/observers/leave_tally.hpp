@@ -1,6 +1,6 @@
 #pragma once
-// What one replicate's LEAVE episodes add up to (SPEC 4, 5.4): attempts and escapes split by
-// where the leaver stood when it started (rim or inside, SPEC 4's rim rule), and per
+// What one replicate's LEAVE episodes add up to: attempts and escapes split by
+// where the leaver stood when it started (rim or inside, the rim rule), and per
 // aggregate size m the attempts, escapes and the exposure, the number of steps times the
 // aggregates of size m that existed, so escapes / (exposure dt) is the escape rate per
 // aggregate of size m, to set beside the models' m p / dt and periph(m) p / dt.
@@ -31,6 +31,14 @@ struct LeaveTally {
   std::vector<std::int64_t> attempts_by_size;
   std::vector<std::int64_t> escapes_by_size;
   std::vector<std::int64_t> aggregate_steps_by_size;
+  // Returns (observers/leave_episodes.hpp), by the size m left: how many, and their summed
+  // time away in steps; by the size of the aggregate joined on return (1: a pair formed
+  // with a former member); and by aggregate size k, the steps that size-k aggregates existed
+  // while returning agents were away (searcher exposure that was no search).
+  std::vector<std::int64_t> returns_by_size;
+  std::vector<std::int64_t> return_steps_by_size, return_square_steps_by_size;
+  std::vector<std::int64_t> returns_into_size;
+  std::vector<std::int64_t> returning_aggregate_steps_by_size;
 
   // Room for every size an aggregate of `agent_count` agents can have.
   void resize(int agent_count);
