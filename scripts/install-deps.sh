@@ -3,12 +3,13 @@
 # `make demo` and `make test` work on a fresh Debian 12 machine with one command.
 # libhdf5-dev builds trajectories.h5; slurm-wlm and munge are only for the test that runs
 # the Slurm example under a real single-node Slurm (tests/cluster/, part of `make test`);
-# python3-h5py reads trajectories.h5 in the README's example.
+# python3-h5py reads trajectories.h5 in the README's example, and with python3-pytest runs
+# tests/python/ (pytest skips them without h5py).
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
   libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev
   libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge)
-optional=(ffmpeg python3-h5py)
+optional=(ffmpeg python3-h5py python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
