@@ -40,4 +40,10 @@ double return_probability(const WorldSpec& world, int size) {
   return heading_capture_probability(distance, capture, reach);
 }
 
+double attempt_return_probability(const WorldSpec& world, int size) {
+  if (size < 2 || !world.controller.leave) return 0.0;
+  const double rim_share = capped_periphery_agents(size) / size;
+  return rim_share * return_probability(world, size) + (1.0 - rim_share);
+}
+
 }  // namespace swarmagg

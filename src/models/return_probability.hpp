@@ -14,6 +14,9 @@
 //    the capture disc within the rest of the return window, v (window - leave_timeout):
 //    theta = asin(rho / D) when that length reaches the tangent point, else the law of
 //    cosines' angle at which a path of that length ends on the disc's edge.
+// Only rim members get out (peripheral leaving emerges from the bodies); a leave law over the
+// periphery (Soysal's peripheral variant, Bayindir's) discounts q(i), one over all members
+// the q of every attempt (attempt_return_probability).
 // A pair (i = 2) leaves no waiting member when the remaining agent resumes searching
 // (isolated_wait: resume): q(2) = 0 then.
 #include "config/world_spec.hpp"
@@ -27,7 +30,14 @@ inline constexpr const char* kReturnsVariant = "returns";
 // radius rho, on a uniformly random heading kept for `reach`, enters the disc (1 inside it).
 double heading_capture_probability(double distance, double capture_radius, double reach);
 
-// q(i) of the world; 0 for a world whose agents never leave or whose window is 0.
+// q(i) of a rim leaver of the world; 0 for a world whose agents never leave.
 double return_probability(const WorldSpec& world, int size);
+
+// q over every LEAVE attempt, rim or inside: an inside member that tries is enclosed by the
+// bodies around it, still among its aggregate when its timeout ends, and comes back. With a
+// rim share min(i, periph(i)) / i (models/aggregate_shape.hpp): share q(i) + (1 - share).
+// This is what rates' `return` rows measure, and what a leave law over all members
+// (model.leaving: original) must discount.
+double attempt_return_probability(const WorldSpec& world, int size);
 
 }  // namespace swarmagg

@@ -142,7 +142,8 @@ void add_new_join_rows(const WorldSpec& world, const RateTally& tally, std::vect
 }
 
 // Per size m left: the fraction of LEAVE attempts that returned (binomial interval), against
-// the `returns` variant's q(m) (models/return_probability.hpp), and their mean time away in tu.
+// the `returns` variant's q over every attempt (models/return_probability.hpp), and their
+// mean time away in tu.
 void add_return_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
   const double dt = world.engine.dt;
   const std::string model = is_soysal(world) ? "soysal" : "bayindir";
@@ -152,7 +153,7 @@ void add_return_rows(const WorldSpec& world, const RateTally& tally, std::vector
     RateRow row{.term = "return",
                 .size = m,
                 .estimate = estimate_fraction(tally.returns[index], tally.attempts[index])};
-    row.models.push_back({model, kReturnsVariant, return_probability(world, m)});
+    row.models.push_back({model, kReturnsVariant, attempt_return_probability(world, m)});
     rows.push_back(row);
   }
   for (int m = 2; m <= tally.agents; ++m) {

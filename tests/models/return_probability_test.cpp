@@ -40,6 +40,14 @@ TEST(ReturnProbability, BayindirLeaversComeBackOnlyByHeadingBack) {
   EXPECT_NEAR(return_probability(world, 10), 0.17057, 2e-4);
 }
 
+// Over every attempt: inside members come back. Size 10 has a rim share of
+// periph(10) / 10 = pi (3.624 - 1) / 10 = 0.8244: 0.8244 * 0.17057 + 0.1756 = 0.31623.
+TEST(ReturnProbability, InsideMembersThatTryComeBack) {
+  WorldSpec world = bayindir_world(120, 0.0005, true, true);
+  EXPECT_NEAR(attempt_return_probability(world, 10), 0.31623, 3e-4);
+  EXPECT_EQ(attempt_return_probability(world, 5), return_probability(world, 5));  // all rim
+}
+
 // A pair's remaining agent resumes searching: nothing waits to come back to.
 TEST(ReturnProbability, APairLeavesNothingToComeBackTo) {
   WorldSpec world = soysal_world(10, 212.0);
