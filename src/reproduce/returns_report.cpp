@@ -78,6 +78,16 @@ std::string best_paper_variant(const std::vector<VariantError>& errors) {
   return best ? best->variant : "original";
 }
 
+std::string returns_text(const ReturnSummary& returns) {
+  return std::to_string(returns.returns) + " / " + std::to_string(returns.attempts) + " (" +
+         report_number(returns.fraction()) + ")";
+}
+
+// Fewer than 10 returns of a size are not timed (rates' rule): "-" when none was.
+std::string time_text(const ReturnSummary& returns) {
+  return returns.mean_time > 0.0 ? report_number(returns.mean_time) + " tu" : "-";
+}
+
 std::string timeout_label(const TimeoutPoint& p) {
   return p.world + " at timeout " + report_number(p.leave_timeout);
 }
@@ -181,8 +191,7 @@ std::string timeout_series_section(const std::vector<TimeoutPoint>& series) {
     }
     text += "| " + p.world + " | " + report_number(p.leave_timeout) + " | " +
             report_number(p.duration) + " x " + std::to_string(p.replicates) + " | " +
-            report_number(returns.fraction()) + " of " + std::to_string(returns.attempts) + " | " +
-            report_number(returns.mean_time) + " | " +
+            returns_text(returns) + " | " + time_text(returns) + " | " +
             (predicted ? report_number(predicted->models.front().rate) : "-") + " | " + ratios +
             " | " + trend_text(p.trend) + " | " + report_number(p.wall_seconds) + " |\n";
   }
@@ -204,13 +213,17 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
     if (!w.controller.leave) continue;
     const ReturnSummary returns = pooled_returns(r.rates);
     const std::string best = best_paper_variant(*errors);
-    text += "- **" + w.name + "** (Fig " + r.figure.figures +
-            "): " + report_number(100.0 * returns.fraction()) + " % of " +
-            std::to_string(returns.attempts) +
-            " LEAVE attempts from aggregates of 3 or more came back (mean " +
-            report_number(returns.mean_time) + " tu); returns were " +
-            report_number(100.0 * returning_share_of_joins(r.rates)) +
-            " % of all joins. The paper's best variant (" + best + ") is at " +
+    text += "- **" + w.name + "** (Fig " + r.figure.figures + "): ";
+    if (returns.attempts == 0) {
+      const ReturnSummary pairs = pooled_returns(r.rates, 2);
+      text += "only pairs left (" + returns_text(pairs) + " of their leavers came back). ";
+    } else {
+      text += returns_text(returns) +
+              " LEAVE attempts from aggregates of 3 or more came back (mean time away " +
+              time_text(returns) + "); returns were " +
+              report_number(100.0 * returning_share_of_joins(r.rates)) + " % of all joins. ";
+    }
+    text += "The paper's best variant (" + best + ") is at " +
             ratio_words(ratio_of(*errors, best)) + "; `returns` (q from the parameters) at " +
             ratio_words(ratio_of(*errors, kReturnsVariant)) +
             "; `measured` (measured q, new "
@@ -229,10 +242,10 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
         "ends, so the paper's L(i) counts excursions, not departures:\n\n";
     for (const TimeoutPoint& p : series) {
       const ReturnSummary returns = pooled_returns(p.rates);
-      text += "- " + timeout_label(p) + ": " + report_number(100.0 * returns.fraction()) +
-              " % return; peripheral " + ratio_words(ratio_of(p.comparison.errors, "peripheral")) +
-              ", returns " + ratio_words(ratio_of(p.comparison.errors, kReturnsVariant)) +
-              ", measured " + ratio_words(ratio_of(p.comparison.errors, kMeasuredVariant)) +
+      text += "- " + timeout_label(p) + ": " + returns_text(returns) + " return; peripheral " +
+              ratio_words(ratio_of(p.comparison.errors, "peripheral")) + ", returns " +
+              ratio_words(ratio_of(p.comparison.errors, kReturnsVariant)) + ", measured " +
+              ratio_words(ratio_of(p.comparison.errors, kMeasuredVariant)) +
               (p.trend.stationary() ? "" : "; NOA still trending") + ".\n";
     }
   }
