@@ -1,6 +1,7 @@
 #include "observers/leave_episodes.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace swarmagg {
 
@@ -9,9 +10,11 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   tally_.resize(agent_count);
   const auto agents = static_cast<std::size_t>(agent_count);
   open_.reserve(agents);  // one attempt per agent at most
-  // Room for as many remembered members and sizes as there are agents, so that most runs
-  // never grow them.
-  former_.reserve(agents);
+  // Room for several remembered members per agent (attempts stay open through their
+  // excursion, up to the return window) and for as many remembered sizes as there are
+  // agents (one snapshot per decision that starts attempts), so that most runs never grow
+  // them.
+  former_.reserve(kFormerPerAgent * agents);
   sizes_at_start_.reserve(agents);
   members_.reserve(agents);  // the largest aggregate's bound
 }
@@ -27,14 +30,16 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
   for (OpenAttempt& attempt : open_) {
     if (advance(attempt, aggregates, neighbours, state)) {
       dead_former_ += attempt.count;
-      dead_sizes_ += attempt.sizes;
     } else {
       open_[kept++] = attempt;
     }
   }
   open_.resize(kept);
-  // Amortised: each remembered entry is copied at most once per time it is remembered.
-  if (dead_former_ > former_.size() / 2 || dead_sizes_ > sizes_at_start_.size() / 2) compact();
+  // Amortised: each remembered entry is copied at most once per time it is remembered. The
+  // snapshots are compacted before they would outgrow their room.
+  if (dead_former_ > former_.size() / 2 ||
+      sizes_at_start_.size() + 2 * sizes_seen_ + 2 > sizes_at_start_.capacity())
+    compact();
   for (const std::int32_t size : aggregates.sizes()) {
     ++tally_.aggregate_steps_by_size[size];
     sizes_seen_ = std::max(sizes_seen_, static_cast<std::size_t>(size) + 1);
@@ -63,11 +68,16 @@ void LeaveEpisodes::start_attempts(const AggregateTracker& aggregates,
     for (const AgentId j : members) {
       if (j != i) former_.push_back(j);
     }
-    attempt.sizes_first = static_cast<std::uint32_t>(sizes_at_start_.size());
+    // One snapshot of the aggregate steps by size serves every attempt of this decision.
+    if (snapshot_decision_ != decision_) {
+      snapshot_decision_ = decision_;
+      snapshot_first_ = static_cast<std::uint32_t>(sizes_at_start_.size());
+      const auto steps = tally_.aggregate_steps_by_size.begin();
+      sizes_at_start_.insert(sizes_at_start_.end(), steps,
+                             steps + static_cast<std::ptrdiff_t>(sizes_seen_));
+    }
+    attempt.sizes_first = snapshot_first_;
     attempt.sizes = static_cast<std::uint32_t>(sizes_seen_);
-    const auto steps = tally_.aggregate_steps_by_size.begin();
-    sizes_at_start_.insert(sizes_at_start_.end(), steps,
-                           steps + static_cast<std::ptrdiff_t>(sizes_seen_));
     open_.push_back(attempt);
     tally_.attempts.count(attempt.rim);
     ++tally_.attempts_by_size[attempt.size];
@@ -133,23 +143,31 @@ void LeaveEpisodes::count_return(const OpenAttempt& attempt, std::int32_t joined
 
 // In place: open attempts keep the order they started in, so their ranges lie in
 // increasing order and each moves down, never onto a range still to be moved.
+// Attempts of one decision share a snapshot: it moves once, for the first of them.
 void LeaveEpisodes::compact() {
   std::size_t former_end = 0, sizes_end = 0;
+  std::uint32_t moved_from = std::numeric_limits<std::uint32_t>::max(), moved_to = 0;
   for (OpenAttempt& attempt : open_) {
     const auto members = former_.begin() + attempt.first;
     std::copy(members, members + attempt.count,
               former_.begin() + static_cast<std::ptrdiff_t>(former_end));
     attempt.first = static_cast<std::uint32_t>(former_end);
     former_end += attempt.count;
-    const auto sizes = sizes_at_start_.begin() + attempt.sizes_first;
-    std::copy(sizes, sizes + attempt.sizes,
-              sizes_at_start_.begin() + static_cast<std::ptrdiff_t>(sizes_end));
-    attempt.sizes_first = static_cast<std::uint32_t>(sizes_end);
-    sizes_end += attempt.sizes;
+    if (attempt.sizes_first != moved_from) {
+      moved_from = attempt.sizes_first;
+      moved_to = static_cast<std::uint32_t>(sizes_end);
+      const auto sizes = sizes_at_start_.begin() + attempt.sizes_first;
+      std::copy(sizes, sizes + attempt.sizes,
+                sizes_at_start_.begin() + static_cast<std::ptrdiff_t>(sizes_end));
+      sizes_end += attempt.sizes;
+    }
+    attempt.sizes_first = moved_to;
   }
   former_.resize(former_end);
   sizes_at_start_.resize(sizes_end);
-  dead_former_ = dead_sizes_ = 0;
+  dead_former_ = 0;
+  // The snapshot of this decision (if any) moved: attempts that start later take a new one.
+  snapshot_decision_ = -1;
 }
 
 }  // namespace swarmagg

@@ -21,8 +21,9 @@
 // move, so the rim and the escape are judged on exactly what the controller saw when it
 // decided. It also counts that step's aggregates by size (the exposure). Its cost is linear
 // in the agents in aggregates plus the open attempts and the members and sizes they remember.
-// It allocates nothing per step: room for N remembered members is reserved up front, and
-// only worlds whose open attempts remember more grow it, to a high-water mark.
+// It allocates nothing per step: room for 4N remembered members and N remembered sizes is
+// reserved up front, and only worlds whose open attempts remember more grow it, to a
+// high-water mark.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -85,10 +86,14 @@ class LeaveEpisodes {
   std::size_t sizes_seen_ = 0;    // 1 + the largest aggregate size counted so far
   std::vector<AgentId> members_;  // of the aggregate an attempt leaves
   std::vector<OpenAttempt> open_;
-  std::vector<AgentId> former_;               // sorted ranges, one per open attempt (and dead ones)
-  std::vector<std::int64_t> sizes_at_start_;  // ranges, one per open attempt (and dead ones)
-  std::size_t dead_former_ = 0;               // entries of former_ that belong to decided attempts
-  std::size_t dead_sizes_ = 0;                // entries of sizes_at_start_ that do
+  std::vector<AgentId> former_;  // sorted ranges, one per open attempt (and dead ones)
+  // Snapshots of the aggregate steps by size, one per decision that started attempts (and
+  // dead ones), shared by that decision's attempts.
+  std::vector<std::int64_t> sizes_at_start_;
+  std::int64_t snapshot_decision_ = -1;  // the decision of the last snapshot
+  std::uint32_t snapshot_first_ = 0;     // and where it starts
+  std::size_t dead_former_ = 0;          // entries of former_ that belong to decided attempts
+  static constexpr std::size_t kFormerPerAgent = 4;
 };
 
 }  // namespace swarmagg

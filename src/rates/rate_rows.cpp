@@ -91,7 +91,12 @@ RateRow creation_row(const WorldSpec& world, const RateTally& tally) {
   return row;
 }
 
-void add_growth_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
+// Joins per searcher per size-m aggregate per tu: every join (term growth, Soysal's join),
+// or with `new_only` the joins that are not returns (join_new), whose exposure leaves out the
+// agents away on an excursion that returned: they were no searchers. The models' join term
+// is meant as the new-encounter rate.
+void add_growth_rows(const WorldSpec& world, const RateTally& tally, bool new_only,
+                     std::vector<RateRow>& rows) {
   const double dt = world.engine.dt;
   const auto bayindir =
       is_bayindir(world) ? bayindir_variants(world) : decltype(bayindir_variants(world)){};
@@ -100,35 +105,14 @@ void add_growth_rows(const WorldSpec& world, const RateTally& tally, std::vector
   for (int m = 2; m < tally.agents; ++m) {
     const auto index = static_cast<std::size_t>(m);
     if (tally.searcher_aggregate_steps[index] == 0 && tally.growths[index] == 0) continue;
-    RateRow row{
-        .term = is_soysal(world) ? "join" : "growth",
-        .size = m,
-        .estimate = estimate_rate(tally.growths[index],
-                                  static_cast<double>(tally.searcher_aggregate_steps[index]) * dt)};
-    for (const auto& [name, rates] : bayindir)
-      row.models.push_back({"bayindir", name, rates.growth[index] / dt});
-    for (const auto& [name, rates] : soysal)
-      row.models.push_back({"soysal", name, rates.join[index] / dt});
-    rows.push_back(row);
-  }
-}
-
-// Joins that are not returns, per searcher per size-m aggregate per tu: the agents away on
-// an excursion that returned were no searchers, so their exposure is left out too. The
-// models' join term is meant as this new-encounter rate.
-void add_new_join_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
-  const double dt = world.engine.dt;
-  const auto bayindir =
-      is_bayindir(world) ? bayindir_variants(world) : decltype(bayindir_variants(world)){};
-  const auto soysal =
-      is_soysal(world) ? soysal_variants(world) : decltype(soysal_variants(world)){};
-  for (int m = 2; m < tally.agents; ++m) {
-    const auto index = static_cast<std::size_t>(m);
-    if (tally.searcher_aggregate_steps[index] == 0 && tally.growths[index] == 0) continue;
-    const std::uint64_t returned = std::min(tally.returns_into[index], tally.growths[index]);
-    const std::uint64_t away =
-        std::min(tally.returning_searcher_steps[index], tally.searcher_aggregate_steps[index]);
-    RateRow row{.term = "join_new",
+    const std::uint64_t returned =
+        new_only ? std::min(tally.returns_into[index], tally.growths[index]) : 0;
+    const std::uint64_t away = new_only ? std::min(tally.returning_searcher_steps[index],
+                                                   tally.searcher_aggregate_steps[index])
+                                        : 0;
+    RateRow row{.term = new_only           ? "join_new"
+                        : is_soysal(world) ? "join"
+                                           : "growth",
                 .size = m,
                 .estimate = estimate_rate(
                     tally.growths[index] - returned,
@@ -267,8 +251,8 @@ std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally&
   std::vector<RateRow> rows{creation_row(world, tally)};
   const ControllerRules rules = controller_rules(world);
   if (rules.model == ModelFamily::Encounters) return rows;
-  if (rules.joins) add_growth_rows(world, tally, rows);
-  if (rules.joins && rules.leaves) add_new_join_rows(world, tally, rows);
+  if (rules.joins) add_growth_rows(world, tally, false, rows);
+  if (rules.joins && rules.leaves) add_growth_rows(world, tally, true, rows);
   if (rules.leaves) {
     add_leave_rows(world, tally, rows);
     add_return_rows(world, tally, rows);
