@@ -13,7 +13,9 @@ namespace swarmagg {
 struct NoaTrend {
   double change = 0.0;           // mean NOA change over the second half (slope x its length)
   double low = 0.0, high = 0.0;  // its 95% interval (equal to change with one replicate)
-  bool stationary() const { return low <= 0.0 && 0.0 <= high; }
+  // Rounding leaves a flat run's slope a few ulps from 0: within kFlat counts as flat.
+  static constexpr double kFlat = 1e-9;
+  bool stationary() const { return low <= kFlat && -kFlat <= high; }
 };
 
 NoaTrend second_half_trend(const StepSeries& noa);
