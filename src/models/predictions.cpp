@@ -193,7 +193,8 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
   }
   if (rules.leaves) {
     caveats.push_back(
-        "the models have no LEAVE timeout: an agent that leaves is counted as free at once");
+        "the models have no LEAVE timeout: an agent that leaves is counted as free at once "
+        "(the `returns` variant discounts the leavers that come back; docs/models-returns.md)");
   }
   if (rules.model == ModelFamily::Bayindir && controller.isolated_wait == IsolatedWait::Stay) {
     caveats.push_back(

@@ -92,13 +92,34 @@ std::string timeout_series_csv(const std::vector<TimeoutPoint>& points) {
   return text;
 }
 
+// One table per world, a row per timeout: each variant's TV distance and noise floor.
+std::string world_table(const std::vector<TimeoutPoint>& points, const std::string& world,
+                        const std::vector<std::string>& variants) {
+  std::string text = "leave_timeout";
+  for (const std::string& v : variants) text += "," + v + "," + v + "_floor";
+  text += "\n";
+  for (const TimeoutPoint& p : points) {
+    if (p.world != world) continue;
+    text += csv_number(p.leave_timeout);
+    for (const std::string& v : variants) {
+      const VariantError* found = nullptr;
+      for (const VariantError& e : p.comparison.errors) {
+        if (e.variant == v) found = &e;
+      }
+      text += "," + (found ? csv_number(found->error) : "") + "," +
+              (found && found->noise_floor ? csv_number(*found->noise_floor) : "");
+    }
+    text += "\n";
+  }
+  return text;
+}
+
 // One panel per world: each variant's TV distance (solid) and noise floor (dashed) against
 // the leave timeout.
 void plot_timeout_series(const std::filesystem::path& plots, const PlotSize& size,
                          const std::vector<TimeoutPoint>& points) {
   if (points.empty()) return;
   std::filesystem::create_directories(plots);
-  write_file_atomic(plots / "timeout-series.csv", timeout_series_csv(points));
   std::vector<std::string> variants;
   for (const VariantError& e : points.front().comparison.errors) variants.push_back(e.variant);
   std::string script = png_preamble(size, "timeout-series.png",
@@ -107,16 +128,17 @@ void plot_timeout_series(const std::filesystem::path& plots, const PlotSize& siz
       "set datafile separator ','\nset multiplot layout 1,2\nset xlabel 'leave timeout (tu)'\n"
       "set ylabel 'TV distance (dashed: noise floor)'\nset yrange [0:1]\nset key top right\n";
   for (const char* world : kTimeoutWorlds) {
+    const std::string csv = std::string("timeout-series-") + world + ".csv";
+    write_file_atomic(plots / csv, world_table(points, world, variants));
     script += "set title " + gnuplot_quote(world) + " noenhanced\nplot ";
     for (std::size_t k = 0; k < variants.size(); ++k) {
-      const std::string select = "(strcol(1) eq " + gnuplot_quote(world) + " && strcol(6) eq " +
-                                 gnuplot_quote(variants[k]) + " ? ";
       const std::string colour = " lc rgb " + gnuplot_quote(variant_colour(k));
-      script +=
-          std::string(k == 0 ? "" : ", \\\n  ") + "'timeout-series.csv' skip 1 using 3:" + select +
-          "$7 : NaN) with linespoints lw 2" + colour + " title " + gnuplot_quote(variants[k]) +
-          ", \\\n  'timeout-series.csv' skip 1 using 3:" + select + "$8 : NaN) with lines dt 2" +
-          colour + " notitle";
+      const std::string column = std::to_string(2 + 2 * k);
+      script += std::string(k == 0 ? "" : ", \\\n  ") + gnuplot_quote(csv) +
+                " skip 1 using 1:" + column + " with linespoints lw 2 pt 7" + colour + " title " +
+                gnuplot_quote(variants[k]) + ", \\\n  " + gnuplot_quote(csv) +
+                " skip 1 using 1:" + std::to_string(3 + 2 * k) + " with lines dt 2" + colour +
+                " notitle";
     }
     script += "\n";
   }
