@@ -52,6 +52,9 @@ AggregationRules soysal_rules(const WorldSpec& spec) {
   AggregationRules rules = common_rules(spec);
   rules.leave_rule = {spec.controller.leave_law, spec.controller.p0, spec.controller.leave_size};
   rules.approach_radius = spec.controller.approach_radius;
+  // A searcher that perceives nobody may redraw its heading (0 by default: it keeps it, and
+  // may run a closed path on the torus past every aggregate).
+  rules.tumble = spec.controller.tumble;
   return rules;
 }
 

@@ -6,7 +6,8 @@
 # python3-h5py reads trajectories.h5 in the README's example. The Python module (`import
 # swarmagg`, docs/python.md) builds with pybind11-dev and python3-dev for Debian's
 # /usr/bin/python3, returns numpy arrays and pandas frames, and its tests run under pytest,
-# the tutorial's plots with matplotlib.
+# the tutorial's plots with matplotlib. h5py with pytest also checks rates' return fraction
+# against trajectories.h5 (tests/python/).
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
   libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev

@@ -4,6 +4,9 @@
 #include <set>
 
 #include "analysis/csv_table.hpp"
+#include "analysis/model_errors.hpp"
+#include "models/noise_floor.hpp"
+#include "models/return_probability.hpp"
 
 namespace swarmagg {
 namespace {
@@ -86,13 +89,19 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
     }
   }
   std::vector<std::string> variants = partition_variants();
-  // A run that measured its rates (run --rates, reproduce) also has the measured variant.
-  if (transient.contains(kMeasuredVariant)) variants.push_back(kMeasuredVariant);
+  // Worlds whose aggregates lose agents have the returns variant; a run that measured its
+  // rates (run --rates, reproduce) also has the measured variant.
+  for (const char* extra : {kReturnsVariant, kMeasuredVariant}) {
+    if (transient.contains(extra)) variants.push_back(extra);
+  }
+  const std::map<std::string, double> floors = read_noise_floors(model, "soysal", kPartitionMetric);
   for (const std::string& v : variants) {
     comparison.models.push_back(run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);
+    const auto floor = floors.find(v);
     comparison.errors.push_back(
-        {v, total_variation(comparison.simulation, comparison.models.back())});
+        {v, total_variation(comparison.simulation, comparison.models.back()),
+         floor == floors.end() ? std::nullopt : std::optional(floor->second)});
   }
   return comparison;
 }

@@ -20,7 +20,8 @@ const std::vector<std::string>& partition_variants();  // original, peripheral
 
 struct PartitionComparison {
   Distribution simulation;  // mean time fraction across replicates
-  // run-averaged, in partition_variants() order, then kMeasuredVariant when model.csv has it
+  // run-averaged, in partition_variants() order, then kReturnsVariant and kMeasuredVariant
+  // when model.csv has them
   std::vector<Distribution> models;
   std::vector<Distribution> stationary;
   std::vector<VariantError> errors;  // total-variation distance per variant

@@ -1,6 +1,7 @@
 #pragma once
 // How far one model variant is from the simulation, by the measure of its comparison (RMSE
 // of mean NOA, total-variation distance of partition distributions).
+#include <optional>
 #include <string>
 
 namespace swarmagg {
@@ -12,6 +13,9 @@ inline constexpr const char* kMeasuredVariant = "measured";
 struct VariantError {
   std::string variant;
   double error = 0.0;
+  // The error the variant shows against its own simulated process with the same replicates
+  // and run length (models/noise_floor.hpp); empty where model.csv has none.
+  std::optional<double> noise_floor = {};
 };
 
 }  // namespace swarmagg

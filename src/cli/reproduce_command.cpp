@@ -53,6 +53,11 @@ void add_reproduce_command(CLI::App& app, Action& action) {
                       "Only the worlds whose name contains this text (repeatable)");
   command->add_option("--set", r.overrides,
                       "Override a key of every world, e.g. --set run.replicates=4");
+  command
+      ->add_option("--timeout-duration", r.timeout_duration,
+                   "Run length in tu of the leave-timeout series (default: the paper worlds'; "
+                   "--quick divides it by 25)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--worlds", options->worlds,
                       "Folder of the paper worlds (default worlds/paper)");
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)");

@@ -2,6 +2,7 @@
 #include <optional>
 #include <string>
 
+#include "analysis/model_errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/world_options.hpp"
@@ -136,7 +137,10 @@ int run_command(const RunCommandOptions& options) {
                          : measured_rate_rows(spec, *run.rates);
     measured = measured_terms(rows);
   }
-  if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);
+  if (!options.no_model) {
+    write_predictions(spec, out, measured ? &*measured : nullptr);
+    write_model_errors(out);
+  }
   if (!options.quiet && options.rates) {
     for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
     if (controller_rules(spec).model != ModelFamily::Encounters)

@@ -456,6 +456,13 @@ std::vector<WorldKey> build_keys() {
       "where model predictions start: the placement's expected pairs, all agents searching, or the "
       "state a run measured"));
   keys.push_back(described(
+      optional_length_key(
+          "rates.return_window",
+          [](WorldSpec& w) -> std::optional<double>& { return w.rates.return_window; },
+          [](const WorldSpec& w) { return w.return_window(); }),
+      "tu after a LEAVE attempt within which waiting again beside the aggregate left counts as a "
+      "return (default 3 leave timeouts)"));
+  keys.push_back(described(
       integer_key<int>(
           "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt),
       "draw a frame every K steps; 0: none"));
@@ -545,8 +552,8 @@ const WorldKey* find_world_key(const std::string& path) {
 
 const std::vector<std::string>& world_blocks() {
   static const std::vector<std::string> blocks = {
-      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d",
-      "run",   "model",  "render"};
+      "arena", "robots", "controller", "controller.compaction", "engine", "engine.box2d", "run",
+      "model", "rates",  "render"};
   return blocks;
 }
 

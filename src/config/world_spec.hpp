@@ -114,6 +114,13 @@ struct ModelSpec {
   InitialState initial_state = InitialState::Placement;
 };
 
+// What `rates` measures beyond the model terms: returns (docs/models-returns.md).
+struct RatesSpec {
+  // tu after a LEAVE attempt starts within which coming back counts as a return; unset:
+  // three leave timeouts.
+  std::optional<double> return_window;
+};
+
 struct RenderSpec {
   int every = 0;  // 0: no frames
   int width = 800;
@@ -131,11 +138,16 @@ struct WorldSpec {
   EngineSpec engine;
   RunSpec run;
   ModelSpec model;
+  RatesSpec rates;
   RenderSpec render;
 
   // The distance compaction closes waiting members up to (2r unless the world sets it).
   double compaction_spacing() const {
     return controller.compaction.spacing.value_or(2.0 * robots.radius);
+  }
+  // The tu within which a leaver that comes back counts as returning (rates.return_window).
+  double return_window() const {
+    return rates.return_window.value_or(3.0 * controller.leave_timeout);
   }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }

@@ -20,6 +20,19 @@ int leave_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
   return used;
 }
 
+// Per size: the measured loss per step, attempt (1 - returned), and the growth per step, the
+// new joins where returns were measured (docs/models-returns.md).
+double measured_loss(const MeasuredTerms& terms, int size, double attempt_rate, double dt) {
+  const auto returned = terms.returned.find(size);
+  return attempt_rate * dt * (1.0 - (returned == terms.returned.end() ? 0.0 : returned->second));
+}
+
+double measured_growth(const MeasuredTerms& terms, int size, double growth_rate, double dt) {
+  const auto fresh = terms.new_growth.find(size);
+  return (terms.returned.empty() || fresh == terms.new_growth.end() ? growth_rate : fresh->second) *
+         dt;
+}
+
 }  // namespace
 
 BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerms& terms) {
@@ -30,12 +43,14 @@ BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerm
   if (!rates.forms_aggregates) return rates;
   if (world.controller.leave) {
     for (const auto& [size, rate] : terms.attempt) {
-      if (size >= 2 && size <= rates.agents) rates.loss[static_cast<std::size_t>(size)] = rate * dt;
+      if (size >= 2 && size <= rates.agents)
+        rates.loss[static_cast<std::size_t>(size)] = measured_loss(terms, size, rate, dt);
     }
   }
   if (!world.controller.join) return rates;
   for (const auto& [size, rate] : terms.growth) {
-    if (size >= 2 && size < rates.agents) rates.growth[static_cast<std::size_t>(size)] = rate * dt;
+    if (size >= 2 && size < rates.agents)
+      rates.growth[static_cast<std::size_t>(size)] = measured_growth(terms, size, rate, dt);
   }
   return rates;
 }
@@ -47,12 +62,13 @@ SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& t
   if (world.controller.leave) {
     for (const auto& [size, rate] : terms.attempt) {
       if (size >= 2 && size <= rates.agents)
-        rates.leave[static_cast<std::size_t>(size)] = rate * dt;
+        rates.leave[static_cast<std::size_t>(size)] = measured_loss(terms, size, rate, dt);
     }
   }
   if (!world.controller.join) return rates;
   for (const auto& [size, rate] : terms.growth) {
-    if (size >= 2 && size < rates.agents) rates.join[static_cast<std::size_t>(size)] = rate * dt;
+    if (size >= 2 && size < rates.agents)
+      rates.join[static_cast<std::size_t>(size)] = measured_growth(terms, size, rate, dt);
   }
   return rates;
 }
@@ -78,10 +94,14 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
   }
   const ControllerRules rules = controller_rules(world);
   if (rules.leaves && rules.model != ModelFamily::Encounters) {
-    note += ", leaving at the measured LEAVE attempt rate at " +
-            std::to_string(leave_sizes_used(world, terms)) +
-            " aggregate sizes (attempts that do not escape come back as growths; the model's "
-            "leave law elsewhere)";
+    note +=
+        ", leaving at the measured LEAVE attempt rate times the fraction that does not "
+        "return at " +
+        std::to_string(leave_sizes_used(world, terms)) +
+        " aggregate sizes (return fraction "
+        "measured at " +
+        std::to_string(terms.returned.size()) +
+        "; joins are the new joins there; the model's leave law elsewhere)";
   }
   return note;
 }

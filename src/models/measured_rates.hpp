@@ -5,8 +5,9 @@
 // A term not measured (fewer than the events an estimate needs, or sizes the runs never
 // held) keeps the model's own value: creation from model.creation, growth from docs/models.md /
 // 5.3, leaving from Bayindir's p min(m, periph(m)) or Soysal's model.leaving variant.
-// Agents leave at the measured LEAVE attempt rate per size: an attempt that does not escape
-// rejoins, and that return is already in the measured growth (join) rate.
+// Agents leave at the measured LEAVE attempt rate per size times the fraction that does not
+// return, and join at the measured rate of new joins (joins that are not returns): a return
+// is neither a loss nor a new encounter (docs/models-returns.md).
 #include <string>
 #include <vector>
 

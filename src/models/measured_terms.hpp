@@ -14,10 +14,15 @@ struct MeasuredTerms {
       growth;  // [m] growths (Soysal: joins) per searcher per size-m aggregate per tu
   // [m] mean number of aggregates of size m after the first decision (the placement pairs).
   std::map<int, double> initial;
-  // [m] LEAVE attempts per size-m aggregate per tu. The measured variant loses agents at this
-  // rate, not at the escape rate: an attempt that does not escape comes back as a growth
-  // (join), which the measured growth rate already counts.
+  // [m] LEAVE attempts per size-m aggregate per tu.
   std::map<int, double> attempt;
+  // [m] the fraction of attempts from size m that return to the aggregate they left, and
+  // [m] new joins (joins that are not returns) per searcher per size-m aggregate per tu.
+  // The measured variant loses agents at attempt (1 - returned) and grows at new_growth:
+  // a return is neither a loss nor a join. Where a size's return fraction was not measured,
+  // it loses at the attempt rate and grows at the whole growth rate (returns included).
+  std::map<int, double> returned;
+  std::map<int, double> new_growth;
 };
 
 }  // namespace swarmagg

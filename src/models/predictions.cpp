@@ -8,7 +8,10 @@
 #include "models/bayindir_stochastic.hpp"
 #include "models/initial_state.hpp"
 #include "models/measured_rates.hpp"
+#include "models/noise_floor.hpp"
 #include "models/output_grid.hpp"
+#include "models/return_probability.hpp"
+#include "models/returns_rates.hpp"
 #include "models/sample_statistics.hpp"
 #include "models/soysal_model.hpp"
 #include "models/soysal_rates.hpp"
@@ -24,8 +27,37 @@ std::string creation_variant_name(CreationVariant variant) {
   return variant == CreationVariant::Original ? "original" : "collision";
 }
 
-// Stream of the measured variant's stochastic draws (the creation variants use 0 and 1).
+// Streams of the measured and returns variants' stochastic draws (the creation variants
+// use 0 and 1).
 constexpr std::uint64_t kMeasuredStream = 2;
+constexpr std::uint64_t kReturnsStream = 3;
+
+// The returns variant matters only where aggregates lose leavers.
+bool knows_returns(const WorldSpec& world) {
+  const ControllerRules rules = controller_rules(world);
+  return rules.leaves && rules.model != ModelFamily::Encounters;
+}
+
+// An expected-value variant with its size distribution at the last step and, where it
+// forms aggregates, its NOA noise floor (models/noise_floor.hpp).
+VariantPrediction bayindir_expected(const WorldSpec& world, const BayindirRates& rates,
+                                    const std::string& variant,
+                                    const std::vector<std::int64_t>& grid,
+                                    const std::vector<double>& start) {
+  BayindirState last;
+  VariantPrediction prediction{.model = "bayindir",
+                               .variant = variant,
+                               .series = bayindir_expected_series(rates, grid, start, &last)};
+  if (!rates.forms_aggregates) return prediction;
+  add_size_distribution(prediction, grid.back(), last.aggregates);
+  std::vector<double> expected_noa;
+  for (const ModelRow& row : prediction.series) expected_noa.push_back(row.noa.value_or(0.0));
+  prediction.extra.push_back(
+      {std::string(kNoiseFloorQuantity) + kNoaMetric, std::nullopt,
+       noa_noise_floor(rates, grid, start, expected_noa, world.run.replicates, world.run.seed,
+                       noise_floor_stream(variant))});
+  return prediction;
+}
 
 std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
                                                     const MeasuredTerms* measured) {
@@ -33,24 +65,19 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
   const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
-    const BayindirRates rates = bayindir_rates(world, variant);
-    BayindirState last;
-    predictions.push_back({.model = "bayindir",
-                           .variant = creation_variant_name(variant),
-                           .chosen = variant == world.model.creation,
-                           .series = bayindir_expected_series(rates, grid, start, &last)});
-    if (rates.forms_aggregates)
-      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
+    predictions.push_back(bayindir_expected(world, bayindir_rates(world, variant),
+                                            creation_variant_name(variant), grid, start));
+    predictions.back().chosen = variant == world.model.creation;
+  }
+  if (knows_returns(world)) {
+    predictions.push_back(
+        bayindir_expected(world, returns_bayindir_rates(world), kReturnsVariant, grid, start));
   }
   if (measured) {
-    const BayindirRates rates = measured_bayindir_rates(world, *measured);
-    BayindirState last;
-    predictions.push_back({.model = "bayindir",
-                           .variant = "measured",
-                           .series = bayindir_expected_series(rates, grid, start, &last),
-                           .extra = measured_term_notes(world, *measured)});
-    if (rates.forms_aggregates)
-      add_size_distribution(predictions.back(), grid.back(), last.aggregates);
+    predictions.push_back(bayindir_expected(world, measured_bayindir_rates(world, *measured),
+                                            "measured", grid, start));
+    const std::vector<TidyValue> notes = measured_term_notes(world, *measured);
+    predictions.back().extra.insert(predictions.back().extra.end(), notes.begin(), notes.end());
   }
   if (world.model.stochastic_replicates <= 0) return predictions;
   for (const CreationVariant variant : kCreationVariants) {
@@ -62,6 +89,14 @@ std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
          .chosen = variant == world.model.creation,
          .series = bayindir_stochastic_series(bayindir_rates(world, variant), grid, world.run.seed,
                                               world.model.stochastic_replicates, stream, start)});
+  }
+  if (knows_returns(world)) {
+    predictions.push_back({.model = "bayindir",
+                           .variant = std::string(kReturnsVariant) + "-stochastic",
+                           .stochastic = true,
+                           .series = bayindir_stochastic_series(
+                               returns_bayindir_rates(world), grid, world.run.seed,
+                               world.model.stochastic_replicates, kReturnsStream, start)});
   }
   if (measured) {
     predictions.push_back({.model = "bayindir",
@@ -127,6 +162,9 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
                                             leaving_variant_name(variant), start));
     predictions.back().chosen = variant == world.model.leaving;
   }
+  if (knows_returns(world))
+    predictions.push_back(
+        soysal_prediction(world, returns_soysal_rates(world), kReturnsVariant, start));
   if (measured) {
     predictions.push_back(
         soysal_prediction(world, measured_soysal_rates(world, *measured), "measured", start));
@@ -155,7 +193,8 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
   }
   if (rules.leaves) {
     caveats.push_back(
-        "the models have no LEAVE timeout: an agent that leaves is counted as free at once");
+        "the models have no LEAVE timeout: an agent that leaves is counted as free at once "
+        "(the `returns` variant discounts the leavers that come back; docs/models-returns.md)");
   }
   if (rules.model == ModelFamily::Bayindir && controller.isolated_wait == IsolatedWait::Stay) {
     caveats.push_back(

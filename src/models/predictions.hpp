@@ -15,6 +15,9 @@
 
 namespace swarmagg {
 
+// Worlds whose aggregates lose agents also get the `returns` variant (bayindir `returns` and
+// `returns-stochastic`, soysal `returns`; models/returns_rates.hpp), and every expected-value
+// variant carries its noise floor (models/noise_floor.hpp) as an extra value.
 // Every variant starts where model.initial_state says (models/initial_state.hpp). With
 // `measured` terms (docs/models.md) the `measured` variants are added too (bayindir `measured` and
 // `measured-stochastic`, soysal `measured`; models/measured_rates.hpp).

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "models/chain_distribution.hpp"
 #include "models/initial_state.hpp"
+#include "models/noise_floor.hpp"
 #include "models/output_grid.hpp"
 #include "models/partition_chain.hpp"
 #include "models/soysal_rates.hpp"
@@ -98,6 +99,21 @@ std::vector<double> expected_sizes(const std::vector<Partition>& states,
   return by_size;
 }
 
+// The distribution averaged over the run, by the trapezoid rule over the report steps: what
+// the simulation's time fractions are compared with (analysis/partition_comparison.hpp).
+Eigen::VectorXd run_average(const Eigen::MatrixXd& distributions,
+                            const std::vector<std::int64_t>& grid) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(distributions.cols());
+  for (std::size_t j = 1; j < grid.size(); ++j) {
+    const auto row = static_cast<Eigen::Index>(j);
+    area += 0.5 * static_cast<double>(grid[j] - grid[j - 1]) *
+            (distributions.row(row) + distributions.row(row - 1)).transpose();
+  }
+  const double span = static_cast<double>(grid.back() - grid.front());
+  if (span > 0.0) return area / span;
+  return distributions.row(distributions.rows() - 1).transpose();
+}
+
 }  // namespace
 
 std::string leaving_variant_name(LeavingVariant variant) {
@@ -124,6 +140,10 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
   std::optional<Eigen::VectorXd> stationary;
   if (chain.recurrent) stationary = stationary_distribution(chain.generator);
   Eigen::MatrixXd distributions;
+  ChainRun run{.start = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(chain.states.size()),
+                                              chain.all_free),
+               .start_step = 0,
+               .steps = world.steps()};
   if (start.empty()) {
     distributions = transient_distributions(chain.generator, chain.all_free, grid, stationary);
   } else {
@@ -131,8 +151,9 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
     std::vector<std::int64_t> after_first(grid.size());
     for (std::size_t j = 0; j < grid.size(); ++j)
       after_first[j] = std::max<std::int64_t>(0, grid[j] - 1);
-    distributions = transient_distributions(
-        chain.generator, first_decision_distribution(chain, start), after_first, stationary);
+    run.start = first_decision_distribution(chain, start);
+    run.start_step = 1;
+    distributions = transient_distributions(chain.generator, run.start, after_first, stationary);
     for (std::size_t j = 0; j < grid.size(); ++j) {
       if (grid[j] == 0) {
         distributions.row(static_cast<Eigen::Index>(j)) =
@@ -152,6 +173,10 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
       prediction, grid.back(),
       expected_sizes(chain.states, distributions.row(distributions.rows() - 1), agents));
   if (stationary) add_stationary(chain, values, *stationary, prediction);
+  prediction.extra.push_back(
+      {std::string(kNoiseFloorQuantity) + kPartitionMetric, std::nullopt,
+       partition_noise_floor(chain, run, run_average(distributions, grid), world.run.replicates,
+                             world.run.seed, noise_floor_stream(variant))});
   return prediction;
 }
 

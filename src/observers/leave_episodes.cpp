@@ -1,24 +1,49 @@
 #include "observers/leave_episodes.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace swarmagg {
 
-LeaveEpisodes::LeaveEpisodes(int agent_count, double detection_radius, const ShapeRules& rules)
-    : detection_radius_(detection_radius), rules_(rules) {
+LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, const ShapeRules& rules)
+    : episodes_(episodes), rules_(rules) {
   tally_.resize(agent_count);
-  open_.reserve(static_cast<std::size_t>(agent_count));  // one attempt per agent at most
-  // Room for as many remembered members as there are agents, so that most runs never grow it.
-  former_.reserve(static_cast<std::size_t>(agent_count));
-  members_.reserve(static_cast<std::size_t>(agent_count));  // the largest aggregate's bound
+  const auto agents = static_cast<std::size_t>(agent_count);
+  open_.reserve(agents);  // one attempt per agent at most
+  // Room for several remembered members per agent (attempts stay open through their
+  // excursion, up to the return window) and for as many remembered sizes as there are
+  // agents (one snapshot per decision that starts attempts), so that most runs never grow
+  // them.
+  former_.reserve(kFormerPerAgent * agents);
+  sizes_at_start_.reserve(agents);
+  members_.reserve(agents);  // the largest aggregate's bound
 }
 
 void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
                                      const NeighbourLists& neighbours,
                                      std::span<const Vec2> positions,
                                      std::span<const AgentState> state) {
-  for (const std::int32_t size : aggregates.sizes()) ++tally_.aggregate_steps_by_size[size];
-  end_attempts(neighbours, state);
+  ++decision_;
+  // Attempts are advanced before this decision's aggregates are counted: a return's time
+  // away ends with the decision in which it went WAIT, the one before.
+  std::size_t kept = 0;
+  for (OpenAttempt& attempt : open_) {
+    if (advance(attempt, aggregates, neighbours, state)) {
+      dead_former_ += attempt.count;
+    } else {
+      open_[kept++] = attempt;
+    }
+  }
+  open_.resize(kept);
+  // Amortised: each remembered entry is copied at most once per time it is remembered. The
+  // snapshots are compacted before they would outgrow their room.
+  if (dead_former_ > former_.size() / 2 ||
+      sizes_at_start_.size() + 2 * sizes_seen_ + 2 > sizes_at_start_.capacity())
+    compact();
+  for (const std::int32_t size : aggregates.sizes()) {
+    ++tally_.aggregate_steps_by_size[size];
+    sizes_seen_ = std::max(sizes_seen_, static_cast<std::size_t>(size) + 1);
+  }
   start_attempts(aggregates, positions, state);
 }
 
@@ -37,31 +62,49 @@ void LeaveEpisodes::start_attempts(const AggregateTracker& aggregates,
     attempt.size = aggregates.sizes()[static_cast<std::size_t>(aggregate)];
     attempt.rim =
         rules_.rim.on_rim(member_surroundings(i, members, positions, rules_).fellows_within_reach);
+    attempt.start = decision_;
     attempt.first = static_cast<std::uint32_t>(former_.size());
     attempt.count = static_cast<std::uint32_t>(members.size() - 1);
     for (const AgentId j : members) {
       if (j != i) former_.push_back(j);
     }
+    // One snapshot of the aggregate steps by size serves every attempt of this decision.
+    if (snapshot_decision_ != decision_) {
+      snapshot_decision_ = decision_;
+      snapshot_first_ = static_cast<std::uint32_t>(sizes_at_start_.size());
+      const auto steps = tally_.aggregate_steps_by_size.begin();
+      sizes_at_start_.insert(sizes_at_start_.end(), steps,
+                             steps + static_cast<std::ptrdiff_t>(sizes_seen_));
+    }
+    attempt.sizes_first = snapshot_first_;
+    attempt.sizes = static_cast<std::uint32_t>(sizes_seen_);
     open_.push_back(attempt);
     tally_.attempts.count(attempt.rim);
     ++tally_.attempts_by_size[attempt.size];
   }
 }
 
-void LeaveEpisodes::end_attempts(const NeighbourLists& neighbours,
-                                 std::span<const AgentState> state) {
-  const auto ended = [&](const OpenAttempt& attempt) {
+bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggregates,
+                            const NeighbourLists& neighbours, std::span<const AgentState> state) {
+  if (attempt.leaving) {
     if (state[attempt.agent] == AgentState::Leave) return false;
     if (escaped(attempt, neighbours, state)) {
       tally_.escapes.count(attempt.rim);
       ++tally_.escapes_by_size[attempt.size];
     }
-    dead_former_ += attempt.count;
+    attempt.leaving = false;
+    return episodes_.return_window_steps <= 0;
+  }
+  // It went WAIT in the decision before the one that first sees it in an aggregate.
+  const std::int32_t aggregate = aggregates.aggregate_of()[attempt.agent];
+  const bool in_time = decision_ - 1 - attempt.start <= episodes_.return_window_steps;
+  if (aggregate >= 0) {
+    if (in_time && holds_former_member(attempt, aggregate, aggregates)) {
+      count_return(attempt, aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1);
+    }
     return true;
-  };
-  open_.erase(std::remove_if(open_.begin(), open_.end(), ended), open_.end());
-  // Amortised: each remembered member is copied at most once per time it is remembered.
-  if (dead_former_ > former_.size() / 2) compact_former();
+  }
+  return !in_time;
 }
 
 bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
@@ -69,25 +112,62 @@ bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& ne
   const auto former_begin = former_.begin() + attempt.first;
   const auto former_end = former_begin + attempt.count;
   for (const Neighbour& nb : neighbours.of(attempt.agent)) {
-    if (nb.distance > detection_radius_) break;  // nearest first
+    if (nb.distance > episodes_.escape_radius) break;  // nearest first
     if (state[nb.id] == AgentState::Wait && std::binary_search(former_begin, former_end, nb.id))
       return false;
   }
   return true;
 }
 
+bool LeaveEpisodes::holds_former_member(const OpenAttempt& attempt, std::int32_t aggregate,
+                                        const AggregateTracker& aggregates) const {
+  const auto former_begin = former_.begin() + attempt.first;
+  return std::any_of(former_begin, former_begin + attempt.count,
+                     [&](AgentId j) { return aggregates.aggregate_of()[j] == aggregate; });
+}
+
+// The exposure spent away: the aggregate steps by size counted since the attempt started
+// (sizes that had never existed then were at 0).
+void LeaveEpisodes::count_return(const OpenAttempt& attempt, std::int32_t joined_size) {
+  const auto m = static_cast<std::size_t>(attempt.size);
+  ++tally_.returns_by_size[m];
+  const std::int64_t away = decision_ - 1 - attempt.start;
+  tally_.return_steps_by_size[m] += away;
+  tally_.return_square_steps_by_size[m] += away * away;
+  ++tally_.returns_into_size[static_cast<std::size_t>(joined_size)];
+  for (std::size_t k = 0; k < sizes_seen_; ++k) {
+    const std::int64_t before = k < attempt.sizes ? sizes_at_start_[attempt.sizes_first + k] : 0;
+    tally_.returning_aggregate_steps_by_size[k] += tally_.aggregate_steps_by_size[k] - before;
+  }
+}
+
 // In place: open attempts keep the order they started in, so their ranges lie in
 // increasing order and each moves down, never onto a range still to be moved.
-void LeaveEpisodes::compact_former() {
-  std::size_t end = 0;
+// Attempts of one decision share a snapshot: it moves once, for the first of them.
+void LeaveEpisodes::compact() {
+  std::size_t former_end = 0, sizes_end = 0;
+  std::uint32_t moved_from = std::numeric_limits<std::uint32_t>::max(), moved_to = 0;
   for (OpenAttempt& attempt : open_) {
-    const auto begin = former_.begin() + attempt.first;
-    std::copy(begin, begin + attempt.count, former_.begin() + static_cast<std::ptrdiff_t>(end));
-    attempt.first = static_cast<std::uint32_t>(end);
-    end += attempt.count;
+    const auto members = former_.begin() + attempt.first;
+    std::copy(members, members + attempt.count,
+              former_.begin() + static_cast<std::ptrdiff_t>(former_end));
+    attempt.first = static_cast<std::uint32_t>(former_end);
+    former_end += attempt.count;
+    if (attempt.sizes_first != moved_from) {
+      moved_from = attempt.sizes_first;
+      moved_to = static_cast<std::uint32_t>(sizes_end);
+      const auto sizes = sizes_at_start_.begin() + attempt.sizes_first;
+      std::copy(sizes, sizes + attempt.sizes,
+                sizes_at_start_.begin() + static_cast<std::ptrdiff_t>(sizes_end));
+      sizes_end += attempt.sizes;
+    }
+    attempt.sizes_first = moved_to;
   }
-  former_.resize(end);
+  former_.resize(former_end);
+  sizes_at_start_.resize(sizes_end);
   dead_former_ = 0;
+  // The snapshot of this decision (if any) moved: attempts that start later take a new one.
+  snapshot_decision_ = -1;
 }
 
 }  // namespace swarmagg

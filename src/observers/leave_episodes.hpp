@@ -3,18 +3,27 @@
 //
 // An attempt starts when an agent in an aggregate of size m goes WAIT -> LEAVE. Then it
 // records m, the other members of that aggregate, and whether the agent stood on its rim
-// (the rim rule of docs/models.md, observers/aggregate_geometry.hpp). The attempt ends when the
-// agent stops leaving (its timeout, LEAVE -> GO); it is an escape when at that moment the agent
-// perceives (within s) no member of the aggregate it left that is still waiting. A waiting
+// (the rim rule of docs/models.md, observers/aggregate_geometry.hpp). The LEAVE phase ends when the agent stops leaving (its
+// timeout, LEAVE -> GO); the attempt is an escape when at that moment the agent perceives,
+// within the escape radius, no member of the aggregate it left that is still waiting. The
+// escape radius is the distance at which the controller would steer back: the approach
+// radius for a controller that approaches (Soysal), else the detection radius. A waiting
 // agent alone (isolated_wait: stay) has no aggregate to leave: no attempt.
+//
+// After its LEAVE phase the attempt stays open as an excursion until the agent is next seen
+// in an aggregate, or until the return window has passed. It is a return when that aggregate
+// holds a member of the one it left and the agent joined it within the window (measured from
+// the start of the attempt). A return remembers how long it took, the size of the aggregate
+// it joined, and the searcher exposure it spent away (the aggregates of each size that
+// existed at each decision of the excursion), which a rate of new joins must leave out.
 //
 // observe_decision() runs once per step, between the controller's decision and the engine's
 // move, so the rim and the escape are judged on exactly what the controller saw when it
 // decided. It also counts that step's aggregates by size (the exposure). Its cost is linear
-// in the agents in aggregates plus the open attempts and the members they remember. It
-// allocates nothing per step: room for N remembered members is reserved up front, and only
-// worlds whose open attempts remember more (many leavers of large aggregates at once) grow
-// it, to a high-water mark.
+// in the agents in aggregates plus the open attempts and the members and sizes they remember.
+// It allocates nothing per step: room for 4N remembered members and N remembered sizes is
+// reserved up front, and only worlds whose open attempts remember more grow it, to a
+// high-water mark.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -27,9 +36,15 @@
 
 namespace swarmagg {
 
+struct EpisodeRules {
+  double escape_radius = 0.0;  // within it a waiting former member holds the leaver
+  // Decisions after the attempt starts within which a return counts (0: none counts).
+  std::int64_t return_window_steps = 0;
+};
+
 class LeaveEpisodes {
  public:
-  LeaveEpisodes(int agent_count, double detection_radius, const ShapeRules& rules);
+  LeaveEpisodes(int agent_count, const EpisodeRules& episodes, const ShapeRules& rules);
 
   // `aggregates`, `neighbours` and `positions`: what the decision started from; `state`:
   // every agent's state after it.
@@ -37,6 +52,7 @@ class LeaveEpisodes {
                         std::span<const Vec2> positions, std::span<const AgentState> state);
 
   const LeaveTally& tally() const { return tally_; }
+  // Attempts not yet decided: leaving, or on an excursion that may still return.
   std::size_t open_attempts() const { return open_.size(); }
 
  private:
@@ -44,23 +60,40 @@ class LeaveEpisodes {
     AgentId agent = 0;
     std::int32_t size = 0;  // of the aggregate it left
     bool rim = false;
-    std::uint32_t first = 0;  // its former fellow members: former_[first, first + count)
-    std::uint32_t count = 0;
+    bool leaving = true;            // in its LEAVE phase (else on the excursion after it)
+    std::int64_t start = 0;         // the decision it started in
+    std::uint32_t first = 0;        // its former fellow members: former_[first, first + count)
+    std::uint32_t count = 0;        // and the aggregate steps by size when it started:
+    std::uint32_t sizes_first = 0;  // sizes_at_start_[sizes_first, sizes_first + sizes)
+    std::uint32_t sizes = 0;
   };
   void start_attempts(const AggregateTracker& aggregates, std::span<const Vec2> positions,
                       std::span<const AgentState> state);
-  void end_attempts(const NeighbourLists& neighbours, std::span<const AgentState> state);
+  // True when the attempt is decided (its excursion ended) and may be forgotten.
+  bool advance(OpenAttempt& attempt, const AggregateTracker& aggregates,
+               const NeighbourLists& neighbours, std::span<const AgentState> state);
   bool escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
                std::span<const AgentState> state) const;
-  void compact_former();
+  bool holds_former_member(const OpenAttempt& attempt, std::int32_t aggregate,
+                           const AggregateTracker& aggregates) const;
+  void count_return(const OpenAttempt& attempt, std::int32_t joined_size);
+  void compact();
 
-  double detection_radius_;
+  EpisodeRules episodes_;
   ShapeRules rules_;
   LeaveTally tally_;
+  std::int64_t decision_ = 0;
+  std::size_t sizes_seen_ = 0;    // 1 + the largest aggregate size counted so far
   std::vector<AgentId> members_;  // of the aggregate an attempt leaves
   std::vector<OpenAttempt> open_;
   std::vector<AgentId> former_;  // sorted ranges, one per open attempt (and dead ones)
-  std::size_t dead_former_ = 0;  // entries of former_ that belong to ended attempts
+  // Snapshots of the aggregate steps by size, one per decision that started attempts (and
+  // dead ones), shared by that decision's attempts.
+  std::vector<std::int64_t> sizes_at_start_;
+  std::int64_t snapshot_decision_ = -1;  // the decision of the last snapshot
+  std::uint32_t snapshot_first_ = 0;     // and where it starts
+  std::size_t dead_former_ = 0;          // entries of former_ that belong to decided attempts
+  static constexpr std::size_t kFormerPerAgent = 4;
 };
 
 }  // namespace swarmagg

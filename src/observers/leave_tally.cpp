@@ -17,6 +17,11 @@ void LeaveTally::resize(int agent_count) {
   attempts_by_size.resize(sizes, 0);
   escapes_by_size.resize(sizes, 0);
   aggregate_steps_by_size.resize(sizes, 0);
+  returns_by_size.resize(sizes, 0);
+  return_steps_by_size.resize(sizes, 0);
+  return_square_steps_by_size.resize(sizes, 0);
+  returns_into_size.resize(sizes, 0);
+  returning_aggregate_steps_by_size.resize(sizes, 0);
 }
 
 // Divided by the steps per tu rather than multiplied by dt: 119754 steps of 0.1 tu give
@@ -33,6 +38,11 @@ LeaveTally& LeaveTally::operator+=(const LeaveTally& other) {
   add_by_size(attempts_by_size, other.attempts_by_size);
   add_by_size(escapes_by_size, other.escapes_by_size);
   add_by_size(aggregate_steps_by_size, other.aggregate_steps_by_size);
+  add_by_size(returns_by_size, other.returns_by_size);
+  add_by_size(return_steps_by_size, other.return_steps_by_size);
+  add_by_size(return_square_steps_by_size, other.return_square_steps_by_size);
+  add_by_size(returns_into_size, other.returns_into_size);
+  add_by_size(returning_aggregate_steps_by_size, other.returning_aggregate_steps_by_size);
   return *this;
 }
 

@@ -31,6 +31,14 @@ struct LeaveTally {
   std::vector<std::int64_t> attempts_by_size;
   std::vector<std::int64_t> escapes_by_size;
   std::vector<std::int64_t> aggregate_steps_by_size;
+  // Returns (observers/leave_episodes.hpp), by the size m left: how many, and their summed
+  // time away in steps; by the size of the aggregate joined on return (1: a pair formed
+  // with a former member); and by aggregate size k, the steps that size-k aggregates existed
+  // while returning agents were away (searcher exposure that was no search).
+  std::vector<std::int64_t> returns_by_size;
+  std::vector<std::int64_t> return_steps_by_size, return_square_steps_by_size;
+  std::vector<std::int64_t> returns_into_size;
+  std::vector<std::int64_t> returning_aggregate_steps_by_size;
 
   // Room for every size an aggregate of `agent_count` agents can have.
   void resize(int agent_count);

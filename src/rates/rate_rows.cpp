@@ -1,13 +1,18 @@
 #include "rates/rate_rows.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/aggregate_shape.hpp"
 #include "models/bayindir_rates.hpp"
 #include "models/initial_state.hpp"
 #include "models/kinetic_rate.hpp"
+#include "models/return_probability.hpp"
 #include "models/soysal_model.hpp"
 #include "models/soysal_rates.hpp"
+#include "rates/binomial_interval.hpp"
 
 namespace swarmagg {
 
@@ -86,7 +91,12 @@ RateRow creation_row(const WorldSpec& world, const RateTally& tally) {
   return row;
 }
 
-void add_growth_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
+// Joins per searcher per size-m aggregate per tu: every join (term growth, Soysal's join),
+// or with `new_only` the joins that are not returns (join_new), whose exposure leaves out the
+// agents away on an excursion that returned: they were no searchers. The models' join term
+// is meant as the new-encounter rate.
+void add_growth_rows(const WorldSpec& world, const RateTally& tally, bool new_only,
+                     std::vector<RateRow>& rows) {
   const double dt = world.engine.dt;
   const auto bayindir =
       is_bayindir(world) ? bayindir_variants(world) : decltype(bayindir_variants(world)){};
@@ -95,15 +105,60 @@ void add_growth_rows(const WorldSpec& world, const RateTally& tally, std::vector
   for (int m = 2; m < tally.agents; ++m) {
     const auto index = static_cast<std::size_t>(m);
     if (tally.searcher_aggregate_steps[index] == 0 && tally.growths[index] == 0) continue;
-    RateRow row{
-        .term = is_soysal(world) ? "join" : "growth",
-        .size = m,
-        .estimate = estimate_rate(tally.growths[index],
-                                  static_cast<double>(tally.searcher_aggregate_steps[index]) * dt)};
+    const std::uint64_t returned =
+        new_only ? std::min(tally.returns_into[index], tally.growths[index]) : 0;
+    const std::uint64_t away = new_only ? std::min(tally.returning_searcher_steps[index],
+                                                   tally.searcher_aggregate_steps[index])
+                                        : 0;
+    RateRow row{.term = new_only           ? "join_new"
+                        : is_soysal(world) ? "join"
+                                           : "growth",
+                .size = m,
+                .estimate = estimate_rate(
+                    tally.growths[index] - returned,
+                    static_cast<double>(tally.searcher_aggregate_steps[index] - away) * dt)};
     for (const auto& [name, rates] : bayindir)
       row.models.push_back({"bayindir", name, rates.growth[index] / dt});
     for (const auto& [name, rates] : soysal)
       row.models.push_back({"soysal", name, rates.join[index] / dt});
+    rows.push_back(row);
+  }
+}
+
+// Per size m left: the fraction of LEAVE attempts that returned (binomial interval), against
+// the `returns` variant's q over every attempt (models/return_probability.hpp), and their
+// mean time away in tu.
+void add_return_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
+  const double dt = world.engine.dt;
+  const std::string model = is_soysal(world) ? "soysal" : "bayindir";
+  for (int m = 2; m <= tally.agents; ++m) {
+    const auto index = static_cast<std::size_t>(m);
+    if (tally.attempts[index] == 0) continue;
+    RateRow row{.term = "return",
+                .size = m,
+                .estimate = estimate_fraction(tally.returns[index], tally.attempts[index])};
+    row.models.push_back({model, kReturnsVariant, attempt_return_probability(world, m)});
+    rows.push_back(row);
+  }
+  for (int m = 2; m <= tally.agents; ++m) {
+    const auto index = static_cast<std::size_t>(m);
+    if (tally.returns[index] == 0) continue;
+    const auto returns = static_cast<double>(tally.returns[index]);
+    RateRow row{.term = "return_time",
+                .size = m,
+                .estimate = {.events = tally.returns[index], .exposure = returns}};
+    if (tally.returns[index] >= kMinimumEvents) {
+      // The mean and its normal 95% interval (the times of returns are independent enough:
+      // each is one agent's excursion).
+      const double mean = static_cast<double>(tally.return_steps[index]) / returns;
+      const double variance = std::max(
+          0.0, (static_cast<double>(tally.return_square_steps[index]) / returns - mean * mean) *
+                   returns / (returns - 1.0));
+      const double half = 1.96 * std::sqrt(variance / returns);
+      row.estimate.rate = mean * dt;
+      row.estimate.low = (mean - half) * dt;
+      row.estimate.high = (mean + half) * dt;
+    }
     rows.push_back(row);
   }
 }
@@ -196,8 +251,12 @@ std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally&
   std::vector<RateRow> rows{creation_row(world, tally)};
   const ControllerRules rules = controller_rules(world);
   if (rules.model == ModelFamily::Encounters) return rows;
-  if (rules.joins) add_growth_rows(world, tally, rows);
-  if (rules.leaves) add_leave_rows(world, tally, rows);
+  if (rules.joins) add_growth_rows(world, tally, false, rows);
+  if (rules.joins && rules.leaves) add_growth_rows(world, tally, true, rows);
+  if (rules.leaves) {
+    add_leave_rows(world, tally, rows);
+    add_return_rows(world, tally, rows);
+  }
   add_initial_rows(world, tally, rows);
   add_geometry_rows(world, tally, rows);
   return rows;
@@ -210,6 +269,10 @@ MeasuredTerms measured_terms(const std::vector<RateRow>& rows) {
       terms.creation = row.estimate.rate;
     } else if ((row.term == "growth" || row.term == "join") && row.size && row.estimate.rate) {
       terms.growth[*row.size] = *row.estimate.rate;
+    } else if (row.term == "return" && row.size && row.estimate.rate) {
+      terms.returned[*row.size] = *row.estimate.rate;
+    } else if (row.term == "join_new" && row.size && row.estimate.rate) {
+      terms.new_growth[*row.size] = *row.estimate.rate;
     } else if (row.term == "attempt" && row.size && row.estimate.rate) {
       terms.attempt[*row.size] = *row.estimate.rate;
     } else if (row.term == "initial" && row.size && row.estimate.exposure > 0.0) {

@@ -12,7 +12,12 @@
 //    with no waiting member of the aggregate left within s) per size-m aggregate per tu;
 //    models: attempts m P_l(m) / dt, escapes the variant's loss (Bayindir p min(m,
 //    periph(m)), Soysal L(m)).
-// The radius and rim terms (aggregate geometry) are not measured here yet.
+//  - join_new, by the size m joined: joins that are not returns, per searcher (away agents
+//    left out) per size-m aggregate per tu; models as growth;
+//  - return, by the size m left: the fraction of attempts that came back (binomial interval);
+//    model: the returns variant's q over every attempt (models/return_probability.hpp);
+//  - return_time, by the size m left: the mean time away of a return in tu (no model);
+//  - radius and rim, by size m: the aggregates' mean outer radius and rim count.
 #include <optional>
 #include <string>
 #include <vector>

@@ -13,6 +13,11 @@ RateTally::RateTally(int agent_count)
       attempts(static_cast<std::size_t>(agent_count) + 1, 0),
       escapes(static_cast<std::size_t>(agent_count) + 1, 0),
       leave_aggregate_steps(static_cast<std::size_t>(agent_count) + 1, 0),
+      returns(static_cast<std::size_t>(agent_count) + 1, 0),
+      return_steps(static_cast<std::size_t>(agent_count) + 1, 0),
+      return_square_steps(static_cast<std::size_t>(agent_count) + 1, 0),
+      returns_into(static_cast<std::size_t>(agent_count) + 1, 0),
+      returning_searcher_steps(static_cast<std::size_t>(agent_count) + 1, 0),
       outer_radius(static_cast<std::size_t>(agent_count) + 1),
       rim(static_cast<std::size_t>(agent_count) + 1) {}
 
@@ -30,6 +35,11 @@ void RateTally::merge(const RateTally& other) {
     attempts[m] += other.attempts[m];
     escapes[m] += other.escapes[m];
     leave_aggregate_steps[m] += other.leave_aggregate_steps[m];
+    returns[m] += other.returns[m];
+    return_steps[m] += other.return_steps[m];
+    return_square_steps[m] += other.return_square_steps[m];
+    returns_into[m] += other.returns_into[m];
+    returning_searcher_steps[m] += other.returning_searcher_steps[m];
     outer_radius[m].merge(other.outer_radius[m]);
     rim[m].merge(other.rim[m]);
   }

@@ -26,7 +26,10 @@ std::string optional_text(const std::optional<double>& value) {
 
 std::string term_label(const std::string& term) {
   if (term == "creation" || term == "pairup") return "per searcher pair per tu";
-  if (term == "growth" || term == "join") return "per searcher per aggregate per tu";
+  if (term == "growth" || term == "join" || term == "join_new")
+    return "per searcher per aggregate per tu";
+  if (term == "return") return "fraction of LEAVE attempts that return";
+  if (term == "return_time") return "mean time away of a return (tu)";
   if (term == "attempt" || term == "escape") return "per aggregate per tu";
   if (term == "radius") return "mean outer radius R1 (u)";
   if (term == "rim") return "mean rim members";
@@ -139,7 +142,13 @@ void plot_rates(const WorldSpec& world, const std::vector<RateRow>& measured,
       plot_single(world, row, folder);
     }
   }
-  for (const auto& [term, term_rows] : sized) plot_sized(term, term_rows, folder, world);
+  for (const auto& [term, term_rows] : sized) {
+    // Nothing to draw (a short run: too few returns to time, and no model): no plot.
+    const bool drawable = std::any_of(term_rows.begin(), term_rows.end(), [](const RateRow* r) {
+      return r->estimate.rate || !r->models.empty();
+    });
+    if (drawable) plot_sized(term, term_rows, folder, world);
+  }
 }
 
 }  // namespace swarmagg

@@ -1,10 +1,12 @@
 #pragma once
 // What reproduce measured for one paper figure: the worlds it ran (or reused) and the
 // comparison of their outputs with the models, filled according to the figure's kind.
+#include <map>
 #include <optional>
 #include <vector>
 
 #include "analysis/partition_comparison.hpp"
+#include "analysis/run_stationarity.hpp"
 #include "config/world_spec.hpp"
 #include "rates/rate_rows.hpp"
 #include "reproduce/encounter_comparison.hpp"
@@ -21,6 +23,10 @@ struct FigureResult {
   std::optional<PartitionComparison> partitions;  // Partition
   std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
   std::optional<double> member_spacing;           // Noa / Partition: summary.json's final, pooled
+  // Partition: the NOA trend over the second half (stationarity) and the distributions of
+  // NOA and of the largest aggregate over every recorded step (analysis/run_stationarity).
+  std::optional<NoaTrend> trend;
+  std::map<int, double> noa_distribution, largest_distribution;
   std::string plot;  // the figure's PNG, relative to the report's folder ("plots/<id>.png")
   int reused = 0;    // worlds whose run folder was reused
   double wall_seconds = 0.0;

@@ -1,9 +1,8 @@
 #include "reproduce/noa_comparison.hpp"
 
-#include <cmath>
-#include <map>
-#include <stdexcept>
-
+#include "analysis/model_errors.hpp"
+#include "models/noise_floor.hpp"
+#include "models/return_probability.hpp"
 #include "models/sample_statistics.hpp"
 #include "reproduce/paper_predictions.hpp"
 
@@ -11,38 +10,25 @@ namespace swarmagg {
 
 const std::vector<std::string>& noa_variants() {
   static const std::vector<std::string> variants{"original", "collision", kPaperFitVariant,
-                                                 kMeasuredVariant};
+                                                 kReturnsVariant, kMeasuredVariant};
   return variants;
-}
-
-NoaSeries read_noa_series(const std::filesystem::path& csv) {
-  return read_step_series(read_csv(csv), "noa");
-}
-
-double noa_rmse(const NoaSeries& simulation, const NoaSeries& model) {
-  std::map<std::int64_t, double> predicted;
-  for (std::size_t i = 0; i < model.steps.size(); ++i) predicted[model.steps[i]] = model.mean_at(i);
-  double squares = 0.0;
-  int count = 0;
-  for (std::size_t i = 0; i < simulation.steps.size(); ++i) {
-    const auto found = predicted.find(simulation.steps[i]);
-    if (found == predicted.end()) continue;
-    const double difference = simulation.mean_at(i) - found->second;
-    squares += difference * difference;
-    ++count;
-  }
-  if (count == 0) throw std::runtime_error("simulation and model share no recorded step");
-  return std::sqrt(squares / count);
 }
 
 NoaComparison compare_noa(const std::filesystem::path& run_folder) {
   NoaComparison comparison;
   comparison.simulation = read_noa_series(run_folder / "timeseries.csv");
+  const std::map<std::string, double> floors =
+      read_noise_floors(read_csv(run_folder / "model.csv"), "bayindir", kNoaMetric);
   for (const std::string& variant : noa_variants()) {
-    comparison.models.push_back(
-        read_noa_series(run_folder / "model-timeseries" / ("bayindir-" + variant + ".csv")));
+    const std::filesystem::path file =
+        run_folder / "model-timeseries" / ("bayindir-" + variant + ".csv");
+    // Only worlds whose aggregates lose agents have the returns variant.
+    if (variant == kReturnsVariant && !std::filesystem::exists(file)) continue;
+    comparison.models.push_back(read_noa_series(file));
+    const auto floor = floors.find(variant);
     comparison.errors.push_back(
-        {variant, noa_rmse(comparison.simulation, comparison.models.back())});
+        {variant, noa_rmse(comparison.simulation, comparison.models.back()),
+         floor == floors.end() ? std::nullopt : std::optional(floor->second)});
   }
   return comparison;
 }

@@ -8,28 +8,21 @@
 #include <string>
 #include <vector>
 
-#include "analysis/step_series.hpp"
+#include "analysis/noa_error.hpp"
 #include "analysis/variant_error.hpp"
 
 namespace swarmagg {
 
-// The expected-value variants compared: Bayindir's original, our kinetic collision variant
-// and the paper's fitted collision variant.
+// The expected-value variants compared: Bayindir's original, our kinetic collision variant,
+// the paper's fitted collision variant, the returns variant (worlds whose aggregates lose
+// agents only) and the measured variant.
 const std::vector<std::string>& noa_variants();
-
-using NoaSeries = StepSeries;  // the noa column
 
 struct NoaComparison {
   NoaSeries simulation;
-  std::vector<NoaSeries> models;     // in noa_variants() order
+  std::vector<NoaSeries> models;     // in noa_variants() order, those the run folder has
   std::vector<VariantError> errors;  // RMSE per variant, same order
 };
-
-// Groups a timeseries-shaped CSV's `noa` column by step.
-NoaSeries read_noa_series(const std::filesystem::path& csv);
-
-// RMSE between the replicate mean of `simulation` and the model, over the steps both hold.
-double noa_rmse(const NoaSeries& simulation, const NoaSeries& model);
 
 NoaComparison compare_noa(const std::filesystem::path& run_folder);
 

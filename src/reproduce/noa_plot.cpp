@@ -3,9 +3,12 @@
 #include <algorithm>
 
 #include "analysis/csv_text.hpp"
+#include "models/return_probability.hpp"
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/variant_colours.hpp"
+#include "reproduce/paper_predictions.hpp"
 
 namespace swarmagg {
 namespace {
@@ -43,6 +46,21 @@ std::string curves_csv(const NoaComparison& comparison) {
   return text;
 }
 
+struct VariantStyle {
+  std::string colour, dash, title;
+};
+
+// The paper's colours for its variants (original blue, collision orange, its fit dashed),
+// then the further hues of plot/variant_colours.hpp.
+VariantStyle noa_variant_style(const std::string& variant) {
+  if (variant == "original") return {variant_colour(0), "", "Bayindir original"};
+  if (variant == "collision") return {variant_colour(1), "", "collision theory (kinetic)"};
+  if (variant == kPaperFitVariant)
+    return {variant_colour(1), " dt 2", "collision theory (paper fit)"};
+  if (variant == kReturnsVariant) return {variant_colour(3), "", "returns (predicted q)"};
+  return {variant_colour(2), "", "measured terms"};
+}
+
 double box_width(const NoaSeries& simulation) {
   return 0.4 * simulation.times.back() / kNoaBoxes;
 }
@@ -60,24 +78,17 @@ void plot_noa(const FigureFiles& files, const std::string& title, const NoaCompa
       "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\nset key bottom right box "
       "opaque\n"
       "set style fill empty\nset yrange [0:*]\n";
-  script +=
-      "plot " + boxes + " skip 1 using 1:3:2:6:5:(" + width +
-      ") with candlesticks whiskerbars lc 'black' title 'simulation (replicates)', \\\n"
-      "  " +
-      boxes + " skip 1 using 1:4:4:4:4:(" + width +
-      ") with candlesticks lc 'black' notitle, \\\n"
-      "  " +
-      curves +
-      " skip 1 using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'Bayindir original', \\\n"
-      "  " +
-      curves +
-      " skip 1 using 1:4 with lines lw 2 lc rgb '#ff7f0e' title 'collision theory (kinetic)', \\\n"
-      "  " +
-      curves +
-      " skip 1 using 1:5 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'collision theory (paper "
-      "fit)', \\\n"
-      "  " +
-      curves + " skip 1 using 1:6 with lines lw 2 lc rgb '#2ca02c' title 'measured terms'\n";
+  script += "plot " + boxes + " skip 1 using 1:3:2:6:5:(" + width +
+            ") with candlesticks whiskerbars lc 'black' title 'simulation (replicates)', \\\n  " +
+            boxes + " skip 1 using 1:4:4:4:4:(" + width + ") with candlesticks lc 'black' notitle";
+  // One line per variant the comparison holds, in its curves column (3 on).
+  for (std::size_t k = 0; k < comparison.errors.size(); ++k) {
+    const VariantStyle style = noa_variant_style(comparison.errors[k].variant);
+    script += ", \\\n  " + curves + " skip 1 using 1:" + std::to_string(3 + k) +
+              " with lines lw 2" + style.dash + " lc rgb '" + style.colour + "' title " +
+              gnuplot_quote(style.title);
+  }
+  script += "\n";
   run_gnuplot(files.script(), script);
 }
 

@@ -8,6 +8,7 @@
 #include "models/aggregate_shape.hpp"
 #include "rates/geometry_fits.hpp"
 #include "reproduce/paper_predictions.hpp"
+#include "reproduce/returns_report.hpp"
 
 namespace swarmagg {
 namespace {
@@ -133,7 +134,8 @@ const ModelTerm* chosen_term(const WorldSpec& world, const RateRow& row) {
 }
 
 // The measured rate furthest from the world's model variant: first by how far its interval
-// lies from 1 (0 when it holds 1: a wide interval proves nothing), then by |log ratio|. The
+// lies from 1 (0 when it holds 1: a wide interval proves nothing), then by |log ratio|.
+// Returns are no term of the paper's variants (their own section weighs them). The
 // geometry (radius, rim) is a shape, not a rate: the models feel it only through the growth
 // and escape rates measured here, and it has a table of its own.
 std::string most_deviant_term(const WorldSpec& world, const std::vector<RateRow>& rows) {
@@ -142,7 +144,7 @@ std::string most_deviant_term(const WorldSpec& world, const std::vector<RateRow>
   double ratio = 0.0;
   const ModelTerm* worst_model = nullptr;
   for (const RateRow& row : rows) {
-    if (row.term == "radius" || row.term == "rim") continue;
+    if (row.term == "radius" || row.term == "rim" || row.term == "return") continue;
     const ModelTerm* model = chosen_term(world, row);
     if (!row.estimate.rate || !model || model->rate <= 0.0) continue;
     const double r = *row.estimate.rate / model->rate;
@@ -268,8 +270,11 @@ std::string report_markdown(const ReportContext& context, const std::vector<Figu
       "another: see the deviation columns of Figs 7-8); Soysal `original` (every member may leave) "
       "and `peripheral` "
       "(uncapped "
-      "periphery, `periphery_cap: false`, as the paper's 5-agent improvement needs; "
-      "docs/models.md).\n\n";
+      "periphery, `periphery_cap: false`, as the paper's 5-agent improvement needs); for worlds "
+      "whose aggregates lose agents, `returns` (the world's variant losing only leavers that do "
+      "not come back, q(i) predicted from the world's parameters; docs/models.md); and "
+      "`measured` (the same equations fed with the run's measured terms: new joins, and leave "
+      "attempts times the fraction that does not return).\n\n";
   text += "## Collision theory (Figs 7-8)\n\n" + encounter_table(results) + "\n" +
           figure_images(results, is_encounter_figure);
   text +=
@@ -284,16 +289,18 @@ std::string report_markdown(const ReportContext& context, const std::vector<Figu
       "run "
       "length (transient included, as the simulation's fractions are).\n\n" +
       partition_table(results) + "\n" + figure_images(results, is_partition_figure);
+  text += noise_floor_section(results, context.timeout_series) +
+          soysal_distribution_section(results) + timeout_series_section(context.timeout_series) +
+          why_models_miss_section(results, context.timeout_series);
   text +=
-      "## Why the models miss\n\nEach run measures the terms the models are built from "
-      "(docs/models.md; "
-      "`runs/<world>/rates.csv`, exact Poisson 95% intervals, terms with fewer than 10 "
+      "### The measured terms\n\nEach run measures the terms the models are built from "
+      "(`runs/<world>/rates.csv`, exact Poisson 95% intervals, terms with fewer than 10 "
       "events left out). The table gives the term furthest from the world's model variant "
       "(ratio measured / model), and the error (NOA RMSE or TV distance, as above) of the paper's "
       "variants beside that of the `measured` variant: the same equations fed with the measured "
-      "creation (pair-up) and growth (join) rates, started like every variant from the state after "
+      "creation (pair-up) and new-join rates, started like every variant from the state after "
       "the first decision (`model.initial_state`), and losing agents at the measured LEAVE "
-      "attempt rate (an attempt that does not escape rejoins, which the measured growth counts). "
+      "attempt rate times the fraction that does not return. "
       "The aggregates' mean outer radius (`radius`) and rim count (`rim`) by size, observed at "
       "the recorded steps (95% intervals with each replicate one cluster), are in rates.csv too "
       "but not in this column: the models feel them only through the growth and escape rates, "

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
 #include "controllers/controller_registry.hpp"
@@ -17,6 +18,7 @@
 #include "reproduce/noa_plot.hpp"
 #include "reproduce/report.hpp"
 #include "reproduce/run_cache.hpp"
+#include "reproduce/timeout_series.hpp"
 
 namespace swarmagg {
 namespace {
@@ -27,6 +29,15 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A Soysal run's stationarity and NOA / largest-aggregate distributions, for the report.
+void add_run_distributions(FigureResult& result, const std::filesystem::path& run) {
+  const CsvTable timeseries = read_csv(run / "timeseries.csv");
+  const StepSeries noa = read_step_series(timeseries, "noa");
+  result.trend = second_half_trend(noa);
+  result.noa_distribution = value_distribution(noa);
+  result.largest_distribution = value_distribution(read_step_series(timeseries, "largest"));
 }
 
 void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
@@ -52,6 +63,7 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
       result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
+      add_run_distributions(result, runs / figure.worlds.front());
       result.member_spacing = final_member_spacing(runs / figure.worlds.front());
       plot_partitions(files, figure.title, *result.partitions);
       break;
@@ -199,12 +211,24 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
     }
     summary << summary_line(outcome.figures.back(), off) << std::endl;
   }
+  std::vector<TimeoutPoint> series;
+  if (timeout_series_selected(options)) {
+    series = run_timeout_series(options);
+    write_file_atomic(options.out / (std::string(kTimeoutFolder) + ".csv"),
+                      timeout_series_csv(series));
+    plot_timeout_series(options.out / kPlotFolder, options.plot_size, series);
+    for (const TimeoutPoint& p : series) {
+      summary << "timeout series " << p.world << " timeout " << report_number(p.leave_timeout)
+              << (p.reused ? " (reused)" : "") << ", " << report_number(p.wall_seconds) << " s; "
+              << errors_text(p.comparison.errors, "TV distance") << std::endl;
+    }
+  }
   outcome.wall_seconds = seconds_since(start);
   std::string mode = options.quick ? "quick" : "full";
   for (const std::string& o : options.overrides) mode += ", --set " + o;
   for (const std::string& o : options.only) mode += ", --only " + o;
   const ReportContext context{mode, options.engine.empty() ? "as in each world" : options.engine,
-                              outcome.wall_seconds};
+                              outcome.wall_seconds, series};
   outcome.report = options.out / "REPORT.md";
   const std::vector<ClaimCheck> claims = check_claims(outcome.figures);
   const std::vector<CompactionEffect> effects =

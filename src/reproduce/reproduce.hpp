@@ -3,10 +3,12 @@
 // <out>/runs/<world>/ with the model outputs beside it, compares each experiment with the
 // models, draws one PNG per paper figure into <out>/plots/ and writes <out>/REPORT.md.
 // --quick is the same path with fewer replicates and shorter runs, applied as overrides.
-// Every Bayindir and Soysal experiment whose world compacts (docs/controllers.md, the default) runs
-// a second time with controller.compaction.enabled=false into <out>/compaction-off/{runs, plots}/;
-// the report sets the two side by side and <out>/compaction.csv holds the numbers.
+// Every Bayindir and Soysal experiment whose world compacts (docs/controllers.md, the default) runs a
+// second time with controller.compaction.enabled=false into <out>/compaction-off/{runs,
+// plots}/; the report sets the two side by side and <out>/compaction.csv holds the numbers.
+// Then the leave-timeout series (reproduce/timeout_series.hpp) runs into <out>/timeout-series/.
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -26,6 +28,9 @@ struct ReproduceOptions {
   std::vector<std::string> only;       // keep worlds whose name contains one of these
   std::vector<std::string> overrides;  // key.path=value, after the quick ones
   bool progress = false;               // run progress on stderr (only shown on a terminal)
+  // Run length (tu) of the leave-timeout series (reproduce/timeout_series.hpp); unset: the
+  // paper worlds' own. --quick divides it like every run length.
+  std::optional<double> timeout_duration;
   PlotSize plot_size;
 };
 

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/model_errors.hpp"
 #include "config/world_writer.hpp"
 #include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
@@ -45,6 +46,7 @@ bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
   const MeasuredTerms terms = measured_terms(write_rate_outputs(spec, *run.rates, folder));
   write_model_outputs(spec, paper_predictions(spec, &terms), folder);
   write_run_folder(spec, run.result, folder);
+  write_model_errors(folder);
   return false;
 }
 

@@ -1,17 +1,30 @@
 #include "run/replicate.hpp"
 
+#include <cmath>
+
 #include "run/initial_placement.hpp"
 #include "run/invariants.hpp"
 
 namespace swarmagg {
+
+namespace {
+
+// A leaver is held by its aggregate as far as its controller would steer back to it: the
+// approach radius of a controller that approaches, else the detection radius.
+EpisodeRules episode_rules(const WorldSpec& spec, const ControllerRules& rules) {
+  return {.escape_radius = rules.allows(AgentState::Approach) ? spec.controller.approach_radius
+                                                              : spec.robots.detection_radius,
+          .return_window_steps = std::llround(spec.return_window() / spec.engine.dt)};
+}
+
+}  // namespace
 
 Replicate::Replicate(const WorldSpec& spec, int index)
     : spec_(spec),
       index_(index),
       rng_(CounterRng::for_replicate(spec.run.seed, static_cast<std::uint64_t>(index))),
       rules_(controller_rules(spec)),
-      leave_episodes_(spec.robots.count, spec.robots.detection_radius,
-                      ShapeRules::for_world(spec)) {
+      leave_episodes_(spec.robots.count, episode_rules(spec, rules_), ShapeRules::for_world(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
   engine_ = make_engine(spec, placement.positions);
   controller_ = make_controller(spec);

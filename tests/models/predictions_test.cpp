@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "model_test_worlds.hpp"
 
 namespace swarmagg {
@@ -18,28 +20,38 @@ TEST(Predictions, BayindirWorldsGetBothCreationVariantsExpectedAndStochastic) {
   world.run.duration = 100.0;
   world.model.stochastic_replicates = 3;
   const auto predictions = predict(world);
-  const std::vector<std::string> expected{"bayindir/original", "bayindir/collision",
+  // Its aggregates lose agents: the returns variant too.
+  const std::vector<std::string> expected{"bayindir/original",
+                                          "bayindir/collision",
+                                          "bayindir/returns",
                                           "bayindir/original-stochastic",
-                                          "bayindir/collision-stochastic"};
+                                          "bayindir/collision-stochastic",
+                                          "bayindir/returns-stochastic"};
   EXPECT_EQ(variants_of(predictions), expected);
   EXPECT_EQ(predictions[0].series.size(), 101u);  // steps 0, 10, ..., 1000
-  EXPECT_EQ(predictions[3].series.size(), 3 * 101u);
-  EXPECT_TRUE(predictions[3].stochastic);
+  EXPECT_EQ(predictions[4].series.size(), 3 * 101u);
+  EXPECT_TRUE(predictions[4].stochastic);
   // model.creation defaults to collision: that expected and stochastic variant are chosen.
   EXPECT_FALSE(predictions[0].chosen);
   EXPECT_TRUE(predictions[1].chosen);
-  EXPECT_TRUE(predictions[3].chosen);
+  EXPECT_TRUE(predictions[4].chosen);
   world.model.stochastic_replicates = 0;
-  EXPECT_EQ(predict(world).size(), 2u);
+  EXPECT_EQ(predict(world).size(), 3u);
 }
 
 TEST(Predictions, SoysalWorldsGetBothLeavingVariants) {
   WorldSpec world = testing::soysal_world(5, 150.0);
   world.run.duration = 1e5;
   const auto predictions = predict(world);
-  const std::vector<std::string> expected{"soysal/original", "soysal/peripheral"};
+  const std::vector<std::string> expected{"soysal/original", "soysal/peripheral", "soysal/returns"};
   EXPECT_EQ(variants_of(predictions), expected);
   EXPECT_TRUE(predictions[1].chosen);  // model.leaving defaults to peripheral
+  for (const VariantPrediction& p : predictions) {
+    const bool has_floor = std::any_of(p.extra.begin(), p.extra.end(), [](const TidyValue& v) {
+      return v.quantity == "noise_floor:tv_partition" && v.value > 0.0 && v.value < 1.0;
+    });
+    EXPECT_TRUE(has_floor) << p.variant;
+  }
   const std::string summary = prediction_summary(predictions[1]);
   EXPECT_NE(summary.find("most likely partition"), std::string::npos) << summary;
 }

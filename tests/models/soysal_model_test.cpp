@@ -50,6 +50,8 @@ TEST(SoysalModel, CappedPeripheralEqualsOriginalUpToFiveAgents) {
   const auto capped = soysal_prediction(world, LeavingVariant::Peripheral);
   ASSERT_EQ(original.extra.size(), capped.extra.size());
   for (std::size_t i = 0; i < original.extra.size(); ++i) {
+    // The noise floors are the same chain sampled on each variant's own stream.
+    if (original.extra[i].quantity.starts_with("noise_floor:")) continue;
     EXPECT_NEAR(original.extra[i].value, capped.extra[i].value, 1e-14);
   }
   world.model.periphery_cap = false;  // the paper's form: leaving is faster, fewer aggregates

@@ -11,10 +11,16 @@ using testing::Scene;
 
 // One step as a replicate runs it: perception and aggregates of the states the decision
 // starts from, then the decided states, then the observation.
+// Decisions within which a return counts; the tests of the LEAVE phase alone count none, so
+// that an attempt is decided when its timeout ends.
+constexpr std::int64_t kWindow = 30;
+
 struct Stepper {
+  explicit Stepper(std::int64_t window = 0, double escape_radius = Scene::kDetectionRadius)
+      : episodes{64, EpisodeRules{escape_radius, window},
+                 ShapeRules{scene.arena, 1.0, RimRule::for_spacing(2.0)}} {}
   Scene scene;
-  LeaveEpisodes episodes{64, Scene::kDetectionRadius,
-                         ShapeRules{scene.arena, 1.0, RimRule::for_spacing(2.0)}};
+  LeaveEpisodes episodes;
 
   template <typename Decide>
   void step(Decide decide) {
@@ -124,6 +130,81 @@ TEST(LeaveEpisodes, ManyOverlappingAttemptsKeepTheirOwnMembers) {
   // Step k starts from packs of 19 - k waiting members.
   for (int m = 8; m <= 19; ++m) EXPECT_EQ(t.attempts_by_size[m], 2) << m;
   EXPECT_EQ(t.escapes_by_size[19 - 3], 1);
+}
+
+// Returns: a triangle at (20, 20); agent `leaver` leaves, walks 6 away, and its timeout ends
+// there (outside s: an escape). What it does next decides whether it returned.
+struct ReturnScene {
+  Stepper s{kWindow};
+  AgentId first = 0, leaver = 0;
+  ReturnScene() {
+    first = s.scene.add(20.0, 20.0);
+    s.scene.add(22.0, 20.0);
+    leaver = s.scene.add(21.0, 21.7);
+    s.step([&](auto& state) { state[leaver] = AgentState::Leave; });  // decision 1: attempt
+    s.scene.positions[leaver] = {21.0, 28.0};
+    s.step([](auto&) {});                                          // 2: still leaving
+    s.step([&](auto& state) { state[leaver] = AgentState::Go; });  // 3: timeout, escape
+  }
+  // Decisions in GO, then it waits at `where` (seen in an aggregate one decision later).
+  void wait_at(Vec2 where, int decisions_in_go) {
+    for (int k = 0; k < decisions_in_go; ++k) s.step([](auto&) {});
+    s.scene.positions[leaver] = where;
+    s.step([&](auto& state) { state[leaver] = AgentState::Wait; });
+    s.step([](auto&) {});
+  }
+};
+
+TEST(LeaveEpisodes, ALeaverThatComesBackReturns) {
+  ReturnScene r;
+  EXPECT_EQ(r.s.episodes.tally().escapes_by_size[3], 1);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 1u);  // on its excursion
+  r.wait_at({21.0, 21.7}, 4);                   // waits again at decision 8
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 1);
+  EXPECT_EQ(t.return_steps_by_size[3], 8 - 1);  // from decision 1 to decision 8
+  EXPECT_EQ(t.returns_into_size[2], 1);         // the pair it left behind
+  // Away from decision 1 to 8 it saw the pair (size 2) at decisions 2..8 and its triangle
+  // (size 3) at none of them: the triangle was counted at decision 1, before it left.
+  EXPECT_EQ(t.returning_aggregate_steps_by_size[2], 7);
+  EXPECT_EQ(t.returning_aggregate_steps_by_size[3], 0);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 0u);
+}
+
+TEST(LeaveEpisodes, JoiningAnotherAggregateIsNoReturn) {
+  ReturnScene r;
+  r.s.scene.add(60.0, 60.0);
+  r.s.scene.add(62.0, 60.0);
+  r.wait_at({61.0, 61.7}, 4);
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 0);
+  EXPECT_EQ(t.returns_into_size[2], 0);
+  EXPECT_EQ(t.returning_aggregate_steps_by_size[2], 0);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // decided: it waited elsewhere
+}
+
+TEST(LeaveEpisodes, ComingBackAfterTheWindowIsNoReturn) {
+  ReturnScene r;
+  r.wait_at({21.0, 21.7}, static_cast<int>(kWindow));  // waits again at decision 34 > 1 + 30
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 0);
+  EXPECT_EQ(t.return_steps_by_size[3], 0);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // given up when the window passed
+}
+
+// The escape radius decides whether a leaver 4.5 from its nearest former member at its
+// timeout got out: yes within s = 4, no within an approach radius of 6 (Scene sees 6 far).
+TEST(LeaveEpisodes, TheEscapeRadiusDecidesWhetherALeaverIsHeld) {
+  for (const double radius : {Scene::kDetectionRadius, 6.0}) {
+    Stepper s{kWindow, radius};
+    s.scene.add(20.0, 20.0);
+    s.scene.add(22.0, 20.0);
+    const AgentId leaver = s.scene.add(21.0, 21.7);
+    s.step([&](auto& state) { state[leaver] = AgentState::Leave; });
+    s.scene.positions[leaver] = {21.0, 24.5};  // 4.5 from (20, 20) and (22, 20)
+    s.step([&](auto& state) { state[leaver] = AgentState::Go; });
+    EXPECT_EQ(s.episodes.tally().escapes_by_size[3], radius < 4.5 ? 1 : 0) << radius;
+  }
 }
 
 }  // namespace

@@ -91,10 +91,10 @@ TEST_F(RunPlotsTest, ASoysalRunAlsoGetsItsPartitions) {
   EXPECT_EQ(names_of(outcome),
             (std::vector<std::string>{"noa.png", "states.png", "sizes.png", "partitions.png"}));
   for (const auto& png : outcome.drawn) expect_plot_shows_data(png);
-  // The partition bars hold the simulation and both model variants.
+  // The partition bars hold the simulation, both paper variants and the returns variant.
   const CsvTable bars = read_csv(root_ / "soysal-plots" / "plots" / "partitions-bars.csv");
   EXPECT_EQ(bars.header, (std::vector<std::string>{"partition", "simulation", "model_original",
-                                                   "model_peripheral"}));
+                                                   "model_peripheral", "model_returns"}));
 }
 
 TEST_F(RunPlotsTest, NoaCsvHoldsTheReplicatesTheirMeanAndABandAroundIt) {

@@ -1,0 +1,91 @@
+#include "analysis/model_errors.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include "analysis/noa_error.hpp"
+#include "analysis/partition_comparison.hpp"
+#include "models/noise_floor.hpp"
+#include "output/atomic_file.hpp"
+
+namespace swarmagg {
+
+namespace {
+
+constexpr const char* kStochasticSuffix = "-stochastic";
+
+std::vector<ModelError> noa_errors(const std::filesystem::path& folder, const CsvTable& model) {
+  const std::map<std::string, double> floors = read_noise_floors(model, "bayindir", kNoaMetric);
+  std::vector<std::string> variants;
+  const std::filesystem::path series = folder / "model-timeseries";
+  if (!std::filesystem::is_directory(series)) return {};
+  for (const auto& entry : std::filesystem::directory_iterator(series)) {
+    const std::string name = entry.path().stem().string();
+    if (!name.starts_with("bayindir-") || name.ends_with(kStochasticSuffix)) continue;
+    variants.push_back(name.substr(std::string("bayindir-").size()));
+  }
+  std::sort(variants.begin(), variants.end());
+  const NoaSeries simulation = read_noa_series(folder / "timeseries.csv");
+  std::vector<ModelError> errors;
+  for (const std::string& variant : variants) {
+    const NoaSeries predicted = read_noa_series(series / ("bayindir-" + variant + ".csv"));
+    if (predicted.steps.empty()) continue;
+    const auto floor = floors.find(variant);
+    errors.push_back({kNoaMetric,
+                      {variant, noa_rmse(simulation, predicted),
+                       floor == floors.end() ? std::nullopt : std::optional(floor->second)}});
+  }
+  return errors;
+}
+
+}  // namespace
+
+std::map<std::string, double> read_noise_floors(const CsvTable& model_csv, const std::string& model,
+                                                const std::string& metric) {
+  const std::size_t name = model_csv.column("model"), variant = model_csv.column("variant"),
+                    quantity = model_csv.column("quantity"), value = model_csv.column("value");
+  const std::string wanted = std::string(kNoiseFloorQuantity) + metric;
+  std::map<std::string, double> floors;
+  for (std::size_t row = 0; row < model_csv.rows.size(); ++row) {
+    const auto& cells = model_csv.rows[row];
+    if (cells[name] == model && cells[quantity] == wanted)
+      floors[cells[variant]] = model_csv.number(row, value);
+  }
+  return floors;
+}
+
+std::vector<ModelError> run_model_errors(const std::filesystem::path& run_folder) {
+  if (!std::filesystem::exists(run_folder / "model.csv")) return {};
+  if (std::filesystem::exists(run_folder / "partitions.csv")) {
+    std::vector<ModelError> errors;
+    for (const VariantError& e : compare_partitions(run_folder).errors)
+      errors.push_back({kPartitionMetric, e});
+    return errors;
+  }
+  return noa_errors(run_folder, read_csv(run_folder / "model.csv"));
+}
+
+nlohmann::json model_errors_json(const std::vector<ModelError>& errors) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ModelError& e : errors) {
+    list.push_back({{"variant", e.error.variant},
+                    {"metric", e.metric},
+                    {"value", e.error.error},
+                    {"noise_floor", e.error.noise_floor ? nlohmann::json(*e.error.noise_floor)
+                                                        : nlohmann::json(nullptr)}});
+  }
+  return list;
+}
+
+void write_model_errors(const std::filesystem::path& run_folder) {
+  const std::filesystem::path file = run_folder / "summary.json";
+  nlohmann::json summary;
+  {
+    std::ifstream in(file);
+    summary = nlohmann::json::parse(in);
+  }
+  summary["model_errors"] = model_errors_json(run_model_errors(run_folder));
+  write_file_atomic(file, summary.dump(2) + "\n");
+}
+
+}  // namespace swarmagg

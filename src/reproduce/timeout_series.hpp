@@ -1,0 +1,48 @@
+#pragma once
+// The leave-timeout series of `reproduce` (docs/models-returns.md): the 10- and 20-agent
+// Soysal worlds run again with leave_timeout 10, 20, 30 and 50 tu, into
+// <out>/timeout-series/runs/<world>-timeout-<T>/, each compared with every partition model
+// variant beside its noise floor. Once leave_timeout x v exceeds the approach radius, leavers
+// no longer perceive the aggregate they left when the timeout ends: leaving stops being an
+// excursion, and the paper's variants can fit. <out>/timeout-series.csv holds the numbers,
+// <out>/plots/timeout-series.png each variant's error (and floor) against the timeout.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/partition_comparison.hpp"
+#include "analysis/run_stationarity.hpp"
+#include "plot/png_terminal.hpp"
+#include "rates/rate_rows.hpp"
+#include "reproduce/reproduce.hpp"
+
+namespace swarmagg {
+
+inline constexpr double kLeaveTimeouts[] = {10.0, 20.0, 30.0, 50.0};
+inline constexpr const char* kTimeoutWorlds[] = {"soysal-10-constant", "soysal-20-constant"};
+inline constexpr const char* kTimeoutFolder = "timeout-series";
+
+struct TimeoutPoint {
+  std::string world;  // the paper world it varies
+  int agents = 0;
+  double leave_timeout = 0.0;
+  double duration = 0.0;  // tu per replicate
+  int replicates = 0;
+  PartitionComparison comparison = {};
+  std::vector<RateRow> rates = {};
+  NoaTrend trend = {};
+  bool reused = false;
+  double wall_seconds = 0.0;
+};
+
+// Whether the options ask for the series (no --only, or an --only that names it).
+bool timeout_series_selected(const ReproduceOptions& options);
+
+std::vector<TimeoutPoint> run_timeout_series(const ReproduceOptions& options);
+
+std::string timeout_series_csv(const std::vector<TimeoutPoint>& points);
+
+void plot_timeout_series(const std::filesystem::path& plots, const PlotSize& size,
+                         const std::vector<TimeoutPoint>& points);
+
+}  // namespace swarmagg

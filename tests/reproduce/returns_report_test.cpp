@@ -1,0 +1,52 @@
+#include "reproduce/returns_report.hpp"
+
+#include <gtest/gtest.h>
+
+namespace swarmagg {
+namespace {
+
+RateRow counted(const std::string& term, int size, std::uint64_t events, double exposure) {
+  return {term, size, {.events = events, .exposure = exposure}, {}};
+}
+
+// A Soysal figure whose paper variant misses (10x its floor) and whose measured variant fits.
+FigureResult soysal_figure() {
+  FigureResult r;
+  r.figure = {.id = "fig26", .figures = "26-27", .title = "soysal", .worlds = {"soysal-10"}};
+  r.worlds.emplace_back();
+  r.worlds.back().name = "soysal-10";
+  r.worlds.back().controller.leave = true;
+  PartitionComparison c;
+  c.errors = {{"original", 0.8, 0.08}, {"peripheral", 0.6, 0.07}, {"measured", 0.15, 0.1}};
+  r.partitions = c;
+  r.rates = {counted("return", 3, 90, 100.0), counted("return", 4, 290, 300.0),
+             counted("return", 2, 1, 40.0), counted("join", 3, 100, 5.0),
+             counted("join_new", 3, 20, 4.0)};
+  return r;
+}
+
+TEST(ReturnsReport, PoolsReturnsFromAggregatesOfThreeOrMore) {
+  const ReturnSummary s = pooled_returns(soysal_figure().rates);
+  EXPECT_EQ(s.attempts, 400u);
+  EXPECT_EQ(s.returns, 380u);
+  EXPECT_DOUBLE_EQ(s.fraction(), 0.95);
+  EXPECT_DOUBLE_EQ(returning_share_of_joins(soysal_figure().rates), 0.8);
+}
+
+TEST(ReturnsReport, EveryErrorStandsBesideItsFloor) {
+  const std::string text = noise_floor_section({soysal_figure()}, {});
+  EXPECT_NE(text.find("original 0.8 / 0.08 (10x)"), std::string::npos) << text;
+  EXPECT_NE(text.find("measured 0.15 / 0.1 (1.5x)"), std::string::npos) << text;
+}
+
+TEST(ReturnsReport, WhyTheModelsMissFollowsTheNumbers) {
+  const std::string text = why_models_miss_section({soysal_figure()}, {});
+  EXPECT_NE(text.find("380 / 400 (0.95) LEAVE attempts"), std::string::npos) << text;
+  EXPECT_NE(text.find("80 % of all joins"), std::string::npos) << text;
+  EXPECT_NE(text.find("peripheral) is at 8.571x its floor (misses)"), std::string::npos) << text;
+  EXPECT_NE(text.find("1.5x its floor (fits)"), std::string::npos) << text;
+  EXPECT_NE(text.find("in 1 of 1 comparisons"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace swarmagg
