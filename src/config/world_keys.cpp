@@ -334,7 +334,7 @@ std::vector<WorldKey> build_keys() {
       described(real_key(
                     "controller.tumble",
                     [](WorldSpec& w) -> double& { return w.controller.tumble; }, kProbability),
-                "collision: probability per step that an agent draws a new heading"));
+                "collision and Soysal searchers: probability per step of drawing a new heading"));
   keys.push_back(described(
       bool_key("controller.compaction.enabled",
                [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }),
