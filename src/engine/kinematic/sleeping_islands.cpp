@@ -1,0 +1,122 @@
+#include "engine/kinematic/sleeping_islands.hpp"
+
+#include <algorithm>
+#include <bit>
+
+namespace swarmagg {
+namespace {
+
+// Bit for bit, so that -0.0 and +0.0 differ (a position's bits are what a sleeper keeps).
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+bool same_bits(Vec2 a, Vec2 b) {
+  return same_bits(a.x, b.x) & same_bits(a.y, b.y);
+}
+
+bool same_command(const MotionCommand& a, const MotionCommand& b) {
+  return same_bits(a.velocity, b.velocity) & (a.halt_on == b.halt_on) &
+         (a.blocked_by == b.blocked_by) & (a.repelled_by == b.repelled_by);
+}
+
+}  // namespace
+
+void SleepingIslands::reset(std::size_t agents) {
+  last_position_.assign(agents, Vec2{});
+  last_command_.assign(agents, MotionCommand{});
+  last_signal_.assign(agents, Signal{0});
+  rest_.assign(agents, 0);
+  parent_.assign(agents, 0u);
+  size_.assign(agents, 0u);
+  root_.assign(agents, 0u);
+  last_root_.assign(agents, 0u);
+  last_size_.assign(agents, 0u);
+  island_sleeps_.assign(agents, 0);
+  asleep_.assign(agents, 0);
+  sleepers_.clear();
+  known_ = false;
+}
+
+void SleepingIslands::forget() {
+  for (const std::uint32_t agent : sleepers_) asleep_[agent] = 0;
+  sleepers_.clear();
+  known_ = false;
+}
+
+bool SleepingIslands::at_rest(std::uint32_t agent, Vec2 position, const MotionCommand& command,
+                              Signal signal) {
+  const bool rest = same_bits(position, last_position_[agent]) &
+                    same_command(command, last_command_[agent]) & (signal == last_signal_[agent]);
+  last_position_[agent] = position;
+  last_command_[agent] = command;
+  last_signal_[agent] = signal;
+  return rest;
+}
+
+// Union-find linking the higher root under the lower, so that each island's root is its
+// lowest member and, in increasing order, each agent finds its root through its parent's.
+void SleepingIslands::label_islands(std::size_t agents, std::span<const CandidatePair> pairs) {
+  std::uint32_t* parent = parent_.data();
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    parent[a] = a;
+    size_[a] = 1;
+  }
+  auto find = [parent](std::uint32_t a) {
+    while (parent[a] != a) {
+      parent[a] = parent[parent[a]];
+      a = parent[a];
+    }
+    return a;
+  };
+  for (const CandidatePair& pair : pairs) {
+    const std::uint32_t a = find(pair.i), b = find(pair.j);
+    if (a == b) continue;
+    const std::uint32_t low = std::min(a, b), high = std::max(a, b);
+    parent[high] = low;
+    size_[low] += size_[high];
+  }
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    root_[a] = parent[a] == a ? a : root_[parent[a]];
+  }
+}
+
+void SleepingIslands::decide(std::span<const Vec2> positions,
+                             std::span<const MotionCommand> commands,
+                             std::span<const Signal> signals, std::span<const CandidatePair> pairs,
+                             double reach, std::span<const std::uint32_t> met) {
+  const std::size_t agents = positions.size();
+  if (last_position_.size() != agents) reset(agents);
+  const bool comparable = known_ && reach == reach_;
+  forget();
+  std::size_t resting = 0;
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    rest_[a] = at_rest(a, positions[a], commands[a], signals[a]);
+    resting += rest_[a];
+  }
+  for (const std::uint32_t agent : met) {
+    resting -= rest_[agent];
+    rest_[agent] = 0;
+  }
+  reach_ = reach;
+  known_ = resting > 0;
+  if (!known_) return;  // nobody can sleep now, nor be compared with in the next step
+  label_islands(agents, pairs);
+  for (std::uint32_t a = 0; a < agents; ++a) island_sleeps_[a] = comparable;
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    const std::uint32_t root = root_[a];
+    const bool same_island = (last_root_[a] == root) & (last_size_[a] == size_[root]);
+    island_sleeps_[root] &= static_cast<std::uint8_t>(rest_[a] & same_island);
+  }
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    const std::uint32_t root = root_[a];
+    if (island_sleeps_[root]) {
+      asleep_[a] = 1;
+      sleepers_.push_back(a);
+    }
+    last_root_[a] = root;
+    last_size_[a] = size_[root];
+  }
+}
+
+}  // namespace swarmagg
