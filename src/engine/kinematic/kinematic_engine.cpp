@@ -141,9 +141,13 @@ class KinematicEngine final : public Engine {
     threads_.run(tasks, move);
     if (patch_bent) move_bent_from_starts(*motion);
     keep_sleepers_in_place();
+    const double speed = std::max(nominal_speed_, fastest);
+    // When no agent moved and the radii stay, the pairs and what each agent perceives are
+    // those found last: a world at rest costs no search and no lists.
+    if (motion != nullptr && speed == pairs_speed_ && islands_.none_moved(positions_)) return;
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
-    rebuild_neighbourhood(std::max(nominal_speed_, fastest), true, fastest * limits_.dt);
+    rebuild_neighbourhood(speed, true, fastest * limits_.dt);
   }
 
   // The commands the guarded motion resolves: sleepers stand (what they would do anyway), so

@@ -38,6 +38,15 @@ void SleepingIslands::reset(std::size_t agents) {
   known_ = false;
 }
 
+bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
+  if (positions.size() != last_position_.size()) return false;
+  bool same = true;
+  for (std::size_t a = 0; a < positions.size(); ++a) {
+    same &= same_bits(positions[a], last_position_[a]);
+  }
+  return same;
+}
+
 void SleepingIslands::forget() {
   for (const std::uint32_t agent : sleepers_) asleep_[agent] = 0;
   sleepers_.clear();

@@ -46,6 +46,8 @@ class SleepingIslands {
   std::span<const std::uint32_t> sleepers() const { return sleepers_; }
   // Each agent's position at the step's start (what a sleeper keeps).
   Vec2 start_of(std::uint32_t agent) const { return last_position_[agent]; }
+  // Whether every agent is still where the step started, bit for bit.
+  bool none_moved(std::span<const Vec2> positions) const;
 
  private:
   void reset(std::size_t agents);
