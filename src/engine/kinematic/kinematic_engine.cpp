@@ -76,11 +76,14 @@ class KinematicEngine final : public Engine {
                   std::span<const Signal> signals) override {
     const CommandSummary summary = summarise(commands);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
-    if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false, 0.0);
+    if (summary.fastest > pairs_speed_) {
+      rebuild_neighbourhood(summary.fastest, false, 0.0);
+      pairs_kept_ = false;
+    }
     StepReport report;
     if (summary.guarded) {
       islands_.decide(positions_, commands, signals, pairs_.candidates(), pairs_speed_,
-                      motion_.met_agents());
+                      motion_.met_agents(), pairs_kept_);
       const std::span<const MotionCommand> resolved = without_sleepers(commands);
       report.encounters =
           motion_.resolve(pairs_.candidates(), resolved, signals, limits_, positions_);
@@ -144,7 +147,8 @@ class KinematicEngine final : public Engine {
     const double speed = std::max(nominal_speed_, fastest);
     // When no agent moved and the radii stay, the pairs and what each agent perceives are
     // those found last: a world at rest costs no search and no lists.
-    if (motion != nullptr && speed == pairs_speed_ && islands_.none_moved(positions_)) return;
+    pairs_kept_ = motion != nullptr && speed == pairs_speed_ && islands_.none_moved(positions_);
+    if (pairs_kept_) return;
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
     rebuild_neighbourhood(speed, true, fastest * limits_.dt);
@@ -298,6 +302,7 @@ class KinematicEngine final : public Engine {
   AgentArray<MotionCommand> resolved_commands_;
   std::vector<std::uint8_t> sleepers_reflections_;
   bool sleep_checks_ = false;
+  bool pairs_kept_ = false;    // the last step found no new pairs: nothing moved
   GuardedMotion full_motion_;  // the check's resolution in full
   std::optional<std::uint32_t> sleep_violation_;
   std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed

@@ -93,7 +93,7 @@ void SleepingIslands::label_islands(std::size_t agents, std::span<const Candidat
 void SleepingIslands::decide(std::span<const Vec2> positions,
                              std::span<const MotionCommand> commands,
                              std::span<const Signal> signals, std::span<const CandidatePair> pairs,
-                             double reach, std::span<const std::uint32_t> met) {
+                             double reach, std::span<const std::uint32_t> met, bool same_pairs) {
   const std::size_t agents = positions.size();
   if (last_position_.size() != agents) reset(agents);
   const bool comparable = known_ && reach == reach_;
@@ -110,7 +110,8 @@ void SleepingIslands::decide(std::span<const Vec2> positions,
   reach_ = reach;
   known_ = resting > 0;
   if (!known_) return;  // nobody can sleep now, nor be compared with in the next step
-  label_islands(agents, pairs);
+  // The same pairs make the same islands: last step's labels stand (root_ still holds them).
+  if (!(comparable && same_pairs)) label_islands(agents, pairs);
   for (std::uint32_t a = 0; a < agents; ++a) island_sleeps_[a] = comparable;
   for (std::uint32_t a = 0; a < agents; ++a) {
     const std::uint32_t root = root_[a];

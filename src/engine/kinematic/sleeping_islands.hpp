@@ -34,10 +34,11 @@ class SleepingIslands {
  public:
   // Decides who sleeps in the step about to be resolved from `positions` (its start) with
   // `commands` and `signals`, over `pairs` found with pair reach `reach`. `met`: the agents
-  // that took part in an encounter during the last step.
+  // that took part in an encounter during the last step. `same_pairs`: the pairs are those
+  // of the last step (nothing moved, the reach stayed), so the islands are too.
   void decide(std::span<const Vec2> positions, std::span<const MotionCommand> commands,
               std::span<const Signal> signals, std::span<const CandidatePair> pairs, double reach,
-              std::span<const std::uint32_t> met);
+              std::span<const std::uint32_t> met, bool same_pairs);
   // Forgets everything: in the next step nobody sleeps (a step resolved without guards).
   void forget();
 
