@@ -83,13 +83,23 @@ class KinematicEngine final : public Engine {
     StepReport report;
     if (summary.guarded) {
       islands_.decide(positions_, commands, signals, pairs_.candidates(), pairs_speed_,
-                      motion_.met_agents(), pairs_kept_);
+                      met_last_step(), pairs_kept_);
+      // Everybody asleep: nothing moves, nothing meets, the pairs and lists stay (unless the
+      // radii changed). With checks on, the step is resolved as usual, to be checked.
+      resolved_last_ = islands_.sleepers().size() < positions_.size() || sleep_checks_;
+      if (!resolved_last_) {
+        const double speed = std::max(nominal_speed_, summary.fastest);
+        pairs_kept_ = speed == pairs_speed_;
+        if (!pairs_kept_) rebuild_neighbourhood(speed, true, 0.0);
+        return report;
+      }
       const std::span<const MotionCommand> resolved = without_sleepers(commands);
       report.encounters =
           motion_.resolve(pairs_.candidates(), resolved, signals, limits_, positions_);
       if (sleep_checks_) check_sleepers(commands, signals, report.encounters);
       move_and_rebuild(resolved, &motion_, summary.fastest);
     } else {
+      resolved_last_ = false;
       islands_.forget();
       report.encounters = GuardedMotion::count_encounters(pairs_.candidates(), commands, limits_);
       move_and_rebuild(commands, nullptr, summary.fastest);
@@ -152,6 +162,11 @@ class KinematicEngine final : public Engine {
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
     rebuild_neighbourhood(speed, true, fastest * limits_.dt);
+  }
+
+  // The agents the last step's guarded motion saw meet (none when it was not resolved).
+  std::span<const std::uint32_t> met_last_step() const {
+    return resolved_last_ ? motion_.met_agents() : std::span<const std::uint32_t>{};
   }
 
   // The commands the guarded motion resolves: sleepers stand (what they would do anyway), so
@@ -302,8 +317,9 @@ class KinematicEngine final : public Engine {
   AgentArray<MotionCommand> resolved_commands_;
   std::vector<std::uint8_t> sleepers_reflections_;
   bool sleep_checks_ = false;
-  bool pairs_kept_ = false;    // the last step found no new pairs: nothing moved
-  GuardedMotion full_motion_;  // the check's resolution in full
+  bool resolved_last_ = false;  // the last step ran the guarded motion
+  bool pairs_kept_ = false;     // the last step found no new pairs: nothing moved
+  GuardedMotion full_motion_;   // the check's resolution in full
   std::optional<std::uint32_t> sleep_violation_;
   std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed
 };
