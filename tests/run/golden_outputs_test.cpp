@@ -87,17 +87,24 @@ std::vector<GoldenWorld> golden_worlds() {
   };
 }
 
-TEST(GoldenOutputs, PaperWorldsGiveTheRecordedOutputs) {
-  for (const GoldenWorld& world : golden_worlds()) {
+// Runs each world (with the shared overrides) and compares `hash_of` its result with the
+// recorded hash.
+void expect_recorded(const std::vector<GoldenWorld>& worlds,
+                     std::uint64_t (*hash_of)(const RunResult&)) {
+  for (const GoldenWorld& world : worlds) {
     std::vector<std::string> overrides = kShared;
     overrides.insert(overrides.end(), world.overrides.begin(), world.overrides.end());
     const WorldSpec spec =
         load_world(std::string(SWARMAGG_SOURCE_DIR) + "/" + world.file, overrides);
-    const std::uint64_t hash = outputs_hash(run_world(spec, RunOptions{}));
+    const std::uint64_t hash = hash_of(run_world(spec, RunOptions{}));
     std::string shown;
     for (const std::string& o : world.overrides) shown += " " + o;
     EXPECT_EQ(hash, world.hash) << world.file << shown << ": 0x" << std::hex << hash;
   }
+}
+
+TEST(GoldenOutputs, PaperWorldsGiveTheRecordedOutputs) {
+  expect_recorded(golden_worlds(), outputs_hash);
 }
 
 // The leave episodes' tally (rates.csv and the reproduce report read it) beside the outputs.
@@ -146,16 +153,7 @@ std::vector<GoldenWorld> golden_compacted_paper_worlds() {
 }
 
 TEST(GoldenOutputs, CompactedPaperWorldsGiveTheRecordedOutputs) {
-  for (const GoldenWorld& world : golden_compacted_paper_worlds()) {
-    std::vector<std::string> overrides = kShared;
-    overrides.insert(overrides.end(), world.overrides.begin(), world.overrides.end());
-    const WorldSpec spec =
-        load_world(std::string(SWARMAGG_SOURCE_DIR) + "/" + world.file, overrides);
-    const std::uint64_t hash = outputs_and_leaves_hash(run_world(spec, RunOptions{}));
-    std::string shown;
-    for (const std::string& o : world.overrides) shown += " " + o;
-    EXPECT_EQ(hash, world.hash) << world.file << shown << ": 0x" << std::hex << hash;
-  }
+  expect_recorded(golden_compacted_paper_worlds(), outputs_and_leaves_hash);
 }
 
 }  // namespace
