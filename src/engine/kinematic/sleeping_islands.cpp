@@ -15,6 +15,13 @@ bool same_bits(Vec2 a, Vec2 b) {
   return same_bits(a.x, b.x) & same_bits(a.y, b.y);
 }
 
+bool is_zero(Vec2 v) {
+  return (v.x == 0.0) & (v.y == 0.0);
+}
+
+// Islands are labelled only when at least one agent in this many presses at rest.
+constexpr std::size_t kPressersPerLabelling = 16;
+
 bool same_command(const MotionCommand& a, const MotionCommand& b) {
   return same_bits(a.velocity, b.velocity) & (a.halt_on == b.halt_on) &
          (a.blocked_by == b.blocked_by) & (a.repelled_by == b.repelled_by);
@@ -36,6 +43,7 @@ void SleepingIslands::reset(std::size_t agents) {
   asleep_.assign(agents, 0);
   sleepers_.clear();
   known_ = false;
+  recorded_ = false;
 }
 
 bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
@@ -47,10 +55,15 @@ bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
   return same;
 }
 
-void SleepingIslands::forget() {
+void SleepingIslands::clear_sleepers() {
   for (const std::uint32_t agent : sleepers_) asleep_[agent] = 0;
   sleepers_.clear();
+}
+
+void SleepingIslands::forget() {
+  clear_sleepers();
   known_ = false;
+  recorded_ = false;
 }
 
 bool SleepingIslands::at_rest(std::uint32_t agent, Vec2 position, const MotionCommand& command,
@@ -96,20 +109,29 @@ void SleepingIslands::decide(std::span<const Vec2> positions,
                              double reach, std::span<const std::uint32_t> met, bool same_pairs) {
   const std::size_t agents = positions.size();
   if (last_position_.size() != agents) reset(agents);
-  const bool comparable = known_ && reach == reach_;
-  forget();
-  std::size_t resting = 0;
+  const bool same_reach = recorded_ && reach == reach_;
+  const bool comparable = known_ && same_reach;
+  clear_sleepers();
+  std::size_t resting = 0, resting_pressers = 0;
   for (std::uint32_t a = 0; a < agents; ++a) {
-    rest_[a] = at_rest(a, positions[a], commands[a], signals[a]);
-    resting += rest_[a];
+    const bool rest = at_rest(a, positions[a], commands[a], signals[a]);
+    rest_[a] = rest;
+    resting += rest;
+    resting_pressers += rest & !is_zero(commands[a].velocity);
   }
   for (const std::uint32_t agent : met) {
     resting -= rest_[agent];
     rest_[agent] = 0;
   }
   reach_ = reach;
-  known_ = resting > 0;
-  if (!known_) return;  // nobody can sleep now, nor be compared with in the next step
+  recorded_ = true;
+  known_ = false;
+  // The whole world at rest on the same pairs is one closed island: all of it sleeps.
+  if (resting == agents && same_reach && same_pairs) return everybody_sleeps(agents);
+  // Labelling costs a pass over the pairs; it pays when it may spare the contact responses
+  // of enough agents pressing at rest (a standing agent costs the guarded motion little).
+  if (resting_pressers * kPressersPerLabelling < agents) return;
+  known_ = true;
   // The same pairs make the same islands: last step's labels stand (root_ still holds them).
   if (!(comparable && same_pairs)) label_islands(agents, pairs);
   for (std::uint32_t a = 0; a < agents; ++a) island_sleeps_[a] = comparable;
@@ -126,6 +148,13 @@ void SleepingIslands::decide(std::span<const Vec2> positions,
     }
     last_root_[a] = root;
     last_size_[a] = size_[root];
+  }
+}
+
+void SleepingIslands::everybody_sleeps(std::size_t agents) {
+  for (std::uint32_t a = 0; a < agents; ++a) {
+    asleep_[a] = 1;
+    sleepers_.push_back(a);
   }
 }
 

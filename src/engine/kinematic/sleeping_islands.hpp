@@ -18,7 +18,10 @@
 // the reach. Sleepers are then left out of the guarded motion (their velocity is taken as
 // zero, which is what they would do) and keep their positions bit for bit.
 //
-// Islands are found by union-find over the candidate pairs, only when some agent is at rest.
+// Islands are found by union-find over the candidate pairs, only when enough agents press
+// at rest (moving agents pushing into bodies that halt them: their contact responses are
+// what sleep spares; a standing agent costs the guarded motion little). A whole world at rest
+// on the same pairs sleeps without labelling: it is one closed island.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -56,7 +59,11 @@ class SleepingIslands {
   bool at_rest(std::uint32_t agent, Vec2 position, const MotionCommand& command, Signal signal);
   void label_islands(std::size_t agents, std::span<const CandidatePair> pairs);
 
-  bool known_ = false;  // the last step's inputs and islands were recorded
+  void clear_sleepers();
+  void everybody_sleeps(std::size_t agents);
+
+  bool recorded_ = false;  // the last step's inputs were recorded
+  bool known_ = false;     // and its islands labelled
   double reach_ = -1.0;
   AgentArray<Vec2> last_position_;
   AgentArray<MotionCommand> last_command_;
