@@ -142,7 +142,7 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
 // A waiting agent's view reads only the neighbour lists, the states the decision starts from,
 // the aggregate labels and its partner: while all of these are the ones the views were
 // computed from, so are the views (a packed aggregate at rest reads no list). Otherwise they
-// are computed anew, from what is remembered here.
+// are computed anew, and remembered with what they were read from.
 bool AggregationController::views_stand_for(const ControllerInput& input, const SwarmState& swarm) {
   const std::span<const std::int32_t> labels = input.aggregates.aggregate_of;
   const bool stand =
@@ -151,7 +151,14 @@ bool AggregationController::views_stand_for(const ControllerInput& input, const 
       std::ranges::equal(views_partners_, swarm.partner);
   if (stand) return true;
   views_.resize(swarm.size());
-  views_lists_ = &input.neighbours;
+  // Remembering costs copies; they pay only in a world at rest, whose lists stayed since the
+  // last decision. In a moving world the views are forgotten instead.
+  const bool lists_stayed =
+      seen_lists_ == &input.neighbours && seen_generation_ == input.neighbours.generation();
+  seen_lists_ = &input.neighbours;
+  seen_generation_ = input.neighbours.generation();
+  views_lists_ = lists_stayed ? &input.neighbours : nullptr;
+  if (!lists_stayed) return false;
   views_generation_ = input.neighbours.generation();
   views_states_.assign(previous_.begin(), previous_.end());
   views_labels_.assign(labels.begin(), labels.end());

@@ -88,6 +88,8 @@ class AggregationController final : public Controller {
   std::vector<AgentState> views_states_;
   std::vector<std::int32_t> views_labels_;
   std::vector<std::int32_t> views_partners_;
+  const NeighbourLists* seen_lists_ = nullptr;  // the lists of the last decision
+  std::uint64_t seen_generation_ = 0;
   // Agents by the state they start the decision in (index order).
   IndexList searchers_;
   IndexList waiters_;

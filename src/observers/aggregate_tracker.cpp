@@ -14,7 +14,14 @@ bool AggregateTracker::same_links(const NeighbourLists& neighbours, const SwarmS
                     std::ranges::equal(states_, swarm.state) &&
                     (!partners || std::ranges::equal(partners_, swarm.partner));
   if (same) return true;
-  lists_ = &neighbours;
+  // Remembering costs copies, which pay only in a world at rest (lists that stayed since the
+  // last update); in a moving world nothing is remembered.
+  const bool lists_stayed =
+      seen_lists_ == &neighbours && seen_generation_ == neighbours.generation();
+  seen_lists_ = &neighbours;
+  seen_generation_ = neighbours.generation();
+  lists_ = lists_stayed ? &neighbours : nullptr;
+  if (!lists_stayed) return false;
   generation_ = neighbours.generation();
   links_ = links;
   radius_ = radius;

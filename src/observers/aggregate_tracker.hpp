@@ -69,6 +69,8 @@ class AggregateTracker {
   double radius_ = 0.0;
   std::vector<AgentState> states_;
   std::vector<std::int32_t> partners_;
+  const NeighbourLists* seen_lists_ = nullptr;  // the lists of the last update
+  std::uint64_t seen_generation_ = 0;
 };
 
 }  // namespace swarmagg

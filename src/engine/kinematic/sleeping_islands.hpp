@@ -21,7 +21,8 @@
 // Islands are found by union-find over the candidate pairs, only when enough agents press
 // at rest (moving agents pushing into bodies that halt them: their contact responses are
 // what sleep spares; a standing agent costs the guarded motion little). A whole world at rest
-// on the same pairs sleeps without labelling: it is one closed island.
+// on the same pairs sleeps without labelling: it is one closed island. A moving world (too
+// few agents pressing at rest) is looked at only every few steps.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -64,6 +65,7 @@ class SleepingIslands {
 
   bool recorded_ = false;  // the last step's inputs were recorded
   bool known_ = false;     // and its islands labelled
+  int steps_to_skip_ = 0;  // steps left in which a moving world is not looked at
   double reach_ = -1.0;
   AgentArray<Vec2> last_position_;
   AgentArray<MotionCommand> last_command_;
