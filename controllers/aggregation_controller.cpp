@@ -28,17 +28,6 @@ void AggregationController::update_leaving(std::uint32_t agent, const Controller
   swarm.heading[agent] = random_heading(rng, input.step, agent);
 }
 
-namespace {
-
-// What a waiting agent perceives within s, read in one pass over its list.
-struct WaitingView {
-  int perceived = 0;          // agents within s
-  bool sees_waiting = false;  // one of them waited
-  Vec2 force;                 // spring force of the waiting members among them (compaction)
-};
-
-}  // namespace
-
 // Each agent that starts the decision waiting, in index order (leave events are counted in
 // that order). Its neighbour list is read once, for isolation, the perceived count and the
 // compaction force; the force applies if it goes on waiting, as nothing later in the decision
@@ -97,9 +86,11 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   if (movers_.size() != swarm.size()) movers_.resize(swarm.size());
   Mover* movers = movers_.data();
   std::size_t mover_count = 0;
+  const bool views_stand = views_stand_for(input, swarm);
   for (const std::uint32_t agent : waiters_) {
     const std::int32_t partner = swarm.partner[agent];
-    const WaitingView view = look_around(agent, partner);
+    if (!views_stand) views_[agent] = look_around(agent, partner);
+    const WaitingView view = views_[agent];
     // A pair dissolves when a partner stops waiting (docs/controllers.md): a waiting agent that
     // stays (isolated_wait: stay) must not keep the link, or the partner's next pair would be
     // linked to it too, making one aggregate of three under join: false.
@@ -146,6 +137,33 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
     }
   }
   mover_count_ = mover_count;
+}
+
+// A waiting agent's view reads only the neighbour lists, the states the decision starts from,
+// the aggregate labels and its partner: while all of these are the ones the views were
+// computed from, so are the views (a packed aggregate at rest reads no list). Otherwise they
+// are computed anew, and remembered with what they were read from.
+bool AggregationController::views_stand_for(const ControllerInput& input, const SwarmState& swarm) {
+  const std::span<const std::int32_t> labels = input.aggregates.aggregate_of;
+  const bool stand =
+      views_lists_ == &input.neighbours && views_generation_ == input.neighbours.generation() &&
+      std::ranges::equal(views_states_, previous_) && std::ranges::equal(views_labels_, labels) &&
+      std::ranges::equal(views_partners_, swarm.partner);
+  if (stand) return true;
+  views_.resize(swarm.size());
+  // Remembering costs copies; they pay only in a world at rest, whose lists stayed since the
+  // last decision. In a moving world the views are forgotten instead.
+  const bool lists_stayed =
+      seen_lists_ == &input.neighbours && seen_generation_ == input.neighbours.generation();
+  seen_lists_ = &input.neighbours;
+  seen_generation_ = input.neighbours.generation();
+  views_lists_ = lists_stayed ? &input.neighbours : nullptr;
+  if (!lists_stayed) return false;
+  views_generation_ = input.neighbours.generation();
+  views_states_.assign(previous_.begin(), previous_.end());
+  views_labels_.assign(labels.begin(), labels.end());
+  views_partners_.assign(swarm.partner.begin(), swarm.partner.end());
+  return false;
 }
 
 // Each searcher's list is read once: it joins the first waiting agent it perceives within s

@@ -42,6 +42,13 @@ class AggregationController final : public Controller {
     std::uint32_t b;
   };
 
+  // What a waiting agent perceives within s, read in one pass over its list.
+  struct WaitingView {
+    int perceived = 0;          // agents within s
+    bool sees_waiting = false;  // one of them waited
+    Vec2 force;                 // spring force of the waiting members among them (compaction)
+  };
+
   struct Mover {
     std::uint32_t agent;
     Vec2 force;  // the net spring force on it
@@ -52,6 +59,7 @@ class AggregationController final : public Controller {
 
   void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
                       const CounterRng& rng);
+  bool views_stand_for(const ControllerInput& input, const SwarmState& swarm);
   void update_waiting(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
                       EventCounts& events);
   template <bool kJoin, bool kCompaction>
@@ -74,6 +82,15 @@ class AggregationController final : public Controller {
   // (compaction); the rest stand. Kept at full length, like IndexList.
   std::vector<Mover> movers_;
   std::size_t mover_count_ = 0;
+  // The waiting agents' views, by agent, and what they were computed from.
+  std::vector<WaitingView> views_;
+  const NeighbourLists* views_lists_ = nullptr;
+  std::uint64_t views_generation_ = 0;
+  std::vector<AgentState> views_states_;
+  std::vector<std::int32_t> views_labels_;
+  std::vector<std::int32_t> views_partners_;
+  const NeighbourLists* seen_lists_ = nullptr;  // the lists of the last decision
+  std::uint64_t seen_generation_ = 0;
   // Agents by the state they start the decision in (index order).
   IndexList searchers_;
   IndexList waiters_;

@@ -63,4 +63,15 @@ KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budge
   return {n, plan.warmup_steps, plan.steps, plan.replicates, best, best / n * spec.engine.dt};
 }
 
+KinematicBenchResult bench_world_run(const WorldSpec& spec, double budget) {
+  const int n = spec.robots.count;
+  const std::int64_t steps = std::max<std::int64_t>(10000, std::llround(budget / n));
+  Replicate replicate(spec, 0);
+  const double start = thread_cpu_seconds();
+  for (std::int64_t step = 0; step < steps; ++step) replicate.step();
+  const double seconds = thread_cpu_seconds() - start;
+  const double rate = static_cast<double>(n) * static_cast<double>(steps) / seconds;
+  return {n, 0, steps, 1, rate, rate / n * spec.engine.dt};
+}
+
 }  // namespace swarmagg

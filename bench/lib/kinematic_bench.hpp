@@ -34,4 +34,9 @@ WorldSpec bench_world(int n, BenchScenario scenario);
 KinematicBenchResult bench_kinematic(int n, BenchScenario scenario, double budget, int repeats = 3,
                                      int threads = 1);
 
+// A world as it runs: its first replicate from t = 0 for budget / N steps (at least 10^4),
+// whole steps timed on one thread, nothing warmed up (a paper Soysal world spends most of a
+// run with its agents in aggregates at rest, which is what this measures).
+KinematicBenchResult bench_world_run(const WorldSpec& spec, double budget);
+
 }  // namespace swarmagg

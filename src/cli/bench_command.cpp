@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "bench/lib/box2d_bench.hpp"
@@ -8,6 +10,7 @@
 #include "bench/lib/machine_info.hpp"
 #include "bench/lib/render_timing.hpp"
 #include "cli/commands.hpp"
+#include "config/world_loader.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -15,7 +18,18 @@ namespace {
 struct BenchOptions {
   bool json = false;
   bool quick = false;
+  std::string worlds = "worlds/paper";
+  std::vector<std::string> cases;  // empty: all
 };
+
+// The paper's Soysal worlds the bench runs as they are (kinematic_soysal).
+const std::vector<std::string> kSoysalWorlds = {"soysal-5-constant", "soysal-10-constant",
+                                                "soysal-20-constant"};
+
+bool wanted(const BenchOptions& options, const std::string& name) {
+  return options.cases.empty() ||
+         std::find(options.cases.begin(), options.cases.end(), name) != options.cases.end();
+}
 
 // Agent-steps timed per size and repeat, so every size costs about the same.
 double budget_for(bool quick) {
@@ -73,20 +87,58 @@ nlohmann::json box2d_series(bool quick, bool verbose) {
   return series;
 }
 
+// Each world is loaded before any is timed, so that a missing one fails at once.
+nlohmann::json soysal_series(const BenchOptions& options, bool verbose) {
+  std::vector<WorldSpec> worlds;
+  for (const std::string& name : kSoysalWorlds) {
+    worlds.push_back(load_world(options.worlds + "/" + name + ".yaml"));
+  }
+  nlohmann::json series = nlohmann::json::array();
+  for (std::size_t k = 0; k < worlds.size(); ++k) {
+    const auto r = bench_world_run(worlds[k], budget_for(options.quick));
+    series.push_back({{"world", kSoysalWorlds[k]},
+                      {"n", r.n},
+                      {"steps", r.steps},
+                      {"steps_per_s", r.agent_steps_per_s / r.n},
+                      {"ns_per_agent_step", 1e9 / r.agent_steps_per_s},
+                      {"agent_steps_per_s", r.agent_steps_per_s},
+                      {"real_time_factor", r.real_time_factor}});
+    if (verbose) {
+      std::fprintf(stderr, "  %-19s %8lld steps: %6.2f M agent-steps/s (%5.1f ns each)\n",
+                   kSoysalWorlds[k].c_str(), static_cast<long long>(r.steps),
+                   r.agent_steps_per_s / 1e6, 1e9 / r.agent_steps_per_s);
+    }
+  }
+  return series;
+}
+
 int bench_command(const BenchOptions& options) {
   const bool verbose = !options.json;
   nlohmann::json report;
-  if (verbose) std::fprintf(stderr, "kinematic, worst case (ghost collisions), one thread:\n");
-  report["kinematic"] = kinematic_series(BenchScenario::GhostWorstCase, options.quick, verbose);
-  if (verbose) std::fprintf(stderr, "kinematic, Bayindir full model p = 0.001, one thread:\n");
-  report["kinematic_bayindir"] =
-      kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
-  if (verbose) std::fprintf(stderr, "box2d engine vs bare Box2D:\n");
-  report["box2d"] = box2d_series(options.quick, verbose);
-  report["render_ms_per_frame"] = render_ms_per_frame(1000, 800, 800, options.quick ? 5 : 30);
-  if (verbose) {
-    std::fprintf(stderr, "render: %.1f ms per 800x800 frame with 1000 agents (drawing only)\n",
-                 report["render_ms_per_frame"].get<double>());
+  if (wanted(options, "soysal")) {
+    if (verbose)
+      std::fprintf(stderr, "kinematic, the paper's Soysal worlds from t = 0, one thread:\n");
+    report["kinematic_soysal"] = soysal_series(options, verbose);
+  }
+  if (wanted(options, "ghost")) {
+    if (verbose) std::fprintf(stderr, "kinematic, worst case (ghost collisions), one thread:\n");
+    report["kinematic"] = kinematic_series(BenchScenario::GhostWorstCase, options.quick, verbose);
+  }
+  if (wanted(options, "bayindir")) {
+    if (verbose) std::fprintf(stderr, "kinematic, Bayindir full model p = 0.001, one thread:\n");
+    report["kinematic_bayindir"] =
+        kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
+  }
+  if (wanted(options, "box2d")) {
+    if (verbose) std::fprintf(stderr, "box2d engine vs bare Box2D:\n");
+    report["box2d"] = box2d_series(options.quick, verbose);
+  }
+  if (wanted(options, "render")) {
+    report["render_ms_per_frame"] = render_ms_per_frame(1000, 800, 800, options.quick ? 5 : 30);
+    if (verbose) {
+      std::fprintf(stderr, "render: %.1f ms per 800x800 frame with 1000 agents (drawing only)\n",
+                   report["render_ms_per_frame"].get<double>());
+    }
   }
   report["machine"] = machine_info();
   if (options.json) std::cout << report.dump(2) << "\n";
@@ -101,6 +153,12 @@ void add_bench_command(CLI::App& app, Action& action) {
       "bench", "Measure throughput: kinematic and Box2D engines, rendering (docs/performance.md)");
   command->add_flag("--json", options->json, "Print one JSON object (for scripts)");
   command->add_flag("--quick", options->quick, "Fewer steps per size (same sizes)");
+  command->add_option("--worlds", options->worlds,
+                      "Folder of the paper worlds (default worlds/paper)");
+  command
+      ->add_option("--case", options->cases,
+                   "Only these cases (repeatable): soysal, ghost, bayindir, box2d, render")
+      ->check(CLI::IsMember({"soysal", "ghost", "bayindir", "box2d", "render"}));
   command->callback([options, &action] { action = [options] { return bench_command(*options); }; });
 }
 

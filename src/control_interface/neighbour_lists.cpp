@@ -137,6 +137,7 @@ void NeighbourLists::close_agent(AgentId agent) {
 // prefetches are some). The passes work through local pointers: through the members, every
 // store could alias them, as far as the compiler knows, and force reloads.
 void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs) {
+  ++generation_;
   begin_.assign(agent_count + 1, 0);
   pairs_.resize(pairs.size());
   crowded_.resize(agent_count + 1);  // every agent once, plus the slot written and not counted

@@ -33,6 +33,7 @@ class NeighbourLists {
   void assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs);
 
   void reset(std::size_t agent_count) {
+    ++generation_;
     begin_.assign(agent_count + 1, 0);
     items_.clear();
     pairs_.clear();
@@ -48,8 +49,12 @@ class NeighbourLists {
   std::span<const ClosePair> pairs() const { return pairs_; }
   std::size_t agent_count() const { return begin_.empty() ? 0 : begin_.size() - 1; }
   std::size_t total() const { return items_.size(); }
+  // Counts the rebuilds (assign_from_pairs, reset): while it stays, so do the lists, and
+  // whatever was computed from them only.
+  std::uint64_t generation() const { return generation_; }
 
  private:
+  std::uint64_t generation_ = 0;
   AgentArray<std::uint32_t> begin_;
   AgentArray<Neighbour> items_;
   AgentArray<ClosePair> pairs_;

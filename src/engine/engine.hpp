@@ -4,6 +4,7 @@
 // and reports what the agents perceive afterwards and which pairs met during the step.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,14 @@ class Engine {
 
   // Threads the engine may use inside one step (results must not depend on it).
   virtual void set_threads(int /*threads*/) {}
+
+  // Engines that let agents at rest sleep (skip the work of a step that would not move
+  // them): how many slept in the last step, and, with checks on (each step then also
+  // resolved in full), an agent that slept though the full step would have moved it or
+  // changed what was counted (none: sleep changed nothing).
+  virtual std::size_t asleep_count() const { return 0; }
+  virtual void set_sleep_checks(bool /*on*/) {}
+  virtual std::optional<std::uint32_t> sleeper_due_to_move() const { return std::nullopt; }
 };
 
 // Builds the engine `spec.engine.type` names, with the bodies at `initial_positions`.

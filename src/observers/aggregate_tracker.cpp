@@ -6,8 +6,33 @@
 
 namespace swarmagg {
 
+bool AggregateTracker::same_links(const NeighbourLists& neighbours, const SwarmState& swarm,
+                                  double radius, AggregateLinks links) {
+  const bool partners = links == AggregateLinks::PartnersOnly;
+  const bool same = lists_ == &neighbours && generation_ == neighbours.generation() &&
+                    links_ == links && radius_ == radius &&
+                    std::ranges::equal(states_, swarm.state) &&
+                    (!partners || std::ranges::equal(partners_, swarm.partner));
+  if (same) return true;
+  // Remembering costs copies, which pay only in a world at rest (lists that stayed since the
+  // last update); in a moving world nothing is remembered.
+  const bool lists_stayed =
+      seen_lists_ == &neighbours && seen_generation_ == neighbours.generation();
+  seen_lists_ = &neighbours;
+  seen_generation_ = neighbours.generation();
+  lists_ = lists_stayed ? &neighbours : nullptr;
+  if (!lists_stayed) return false;
+  generation_ = neighbours.generation();
+  links_ = links;
+  radius_ = radius;
+  states_.assign(swarm.state.begin(), swarm.state.end());
+  if (partners) partners_.assign(swarm.partner.begin(), swarm.partner.end());
+  return false;
+}
+
 void AggregateTracker::update(const NeighbourLists& neighbours, const SwarmState& swarm,
                               double detection_radius, AggregateLinks links) {
+  if (same_links(neighbours, swarm, detection_radius, links)) return;
   const std::size_t n = swarm.size();
   // Only waiting agents can be in aggregates; the union-find touches nothing else.
   if (waiting_.size() != n) waiting_.resize(n);

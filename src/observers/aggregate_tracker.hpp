@@ -2,7 +2,9 @@
 // Aggregates (docs/models.md): connected components of WAIT agents under "centre distance <= s",
 // torus-aware, recomputed from scratch each time, so an aggregate split by a leaver counts
 // as two. With partner links only (join: false), only the two agents of a pair are linked.
-// Components of one agent are not aggregates.
+// Components of one agent are not aggregates. A step that changed no link (the same
+// neighbour lists, states and partners) keeps the labels: it costs a comparison of the
+// states, no labelling.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -45,6 +47,9 @@ class AggregateTracker {
 
  private:
   void label_components(std::size_t n, std::span<const std::uint32_t> waiting);
+  // Whether the links are those of the last update (and remembers these).
+  bool same_links(const NeighbourLists& neighbours, const SwarmState& swarm, double radius,
+                  AggregateLinks links);
 
   UnionFind sets_;
   AgentArray<std::int32_t> aggregate_of_;
@@ -57,6 +62,15 @@ class AggregateTracker {
   AgentArray<std::uint32_t> waiting_;  // full length; the waiting agents come first
   int count_ = 0;
   int largest_ = 0;
+  // What the last update linked from.
+  const NeighbourLists* lists_ = nullptr;
+  std::uint64_t generation_ = 0;
+  AggregateLinks links_ = AggregateLinks::Proximity;
+  double radius_ = 0.0;
+  std::vector<AgentState> states_;
+  std::vector<std::int32_t> partners_;
+  const NeighbourLists* seen_lists_ = nullptr;  // the lists of the last update
+  std::uint64_t seen_generation_ = 0;
 };
 
 }  // namespace swarmagg

@@ -172,7 +172,14 @@ CheckedState checked_state(const Replicate& r) {
           r.engine().neighbours(),
           r.swarm(),
           r.aggregates(),
-          r.events()};
+          r.events(),
+          r.engine().sleeper_due_to_move()};
+}
+
+void check_sleep(const CheckedState& s) {
+  if (!s.sleeper_due_to_move) return;
+  violated(s, "agent " + std::to_string(*s.sleeper_due_to_move) +
+                  " slept, but the step resolved in full moves it or changes what it counted");
 }
 
 void InvariantChecker::check(const CheckedState& state) {
@@ -180,6 +187,7 @@ void InvariantChecker::check(const CheckedState& state) {
   check_positions(state);
   check_agents(state);
   check_aggregates(state);
+  check_sleep(state);
   if (continues(state)) {
     check_counts_grow(state);
     check_motion(state);

@@ -19,6 +19,8 @@
 //    one out, so 2 creations + growths - dissipations - shrinks >= waiting; the rules
 //    switch events off (no growth without joining, no dissipation or shrink without
 //    leaving, no shrink with partner links, no event at all for ghost collisions).
+//  - sleep (kinematic engine): the step resolved in full moves no agent that slept and
+//    changes nothing the sleeping step gave (the engine runs both while checks are on);
 // From one step to the next:
 //  - cumulative event counts never decrease;
 //  - kinematic engine (exact): no agent moves farther than v dt, waiting agents stay put;
@@ -27,6 +29,7 @@
 //    their overlap grows by at most the engine's tolerance (rounding for the kinematic engine; r
 //    for Box2D, which lets bodies overlap by a substep's travel before it resolves a contact).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -59,6 +62,7 @@ struct CheckedState {
   const SwarmState& swarm;  // states as displayed during the step just done
   const AggregateTracker& aggregates;
   const EventCounts& events;
+  std::optional<std::uint32_t> sleeper_due_to_move;  // the engine's sleep check
 };
 
 CheckedState checked_state(const Replicate& replicate);

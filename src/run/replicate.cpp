@@ -27,6 +27,7 @@ Replicate::Replicate(const WorldSpec& spec, int index)
       leave_episodes_(spec.robots.count, episode_rules(spec, rules_), ShapeRules::for_world(spec)) {
   InitialPlacement placement = place_agents(spec, rng_);
   engine_ = make_engine(spec, placement.positions);
+  engine_->set_sleep_checks(checking_);
   controller_ = make_controller(spec);
   swarm_.resize(placement.positions.size());
   swarm_.heading.assign(placement.headings.begin(), placement.headings.end());

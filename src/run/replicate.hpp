@@ -28,7 +28,10 @@ class Replicate {
 
   void step();  // advances by one step of dt
   // Checks the invariants (run/invariants.hpp) after every step; on by default in Debug.
-  void set_checking(bool on) { checking_ = on; }
+  void set_checking(bool on) {
+    checking_ = on;
+    engine_->set_sleep_checks(on);
+  }
   // Threads one step may use (results do not depend on it).
   void set_threads(int threads) { engine_->set_threads(threads); }
   std::int64_t steps_done() const { return step_; }

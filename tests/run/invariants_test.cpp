@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct Scene {
   EventCounts events;
   ControllerRules rules;
   std::int64_t step = 1;
+  std::optional<std::uint32_t> sleeper_due_to_move;  // what the engine's sleep check found
 
   // The world is a 40 x 40 torus with the defaults docs/reference/world-keys.md gives, changed by
   // `overrides`.
@@ -64,7 +66,8 @@ struct Scene {
   }
 
   CheckedState state() const {
-    return {spec, rules, 3, step, positions, neighbours, swarm, aggregates, events};
+    return {spec,       rules, 3,          step,   positions,
+            neighbours, swarm, aggregates, events, sleeper_due_to_move};
   }
 };
 
@@ -111,6 +114,12 @@ TEST(Invariants, PositionsMustLieInsideTheArena) {
   EXPECT_EQ(violation(walls), "none");
   walls.positions[2] = {39.5, 30.0};
   EXPECT_THAT(violation(walls), HasSubstr("agent 2 (GO) at (39.5, 30) is outside"));
+}
+
+TEST(Invariants, NoAgentSleepsThatTheFullStepMoves) {
+  Scene scene = pair_and_searcher();
+  scene.sleeper_due_to_move = 1;
+  EXPECT_THAT(violation(scene), HasSubstr("agent 1 slept, but the step resolved in full moves it"));
 }
 
 TEST(Invariants, EveryPartHoldsEveryAgent) {

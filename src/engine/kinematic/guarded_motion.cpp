@@ -437,6 +437,7 @@ void GuardedMotion::reset(std::size_t agents) {
   }
   ++step_stamp_;
   bent_agents_.clear();
+  met_agents_.clear();
 }
 
 std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
@@ -498,6 +499,8 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     if (event.version_i != version_[i] || event.version_j != version_[j]) continue;
     if (event.kind == Kind::Perceive) {
       ++encounters;
+      met_agents_.push_back(i);
+      met_agents_.push_back(j);
       const bool halt_i = halts_for(i, j);
       const bool halt_j = halts_for(j, i);
       if (halt_i) halt(i, event.time);

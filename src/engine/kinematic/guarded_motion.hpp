@@ -65,6 +65,9 @@ class GuardedMotion {
   // The agents whose motion changed during the step resolved last (each once): all others
   // moved with their commanded velocity for the whole step.
   std::span<const std::uint32_t> bent_agents() const { return bent_agents_; }
+  // The agents of the encounters counted in the step resolved last (each pair's two, perhaps
+  // repeated).
+  std::span<const std::uint32_t> met_agents() const { return met_agents_; }
   // The walls `agent` touched during the step resolved last (WallContact bits).
   std::uint8_t wall_contacts(std::uint32_t agent) const {
     return leg_stamp_[agent] == step_stamp_ ? walls_touched_[agent] : 0;
@@ -168,6 +171,7 @@ class GuardedMotion {
   AgentArray<Leg> leg_;
   AgentArray<std::uint32_t> leg_stamp_;
   std::vector<std::uint32_t> bent_agents_;
+  std::vector<std::uint32_t> met_agents_;
   AgentArray<std::uint8_t> slides_;
   AgentArray<std::uint8_t> walls_touched_;
   // Versions tell stale events from current ones: they count up across steps and are never

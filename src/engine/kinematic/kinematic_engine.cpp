@@ -1,11 +1,13 @@
 #include "engine/kinematic/kinematic_engine.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
 #include "core/agent_array.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
+#include "engine/kinematic/sleeping_islands.hpp"
 #include "engine/kinematic/step_threads.hpp"
 #include "engine/kinematic/verlet_pairs.hpp"
 #include "geometry/arena_geometry.hpp"
@@ -74,18 +76,40 @@ class KinematicEngine final : public Engine {
                   std::span<const Signal> signals) override {
     const CommandSummary summary = summarise(commands);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
-    if (summary.fastest > pairs_speed_) rebuild_neighbourhood(summary.fastest, false, 0.0);
+    if (summary.fastest > pairs_speed_) {
+      rebuild_neighbourhood(summary.fastest, false, 0.0);
+      pairs_kept_ = false;
+    }
     StepReport report;
     if (summary.guarded) {
+      islands_.decide(positions_, commands, signals, pairs_.candidates(), pairs_speed_,
+                      met_last_step(), pairs_kept_);
+      // Everybody asleep: nothing moves, nothing meets, the pairs and lists stay (unless the
+      // radii changed). With checks on, the step is resolved as usual, to be checked.
+      resolved_last_ = islands_.sleepers().size() < positions_.size() || sleep_checks_;
+      if (!resolved_last_) {
+        const double speed = std::max(nominal_speed_, summary.fastest);
+        pairs_kept_ = speed == pairs_speed_;
+        if (!pairs_kept_) rebuild_neighbourhood(speed, true, 0.0);
+        return report;
+      }
+      const std::span<const MotionCommand> resolved = without_sleepers(commands);
       report.encounters =
-          motion_.resolve(pairs_.candidates(), commands, signals, limits_, positions_);
-      move_and_rebuild(commands, &motion_, summary.fastest);
+          motion_.resolve(pairs_.candidates(), resolved, signals, limits_, positions_);
+      if (sleep_checks_) check_sleepers(commands, signals, report.encounters);
+      move_and_rebuild(resolved, &motion_, summary.fastest);
     } else {
+      resolved_last_ = false;
+      islands_.forget();
       report.encounters = GuardedMotion::count_encounters(pairs_.candidates(), commands, limits_);
       move_and_rebuild(commands, nullptr, summary.fastest);
     }
     return report;
   }
+
+  std::size_t asleep_count() const override { return islands_.sleepers().size(); }
+  void set_sleep_checks(bool on) override { sleep_checks_ = on; }
+  std::optional<std::uint32_t> sleeper_due_to_move() const override { return sleep_violation_; }
 
   std::span<const Vec2> positions() const override { return positions_; }
   const NeighbourLists& neighbours() const override { return neighbours_; }
@@ -126,11 +150,80 @@ class KinematicEngine final : public Engine {
             });
       }
     };
+    if (!arena_.torus()) remember_sleepers_reflections();
     threads_.run(tasks, move);
     if (patch_bent) move_bent_from_starts(*motion);
+    keep_sleepers_in_place();
+    const double speed = std::max(nominal_speed_, fastest);
+    // When no agent moved and the radii stay, the pairs and what each agent perceives are
+    // those found last: a world at rest costs no search and no lists.
+    pairs_kept_ = motion != nullptr && speed == pairs_speed_ && islands_.none_moved(positions_);
+    if (pairs_kept_) return;
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
-    rebuild_neighbourhood(std::max(nominal_speed_, fastest), true, fastest * limits_.dt);
+    rebuild_neighbourhood(speed, true, fastest * limits_.dt);
+  }
+
+  // The agents the last step's guarded motion saw meet (none when it was not resolved).
+  std::span<const std::uint32_t> met_last_step() const {
+    return resolved_last_ ? motion_.met_agents() : std::span<const std::uint32_t>{};
+  }
+
+  // The commands the guarded motion resolves: sleepers stand (what they would do anyway), so
+  // that nothing of theirs is scheduled.
+  std::span<const MotionCommand> without_sleepers(std::span<const MotionCommand> commands) {
+    if (islands_.sleepers().empty()) return commands;
+    resolved_commands_.assign(commands.begin(), commands.end());
+    for (const std::uint32_t agent : islands_.sleepers()) resolved_commands_[agent].velocity = {};
+    return resolved_commands_;
+  }
+
+  // Sleepers keep every bit of their positions and, between walls, the walls they touched.
+  void remember_sleepers_reflections() {
+    sleepers_reflections_.clear();
+    for (const std::uint32_t agent : islands_.sleepers()) {
+      sleepers_reflections_.push_back(reflections_[agent]);
+    }
+  }
+  void keep_sleepers_in_place() {
+    const std::span<const std::uint32_t> sleepers = islands_.sleepers();
+    for (std::size_t k = 0; k < sleepers.size(); ++k) {
+      positions_[sleepers[k]] = islands_.start_of(sleepers[k]);
+      if (!arena_.torus()) reflections_[sleepers[k]] = sleepers_reflections_[k];
+    }
+  }
+
+  // Resolves the step again in full, with every command as given, and records an agent that
+  // slept though it would have moved, or any difference in where the others go or in the
+  // encounters counted.
+  void check_sleepers(std::span<const MotionCommand> commands, std::span<const Signal> signals,
+                      std::uint64_t encounters) {
+    if (sleep_violation_ || islands_.sleepers().empty()) return;
+    const std::uint64_t full =
+        full_motion_.resolve(pairs_.candidates(), commands, signals, limits_, positions_);
+    for (std::uint32_t agent = 0; agent < positions_.size(); ++agent) {
+      const Vec2 start = positions_[agent];
+      const Vec2 due = moved_from(start, full_motion_.displacement(agent));
+      const Vec2 given =
+          islands_.asleep(agent) ? start : moved_from(start, motion_.displacement(agent));
+      if (!same_bits(due, given) || full != encounters) {
+        sleep_violation_ = agent;
+        return;
+      }
+    }
+  }
+
+  // Where a move by `displacement` from `start` ends (the arena's edges applied).
+  Vec2 moved_from(Vec2 start, Vec2 displacement) const {
+    Vec2 p = start + displacement;
+    if (arena_.torus()) return on_torus(p);
+    reflect_off_walls(p);
+    return p;
+  }
+
+  static bool same_bits(Vec2 a, Vec2 b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
   }
 
   void remember_starts(std::span<const std::uint32_t> agents) {
@@ -220,6 +313,14 @@ class KinematicEngine final : public Engine {
   VerletPairs pairs_;
   NeighbourLists neighbours_;
   GuardedMotion motion_;
+  SleepingIslands islands_;
+  AgentArray<MotionCommand> resolved_commands_;
+  std::vector<std::uint8_t> sleepers_reflections_;
+  bool sleep_checks_ = false;
+  bool resolved_last_ = false;  // the last step ran the guarded motion
+  bool pairs_kept_ = false;     // the last step found no new pairs: nothing moved
+  GuardedMotion full_motion_;   // the check's resolution in full
+  std::optional<std::uint32_t> sleep_violation_;
   std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed
 };
 

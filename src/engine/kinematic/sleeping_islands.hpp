@@ -1,0 +1,87 @@
+#pragma once
+// Which agents of a kinematic step sleep: those whose step would repeat the last one exactly.
+//
+// An island is a connected component of the step's candidate pairs (guarded_motion.hpp):
+// events happen only between the agents of a pair, so an island's step depends on nothing but
+// its own members' positions, commands and signals, their pairs and the fixed limits. An
+// island sleeps when
+//  - every member is at rest: it did not move during the last step (its position kept every
+//    bit), and its command and signal are the ones it had then;
+//  - it is the island it was then (the same members: no moving agent came within the pair
+//    reach, none left), and the reach is the same;
+//  - its last step counted no encounter.
+// Then the island's last step was closed (nothing outside it took part) and ran on the very
+// inputs this step has, so this step would give the same result: nobody in it moves, and it
+// counts no encounter. Waiting members of a packed aggregate whose pull is balanced, and
+// those whose pull presses into bodies that halt them at once, sleep this way; they wake as
+// soon as a neighbour moves, changes its command or state, or a moving agent comes within
+// the reach. Sleepers are then left out of the guarded motion (their velocity is taken as
+// zero, which is what they would do) and keep their positions bit for bit.
+//
+// Islands are found by union-find over the candidate pairs, only when enough agents press
+// at rest (moving agents pushing into bodies that halt them: their contact responses are
+// what sleep spares; a standing agent costs the guarded motion little). A whole world at rest
+// on the same pairs sleeps without labelling: it is one closed island. A moving world (too
+// few agents pressing at rest) is looked at only every few steps.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "control_interface/motion_command.hpp"
+#include "core/agent_array.hpp"
+#include "core/vec2.hpp"
+#include "engine/kinematic/guarded_motion.hpp"
+
+namespace swarmagg {
+
+class SleepingIslands {
+ public:
+  // Decides who sleeps in the step about to be resolved from `positions` (its start) with
+  // `commands` and `signals`, over `pairs` found with pair reach `reach`. `met`: the agents
+  // that took part in an encounter during the last step. `same_pairs`: the pairs are those
+  // of the last step (nothing moved, the reach stayed), so the islands are too.
+  void decide(std::span<const Vec2> positions, std::span<const MotionCommand> commands,
+              std::span<const Signal> signals, std::span<const CandidatePair> pairs, double reach,
+              std::span<const std::uint32_t> met, bool same_pairs);
+  // Forgets everything: in the next step nobody sleeps (a step resolved without guards).
+  void forget();
+
+  bool asleep(std::uint32_t agent) const { return asleep_[agent] != 0; }
+  // The agents asleep in this step, in increasing order.
+  std::span<const std::uint32_t> sleepers() const { return sleepers_; }
+  // Each agent's position at the step's start (what a sleeper keeps).
+  Vec2 start_of(std::uint32_t agent) const { return last_position_[agent]; }
+  // Whether every agent is still where the step started, bit for bit.
+  bool none_moved(std::span<const Vec2> positions) const;
+
+ private:
+  void reset(std::size_t agents);
+  // Whether the agent's inputs equal those of the last step (and remembers this step's).
+  bool at_rest(std::uint32_t agent, Vec2 position, const MotionCommand& command, Signal signal);
+  void label_islands(std::size_t agents, std::span<const CandidatePair> pairs);
+
+  void clear_sleepers();
+  void everybody_sleeps(std::size_t agents);
+
+  bool recorded_ = false;  // the last step's inputs were recorded
+  bool known_ = false;     // and its islands labelled
+  int steps_to_skip_ = 0;  // steps left in which a moving world is not looked at
+  double reach_ = -1.0;
+  AgentArray<Vec2> last_position_;
+  AgentArray<MotionCommand> last_command_;
+  AgentArray<Signal> last_signal_;
+  AgentArray<std::uint8_t> rest_;
+  AgentArray<std::uint8_t> met_;
+  // Islands: each agent's root (the island's lowest member) and the island's size, of this
+  // step and of the last.
+  AgentArray<std::uint32_t> parent_;
+  AgentArray<std::uint32_t> size_;
+  AgentArray<std::uint32_t> root_;
+  AgentArray<std::uint32_t> last_root_;
+  AgentArray<std::uint32_t> last_size_;
+  AgentArray<std::uint8_t> island_sleeps_;  // by root
+  AgentArray<std::uint8_t> asleep_;
+  std::vector<std::uint32_t> sleepers_;
+};
+
+}  // namespace swarmagg
