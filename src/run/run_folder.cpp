@@ -10,6 +10,7 @@
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/aggregate_summary.hpp"
+#include "run/state_hash.hpp"
 #include "swarmagg_version.hpp"
 
 namespace swarmagg {
@@ -31,6 +32,7 @@ nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
   const TimeseriesRow& last = r.rows.back();
   nlohmann::json summary = {{"replicate", r.index},
                             {"seed", r.seed},
+                            {"final_state_hash", state_hash_text(r.final_state_hash)},
                             {"wall_seconds", r.wall_seconds},
                             {"final",
                              {{"step", last.step},

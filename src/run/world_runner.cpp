@@ -13,6 +13,7 @@
 #include "run/progress_line.hpp"
 #include "run/recorded_steps.hpp"
 #include "run/replicate.hpp"
+#include "run/state_hash.hpp"
 
 namespace swarmagg {
 namespace {
@@ -74,6 +75,7 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   outcome.final_aggregates = final_shapes(replicate);
   outcome.leave = replicate.leave_episodes().tally();
   outcome.partition_steps = partition_tracker.steps_by_partition();
+  outcome.final_state_hash = state_hash(replicate);
   outcome.wall_seconds = seconds_since(start);
   return outcome;
 }
