@@ -118,9 +118,12 @@ bool parse_view_command(std::string_view line, const std::string& where, ViewCom
     out.action = ViewAction::Panel;
     out.on = on_off(words[1], where, "panel");
   } else if (verb == "screenshot") {
-    expect_words(words, 2, where, "screenshot PATH");
+    // The path is the rest of the line, so it may hold spaces.
+    if (words.size() < 2) fail(where, "expected 'screenshot PATH'");
     out.action = ViewAction::Screenshot;
-    out.path = words[1];
+    const auto start = line.find_first_not_of(" \t", line.find(verb) + verb.size());
+    const auto end = line.find_last_not_of(" \t\r");
+    out.path = std::string(line.substr(start, end + 1 - start));
   } else {
     fail(where, "unknown command '" + verb +
                     "'; expected step, play, pause, speed, select, colour, overlay, panel, "
