@@ -21,6 +21,7 @@ struct ViewCommandOptions {
   int replicate = 0;
   std::string script;
   std::optional<std::string> size;
+  std::int64_t frames = 0;
 };
 
 int view_command(const ViewCommandOptions& options) {
@@ -36,6 +37,9 @@ int view_command(const ViewCommandOptions& options) {
     window.height = size.height;
   }
   if (!options.script.empty()) window.script = read_view_script(options.script);
+  if (options.frames < 0)
+    throw InputError("--frames " + std::to_string(options.frames) + ": expected >= 0");
+  window.frames = options.frames;
   ViewSession session(spec, options.replicate, std::cout);
   run_view_window(session, window);
   return 0;
@@ -58,6 +62,8 @@ void add_view_command(CLI::App& app, Action& action) {
       "Commands to run, one a line (step N, play, pause, speed K, select ID, "
       "colour ..., overlay NAME on|off, panel on|off, screenshot PATH, hash, quit)");
   command->add_option("--size", options->size, "Window size WxH (default render.width x height)");
+  command->add_option("--frames", options->frames,
+                      "Quit after N frames and print the frame rate (0: run until closed)");
   command->callback([options, &action] { action = [options] { return view_command(*options); }; });
 }
 

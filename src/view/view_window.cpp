@@ -14,6 +14,7 @@
 #include <deque>
 #include <filesystem>
 #include <iostream>
+#include <span>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -109,6 +110,10 @@ class Window {
   unsigned texture_ = 0;
   std::deque<ViewCommand> queue_;
   std::deque<ViewCommand> script_;
+  std::int64_t frame_limit_;
+  // Seconds spent stepping, drawing the scene off-screen and in the window (upload, panel,
+  // swap), over the frames so far.
+  double step_total_ = 0, scene_total_ = 0, window_total_ = 0;
   double frame_seconds_ = 1.0 / 60.0;
   double fps_ = 0.0;
   double steps_per_second_ = 0.0;
@@ -128,7 +133,8 @@ Window::Window(ViewSession& session, const ViewWindowOptions& options)
     : session_(session),
       width_(options.width),
       height_(options.height),
-      script_(options.script.begin(), options.script.end()) {
+      script_(options.script.begin(), options.script.end()),
+      frame_limit_(options.frames) {
   record_every_ =
       session.spec().render.every > 0 ? static_cast<int>(session.spec().render.every) : 10;
   record_dir_ = std::filesystem::path("renders") / (session.spec().name + "-view");
@@ -476,9 +482,10 @@ void Window::take_screenshot(const std::string& path) {
 
 void Window::draw_panel() {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0),
+                                      ImVec2(300, static_cast<float>(height_) - 16));
   ImGui::SetNextWindowBgAlpha(0.85f);
-  ImGui::Begin("swarmagg view (Tab hides)");
+  ImGui::Begin("swarmagg view (Tab hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   RunControl& control = session_.control();
   const Replicate& replicate = session_.replicate();
   if (ImGui::Button(control.playing() ? "Pause" : "Play")) push(ViewAction::TogglePlay);
@@ -520,7 +527,7 @@ void Window::draw_panel() {
               steps_per_second_ * session_.spec().engine.dt, fps_);
   draw_noa_plot();
 
-  if (ImGui::CollapsingHeader("Colour and overlays", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::CollapsingHeader("Colour and overlays")) {
     SceneOptions& scene = session_.scene();
     int colour = static_cast<int>(scene.colour);
     ImGui::RadioButton("state (C)", &colour, 0);
@@ -570,16 +577,18 @@ void Window::draw_noa_plot() {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
                       IM_COL32(20, 20, 20, 255));
-  const double t_end = std::max(session_.control().duration_steps() * session_.spec().engine.dt,
-                                history.empty() ? 1.0 : history.back().time);
+  // From t = 0 to now: the model's curve is cut at the current time.
+  const double t_end = std::max(history.empty() ? 0.0 : history.back().time, 1.0);
   double noa_max = 1.0;
   for (const NoaPoint& p : history) noa_max = std::max(noa_max, p.noa);
-  for (const NoaPoint& p : model) noa_max = std::max(noa_max, p.noa);
+  for (const NoaPoint& p : model) {
+    if (p.time <= t_end) noa_max = std::max(noa_max, p.noa);
+  }
   const auto at = [&](const NoaPoint& p) {
     return ImVec2(origin.x + static_cast<float>(p.time / t_end) * size.x,
                   origin.y + size.y - static_cast<float>(p.noa / noa_max) * (size.y - 4) - 2);
   };
-  const auto polyline = [&](const std::vector<NoaPoint>& points, ImU32 colour) {
+  const auto polyline = [&](std::span<const NoaPoint> points, ImU32 colour) {
     // At most one vertex per horizontal pixel keeps long runs cheap to draw.
     const std::size_t stride =
         std::max<std::size_t>(1, points.size() / static_cast<std::size_t>(size.x + 1));
@@ -587,7 +596,9 @@ void Window::draw_noa_plot() {
       draw->AddLine(at(points[i - stride]), at(points[i]), colour, 1.5f);
     }
   };
-  polyline(model, IM_COL32(230, 159, 0, 255));
+  const auto model_end = std::upper_bound(model.begin(), model.end(), t_end,
+                                          [](double t, const NoaPoint& p) { return t < p.time; });
+  polyline(std::span<const NoaPoint>(model.begin(), model_end), IM_COL32(230, 159, 0, 255));
   polyline(history, IM_COL32(240, 240, 240, 255));
   draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(200, 200, 200, 255),
                 model.empty() ? "NOA" : "NOA (orange: model)");
@@ -596,6 +607,7 @@ void Window::draw_noa_plot() {
 void Window::draw_inspector() {
   SceneOptions& scene = session_.scene();
   if (scene.selected >= 0) typed_id_ = scene.selected;
+  ImGui::SetNextItemWidth(130);
   if (ImGui::InputInt("agent id", &typed_id_, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue)) {
     queue_.push_back(view_command(ViewAction::Select, typed_id_));
   }
@@ -641,23 +653,42 @@ void Window::draw_tooltip() {
 }
 
 void Window::run() {
-  auto last = Clock::now();
+  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  const auto start = Clock::now();
+  auto last = start;
+  std::int64_t frames = 0;
   while (!glfwWindowShouldClose(window_) && !session_.quit_requested()) {
     glfwPollEvents();
     glfwMakeContextCurrent(nullptr);
     run_commands();
     if (session_.quit_requested()) break;
-    const auto step_start = Clock::now();
+    const auto t0 = Clock::now();
     const std::int64_t steps = session_.advance_frame(frame_seconds_, 1.0 / 30.0);
-    const double step_seconds = std::chrono::duration<double>(Clock::now() - step_start).count();
-    if (steps > 0 && step_seconds > 0) steps_per_second_ = steps / step_seconds;
+    const auto t1 = Clock::now();
     draw_scene();
+    const auto t2 = Clock::now();
     show_frame();
     glfwSwapBuffers(window_);
     const auto now = Clock::now();
-    frame_seconds_ = std::chrono::duration<double>(now - last).count();
+    if (steps > 0 && seconds(t0, t1) > 0) steps_per_second_ = steps / seconds(t0, t1);
+    step_total_ += seconds(t0, t1);
+    scene_total_ += seconds(t1, t2);
+    window_total_ += seconds(t2, now);
+    frame_seconds_ = seconds(last, now);
     last = now;
     fps_ = fps_ == 0.0 ? 1.0 / frame_seconds_ : 0.9 * fps_ + 0.1 / frame_seconds_;
+    if (++frames == frame_limit_) {
+      const double total = seconds(start, now);
+      std::printf(
+          "view: %lld frames in %.2f s: %.1f fps; per frame %.2f ms stepping, %.2f ms drawing "
+          "the scene, %.2f ms in the window\n",
+          static_cast<long long>(frames), total, frames / total, 1e3 * step_total_ / frames,
+          1e3 * scene_total_ / frames, 1e3 * window_total_ / frames);
+      std::fflush(stdout);
+      break;
+    }
   }
   glfwMakeContextCurrent(nullptr);
 }

@@ -9,7 +9,9 @@
 // (libglapi), so only one is current at a time: the window's context is released while the
 // scene is drawn. Window-side GL calls go through pointers from glfwGetProcAddress (ImGui's
 // backend loads its own), never through the process's gl* symbols, which are OSMesa's.
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "view/view_command.hpp"
@@ -21,6 +23,9 @@ struct ViewWindowOptions {
   int width = 800;
   int height = 800;
   std::vector<ViewCommand> script;  // one command per frame, in order
+  // After this many frames (0: never), quit and print the frame rate and where a frame's
+  // time went (bench/view_fps.sh).
+  std::int64_t frames = 0;
 };
 
 // Throws InputError (exit 2) when no display can be opened, saying how to run under Xvfb.
