@@ -3,11 +3,14 @@
 # `make demo` and `make test` work on a fresh Debian 12 machine with one command.
 # libhdf5-dev builds trajectories.h5; slurm-wlm and munge are only for the test that runs
 # the Slurm example under a real single-node Slurm (tests/cluster/, part of `make test`);
-# python3-h5py reads trajectories.h5 in the README's example.
+# python3-h5py reads trajectories.h5 in the README's example. libglfw3-dev, libimgui-dev and
+# libstb-dev build the live view (`swarmagg view`); xvfb, xauth and xdotool run its window
+# tests on a virtual display (tests/view/).
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
   libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev
-  libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge)
+  libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge libglfw3-dev libimgui-dev libstb-dev
+  xvfb xauth xdotool)
 optional=(ffmpeg python3-h5py)
 missing=()
 for p in "${packages[@]}"; do
