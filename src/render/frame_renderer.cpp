@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_header.hpp"
 #include "render/frame_scene.hpp"
 #include "render/instanced_shapes.hpp"
 #include "render/osmesa_context.hpp"
@@ -87,7 +86,7 @@ struct FrameRenderer::Impl {
         throw std::runtime_error("render: OpenGL error " + std::to_string(error));
       }
     }
-    draw_frame_header(target, layout, snapshot);
+    draw_scene_text(target, layout.width, layout.height, scene);
   }
 
   OsMesaContext context;

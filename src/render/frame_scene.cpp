@@ -6,6 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "render/bitmap_font.hpp"
+#include "render/frame_header.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -116,6 +119,8 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot, const 
   scene_.bodies.clear();
   scene_.marks.clear();
   scene_.walls.clear();
+  scene_.rects.clear();
+  scene_.labels.clear();
 
   const ArenaGeometry arena = spec.arena.geometry();
   wrapped_.resize(n);
@@ -179,7 +184,34 @@ const FrameScene& FrameSceneBuilder::build(const SwarmSnapshot& snapshot, const 
                               palette::kWall});
     }
   }
+  add_frame_header(scene_, fit, snapshot);
+  add_selection_label(layout, options);
   return scene_;
+}
+
+// The selected agent's id beside its mark (each copy), where it falls inside the view.
+void FrameSceneBuilder::add_selection_label(const FrameLayout& layout,
+                                            const SceneOptions& options) {
+  if (options.selected < 0) return;
+  const std::string text = std::to_string(options.selected);
+  const int k = layout.text_scale;
+  const PixelRect view = layout.view();
+  for (const CircleInstance& mark : scene_.marks) {
+    const int x = static_cast<int>(std::lround(mark.x + mark.radius + k));
+    const int y = static_cast<int>(std::lround(mark.y - mark.radius - kGlyphHeight * k));
+    if (x < view.left || y < view.top || x + text_width(text, k) > view.left + view.width ||
+        y + kGlyphHeight * k > view.top + view.height) {
+      continue;
+    }
+    scene_.labels.push_back({x, y, k, palette::kSelection, text});
+  }
+}
+
+void draw_scene_text(std::span<std::uint8_t> rgba, int width, int height, const FrameScene& scene) {
+  for (const FilledRect& r : scene.rects)
+    fill_rect(rgba, width, height, r.x, r.y, r.width, r.height, r.colour);
+  for (const TextLabel& l : scene.labels)
+    draw_text(rgba, width, height, l.x, l.y, l.scale, l.colour, l.text);
 }
 
 // Segments between agents: every neighbour pair, the aggregate links, the touching pairs, in

@@ -11,13 +11,17 @@
 //   links   - a line between every two members of one aggregate within s of each other;
 //   bodies  - the agent's disc (radius r, at least kMinBodyPixels), filled by state;
 //   marks   - a ring around the selected agent (none by default);
-//   walls   - the arena border, walls topology only.
+//   walls   - the arena border, walls topology only;
+//   rects, labels - the header band's caption and legend (frame_header.hpp) and the selected
+//             agent's id, in the built-in bitmap font, drawn last on the CPU, unclipped.
 // On a torus every shape that crosses the seam is drawn again on the other side(s) (unless
 // options.ghosts is off); the renderer clips everything but the walls to the arena.
 // Options may colour bodies by aggregate or aggregate size, draw the detection and approach
 // circles for the selected agent only or for all, and add to the links layer, below the
 // aggregate links, trails and every neighbour pair, and above them the touching pairs.
 #include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "geometry/pair_finder.hpp"
@@ -51,6 +55,24 @@ struct SegmentInstance {
   Rgba8 colour;
 };
 
+// A line of text in the built-in 5x7 font (bitmap_font.hpp), top-left corner at (x, y),
+// glyphs magnified `scale` times; and a filled rectangle. Whole pixels, top-down.
+struct TextLabel {
+  int x = 0;
+  int y = 0;
+  int scale = 1;
+  Rgba8 colour;
+  std::string text;
+};
+
+struct FilledRect {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+  Rgba8 colour;
+};
+
 struct FrameScene {
   std::vector<CircleInstance> tints;
   std::vector<CircleInstance> rings;
@@ -58,7 +80,13 @@ struct FrameScene {
   std::vector<CircleInstance> bodies;
   std::vector<CircleInstance> marks;
   std::vector<SegmentInstance> walls;
+  std::vector<FilledRect> rects;
+  std::vector<TextLabel> labels;
 };
+
+// Draws the scene's rects, then its labels, into the finished frame (`rgba`, top-down,
+// width x height).
+void draw_scene_text(std::span<std::uint8_t> rgba, int width, int height, const FrameScene& scene);
 
 // Builds a scene, reusing its buffers from frame to frame (no allocation once warmed up).
 class FrameSceneBuilder {
@@ -75,6 +103,7 @@ class FrameSceneBuilder {
   void find_links(const SwarmSnapshot& snapshot, const ArenaGeometry& arena);
   void add_pair_segments(const SwarmSnapshot& snapshot, const FrameLayout& layout,
                          const SceneOptions& options, double extent, float half_width);
+  void add_selection_label(const FrameLayout& layout, const SceneOptions& options);
   void add_trails(const SwarmSnapshot& snapshot, const FrameLayout& layout,
                   const SceneExtras& extras, float half_width);
   Rgba8 body_colour(const SwarmSnapshot& snapshot, std::int32_t agent) const;

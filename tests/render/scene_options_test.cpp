@@ -91,6 +91,24 @@ TEST(SceneOptions, RingRadiiAreTheDetectionAndApproachRadii) {
   EXPECT_TRUE(builder.build(swarm.snapshot(), layout, options).rings.empty());
 }
 
+TEST(SceneOptions, TextIsPartOfTheScene) {
+  const WorldSpec spec = testing::tiny_world();
+  Swarm swarm = three_states(spec);
+  swarm.step = 42;
+  FrameSceneBuilder builder;
+  SceneOptions options;
+  const FrameScene& plain = builder.build(swarm.snapshot(), fit(spec), options);
+  ASSERT_FALSE(plain.labels.empty());
+  EXPECT_EQ(plain.labels[0].text, "T=0  STEP=42  NOA=1");
+  EXPECT_EQ(plain.labels.size(), 4u);  // caption and GO, WAIT, LEAVE (no APPROACH: Bayindir)
+  EXPECT_EQ(plain.rects.size(), 6u);   // each legend swatch: outline and fill
+  options.selected = 1;
+  const FrameScene& selected = builder.build(swarm.snapshot(), fit(spec), options);
+  ASSERT_EQ(selected.labels.size(), 5u);
+  EXPECT_EQ(selected.labels.back().text, "1");
+  EXPECT_GT(selected.labels.back().x, selected.marks[0].x);  // to the right of the agent
+}
+
 TEST(SceneOptions, TorusGhostsCanBeSwitchedOff) {
   const WorldSpec spec = testing::tiny_world();
   Swarm swarm;
