@@ -117,6 +117,10 @@ bool parse_view_command(std::string_view line, const std::string& where, ViewCom
     expect_words(words, 2, where, "panel on|off");
     out.action = ViewAction::Panel;
     out.on = on_off(words[1], where, "panel");
+  } else if (verb == "record") {
+    expect_words(words, 2, where, "record on|off");
+    out.action = ViewAction::Record;
+    out.on = on_off(words[1], where, "record");
   } else if (verb == "screenshot") {
     // The path is the rest of the line, so it may hold spaces.
     if (words.size() < 2) fail(where, "expected 'screenshot PATH'");
@@ -127,7 +131,7 @@ bool parse_view_command(std::string_view line, const std::string& where, ViewCom
   } else {
     fail(where, "unknown command '" + verb +
                     "'; expected step, play, pause, speed, select, colour, overlay, panel, "
-                    "screenshot, hash or quit");
+                    "record, screenshot, hash or quit");
   }
   return true;
 }

@@ -2,7 +2,7 @@
 // The commands that drive the live view, from a key press or from a line of a --script
 // file; both go through one queue, so a script can reach every path of the view.
 //   step N | play | pause | speed K | select ID | colour state|aggregate|size
-//   overlay NAME on|off | panel on|off | screenshot PATH | hash | quit
+//   overlay NAME on|off | panel on|off | record on|off | screenshot PATH | hash | quit
 // plus what only keys send (reset, reseed, fit, zoom, ...).
 #include <cstdint>
 #include <string>
@@ -54,6 +54,13 @@ inline ViewCommand overlay_command(Overlay overlay, bool on) {
   ViewCommand c;
   c.action = ViewAction::Overlay;
   c.overlay = overlay;
+  c.on = on;
+  return c;
+}
+
+inline ViewCommand record_command(bool on) {
+  ViewCommand c;
+  c.action = ViewAction::Record;
   c.on = on;
   return c;
 }

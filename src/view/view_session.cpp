@@ -215,7 +215,7 @@ void ViewSession::apply(const ViewCommand& command) {
       restart();
       break;
     case ViewAction::Record:
-      record_toggle_ = true;
+      record_ = command.on;
       break;
     case ViewAction::Fit:
       scene_.zoom = 1.0;
@@ -276,8 +276,8 @@ std::optional<std::string> ViewSession::take_screenshot_request() {
   return request;
 }
 
-bool ViewSession::take_record_toggle() {
-  return std::exchange(record_toggle_, false);
+std::optional<bool> ViewSession::take_record_request() {
+  return std::exchange(record_, std::nullopt);
 }
 
 }  // namespace swarmagg

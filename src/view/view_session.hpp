@@ -82,9 +82,9 @@ class ViewSession {
   const std::vector<NoaPoint>& model_noa() const { return model_noa_; }
   std::string hash_line() const;  // "state-hash <hex> step <n>"
 
-  // A screenshot or a recording toggle asked for by a command, once.
+  // A screenshot or a start or stop of recording asked for by a command, once.
   std::optional<std::string> take_screenshot_request();
-  bool take_record_toggle();
+  std::optional<bool> take_record_request();  // start (true) or stop (false) recording
 
  private:
   void restart();
@@ -100,7 +100,7 @@ class ViewSession {
   bool panel_ = true;
   bool quit_ = false;
   std::optional<std::string> screenshot_;
-  bool record_toggle_ = false;
+  std::optional<bool> record_;
   double wall_seconds_ = 0.0;  // stepping time since the last restart
 
   std::vector<AgentState> previous_state_;

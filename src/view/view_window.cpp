@@ -91,7 +91,7 @@ class Window {
   void draw_inspector();
   void draw_tooltip();
   void take_screenshot(const std::string& path);
-  void toggle_recording();
+  void set_recording(bool on);
   void record_step();
   FrameLayout fit_layout() const;
   FrameLayout view_layout() const;
@@ -238,7 +238,7 @@ void Window::on_key(int key, int mods) {
       queue_.push_back(c);
       break;
     case GLFW_KEY_V:
-      push(ViewAction::Record);
+      queue_.push_back(record_command(!recorder_));
       break;
     case GLFW_KEY_TAB:
       session_.set_panel(!session_.panel());
@@ -398,7 +398,7 @@ void Window::run_commands() {
       show_frame();
       take_screenshot(*path);
     }
-    if (session_.take_record_toggle()) toggle_recording();
+    if (const auto record = session_.take_record_request()) set_recording(*record);
   }
 }
 
@@ -408,7 +408,8 @@ void Window::draw_scene() {
   renderer_->render(session_.snapshot(), pixels_, session_.scene(), session_.extras());
 }
 
-void Window::toggle_recording() {
+void Window::set_recording(bool on) {
+  if (on == static_cast<bool>(recorder_)) return;
   if (recorder_) {
     recorder_->finish();
     message_ = "recorded " + std::to_string(recorder_->frames_recorded()) + " frames into " +
@@ -557,7 +558,8 @@ void Window::draw_panel() {
   if (ImGui::CollapsingHeader("Capture")) {
     if (ImGui::Button("Screenshot (S)")) on_key(GLFW_KEY_S, 0);
     ImGui::SameLine();
-    if (ImGui::Button(recorder_ ? "Stop recording (V)" : "Record (V)")) push(ViewAction::Record);
+    if (ImGui::Button(recorder_ ? "Stop recording (V)" : "Record (V)"))
+      queue_.push_back(record_command(!recorder_));
     if (!recorder_) ImGui::InputInt("every k steps", &record_every_);
     record_every_ = std::max(1, record_every_);
   }

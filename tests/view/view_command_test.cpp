@@ -44,6 +44,8 @@ TEST(ViewCommand, ParsesEveryScriptCommand) {
   EXPECT_FALSE(parse("overlay ghosts off").on);
   EXPECT_EQ(parse("overlay contacts on").overlay, Overlay::Contacts);
   EXPECT_FALSE(parse("panel off").on);
+  EXPECT_EQ(parse("record on").action, ViewAction::Record);
+  EXPECT_FALSE(parse("record off").on);
   const ViewCommand shot = parse("screenshot out/a b.png ");
   EXPECT_EQ(shot.action, ViewAction::Screenshot);
   EXPECT_EQ(shot.path, "out/a b.png");  // the rest of the line

@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "cli/cli_testing.hpp"
+#include "render/frame_recorder.hpp"
 #include "render/render_testing.hpp"
 #include "render/video.hpp"
 
@@ -114,6 +115,29 @@ TEST(ViewWindow, ScreenshotWithThePanelOffIsTheRunsFrame) {
   // The panel and the colour mode do show: those screenshots are not the frame.
   EXPECT_GT(pixels_differing(testing::read_png(dir.path() / "with panel.png"), frame), 1000u);
   EXPECT_GT(pixels_differing(testing::read_png(dir.path() / "aggregate.png"), frame), 10u);
+}
+
+// Recording writes the frames `run --render-every` would at the same steps, into a folder
+// that `swarmagg video` turns into a video.
+TEST(ViewWindow, RecordsAFrameEveryKSteps) {
+  SKIP_WITHOUT("xvfb-run");
+  const testing::ScratchDir dir("view-record");
+  write_text(dir.path() / "s.txt", "step 5\nrecord on\nstep 25\nrecord off\nquit\n");
+  const auto view = run_on_xvfb(
+      "view " + kDemo + " --set render.every=10 --size 200x160 --script s.txt", dir.path());
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+  const fs::path frames = dir.path() / "renders" / "demo-view";
+  // Steps 10, 20 and 30 (recording starts at step 5, which is no multiple of 10).
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(fs::exists(frames / FrameRecorder::frame_name(i))) << i;
+  EXPECT_FALSE(fs::exists(frames / FrameRecorder::frame_name(3)));
+  const testing::Image frame = run_frame(dir.path(), "kinematic", 30, "200x160");
+  EXPECT_EQ(pixels_differing(testing::read_png(frames / FrameRecorder::frame_name(2)), frame), 0u);
+  if (!find_program("ffmpeg").empty()) {
+    const auto video =
+        run_swarmagg("video " + frames.string() + " " + (dir.path() / "v.mp4").string());
+    EXPECT_EQ(video.exit_code, 0) << video.output;
+    EXPECT_GT(fs::file_size(dir.path() / "v.mp4"), 0u);
+  }
 }
 
 TEST(ViewWindow, WithoutADisplayExitsAtOnceSayingHowToRunIt) {
