@@ -60,7 +60,8 @@ void add_view_command(CLI::App& app, Action& action) {
   command->add_option(
       "--script", options->script,
       "Commands to run, one a line (step N, play, pause, speed K, select ID, "
-      "colour ..., overlay NAME on|off, panel on|off, screenshot PATH, hash, quit)");
+      "colour ..., overlay NAME on|off, panel on|off, record on|off, screenshot PATH, hash, "
+      "quit; docs/view.md)");
   command->add_option("--size", options->size, "Window size WxH (default render.width x height)");
   command->add_option("--frames", options->frames,
                       "Quit after N frames and print the frame rate (0: run until closed)");
