@@ -7,12 +7,15 @@
 # swarmagg`, docs/python.md) builds with pybind11-dev and python3-dev for Debian's
 # /usr/bin/python3, returns numpy arrays and pandas frames, and its tests run under pytest,
 # the tutorial's plots with matplotlib. h5py with pytest also checks rates' return fraction
-# against trajectories.h5 (tests/python/).
+# against trajectories.h5 (tests/python/). libglfw3-dev, libimgui-dev and libstb-dev build the
+# live view (`swarmagg view`); xvfb, xauth and xdotool run its window tests on a virtual
+# display (tests/view/).
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
   libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev
   libbenchmark-dev gnuplot-nox libhdf5-dev slurm-wlm munge
-  pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib)
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-matplotlib
+  libglfw3-dev libimgui-dev libstb-dev xvfb xauth xdotool)
 optional=(ffmpeg python3-h5py)
 missing=()
 for p in "${packages[@]}"; do

@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   // One line per subcommand (keep this list in the order of `swarmagg --help`).
   add_run_command(app, action);
   add_render_command(app, action);
+  add_view_command(app, action);
+  add_video_command(app, action);
   add_model_command(app, action);
   add_rates_command(app, action);
   add_sweep_command(app, action);

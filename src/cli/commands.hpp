@@ -11,6 +11,8 @@ using Action = std::function<int()>;
 
 void add_run_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
+void add_view_command(CLI::App& app, Action& action);
+void add_video_command(CLI::App& app, Action& action);
 void add_model_command(CLI::App& app, Action& action);
 void add_rates_command(CLI::App& app, Action& action);
 void add_validate_command(CLI::App& app, Action& action);

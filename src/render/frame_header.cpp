@@ -5,6 +5,7 @@
 
 #include "controllers/controller_registry.hpp"
 #include "render/bitmap_font.hpp"
+#include "render/frame_scene.hpp"
 #include "render/palette.hpp"
 
 namespace swarmagg {
@@ -16,13 +17,13 @@ std::string frame_caption(const SwarmSnapshot& snapshot) {
   return text;
 }
 
-bool draw_frame_header(std::span<std::uint8_t> rgba, const FrameLayout& layout,
-                       const SwarmSnapshot& snapshot) {
+bool add_frame_header(FrameScene& scene, const FrameLayout& layout, const SwarmSnapshot& snapshot) {
   const int k = layout.text_scale;
   const int y = kTextPadding * k;
   const int left = kTextPadding * k;
-  const int caption_end = draw_text(rgba, layout.width, layout.height, left, y, k, palette::kText,
-                                    frame_caption(snapshot));
+  const std::string caption = frame_caption(snapshot);
+  scene.labels.push_back({left, y, k, palette::kText, caption});
+  const int caption_end = left + text_width(caption, k);
 
   std::array<AgentState, kAgentStateCount> states{AgentState::Go, AgentState::Approach,
                                                   AgentState::Wait, AgentState::Leave};
@@ -41,14 +42,21 @@ bool draw_frame_header(std::span<std::uint8_t> rgba, const FrameLayout& layout,
   if (x < caption_end + spacing) return false;
   for (const AgentState s : states) {
     if (s == AgentState::Approach && !approach) continue;
-    fill_rect(rgba, layout.width, layout.height, x, y, swatch, swatch, palette::kBodyOutline);
-    fill_rect(rgba, layout.width, layout.height, x + k, y + k, swatch - 2 * k, swatch - 2 * k,
-              palette::state_colour(s));
-    x = draw_text(rgba, layout.width, layout.height, x + swatch + gap, y, k, palette::kText,
-                  to_string(s)) +
-        spacing;
+    scene.rects.push_back({x, y, swatch, swatch, palette::kBodyOutline});
+    scene.rects.push_back({x + k, y + k, swatch - 2 * k, swatch - 2 * k, palette::state_colour(s)});
+    const std::string name(to_string(s));
+    scene.labels.push_back({x + swatch + gap, y, k, palette::kText, name});
+    x += swatch + gap + text_width(name, k) + spacing;
   }
   return true;
+}
+
+bool draw_frame_header(std::span<std::uint8_t> rgba, const FrameLayout& layout,
+                       const SwarmSnapshot& snapshot) {
+  FrameScene header;
+  const bool legend = add_frame_header(header, layout, snapshot);
+  draw_scene_text(rgba, layout.width, layout.height, header);
+  return legend;
 }
 
 }  // namespace swarmagg

@@ -42,4 +42,23 @@ FrameLayout make_frame_layout(int width, int height, const ArenaSpec& arena) {
   return layout;
 }
 
+FrameLayout zoomed_layout(const FrameLayout& fit, double zoom, Vec2 centre) {
+  FrameLayout layout = fit;
+  layout.scale = fit.scale * zoom;
+  const PixelRect view = fit.view();
+  layout.origin_x = view.left + 0.5 * view.width - centre.x * layout.scale;
+  layout.origin_y = view.top + 0.5 * view.height - (fit.arena_height - centre.y) * layout.scale;
+  const double left = std::max<double>(view.left, std::floor(layout.origin_x));
+  const double top = std::max<double>(view.top, std::floor(layout.origin_y));
+  const double right = std::min<double>(
+      view.left + view.width, std::ceil(layout.origin_x + fit.arena_width * layout.scale));
+  const double bottom = std::min<double>(
+      view.top + view.height, std::ceil(layout.origin_y + fit.arena_height * layout.scale));
+  layout.arena.left = static_cast<int>(left);
+  layout.arena.top = static_cast<int>(top);
+  layout.arena.width = std::max(0, static_cast<int>(right - left));
+  layout.arena.height = std::max(0, static_cast<int>(bottom - top));
+  return layout;
+}
+
 }  // namespace swarmagg

@@ -31,9 +31,20 @@ struct FrameLayout {
   Vec2 to_pixel(Vec2 p) const {
     return {origin_x + p.x * scale, origin_y + (arena_height - p.y) * scale};
   }
+  // The arena point under a top-down pixel position (the inverse of to_pixel).
+  Vec2 to_arena(Vec2 pixel) const {
+    return {(pixel.x - origin_x) / scale, arena_height - (pixel.y - origin_y) / scale};
+  }
+  // The part of the image below the header band, where the arena is drawn.
+  PixelRect view() const { return {0, header_height, width, height - header_height}; }
 };
 
 // Throws InputError for sizes outside render_size.hpp's bounds or an empty arena.
 FrameLayout make_frame_layout(int width, int height, const ArenaSpec& arena);
+
+// `fit` magnified `zoom` times about the arena point `centre`, which lands at the centre of
+// the view below the header; `arena` is clipped to that view. zoom 1 about the arena's
+// centre is `fit` itself.
+FrameLayout zoomed_layout(const FrameLayout& fit, double zoom, Vec2 centre);
 
 }  // namespace swarmagg

@@ -1,5 +1,6 @@
 #include "render/frame_recorder.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <regex>
 #include <stdexcept>
@@ -77,6 +78,20 @@ void FrameRecorder::rethrow_error_locked() {
 }
 
 void FrameRecorder::record(const SwarmSnapshot& snapshot) {
+  enqueue([&](std::span<std::uint8_t> pixels) { renderer_.render(snapshot, pixels); });
+}
+
+void FrameRecorder::record_image(std::span<const std::uint8_t> rgba) {
+  if (rgba.size() != static_cast<std::size_t>(width_) * height_ * 4) {
+    throw std::invalid_argument("frame recorder: an image of " + std::to_string(rgba.size()) +
+                                " bytes for " + std::to_string(width_) + "x" +
+                                std::to_string(height_) + " frames");
+  }
+  enqueue(
+      [&](std::span<std::uint8_t> pixels) { std::copy(rgba.begin(), rgba.end(), pixels.begin()); });
+}
+
+void FrameRecorder::enqueue(const std::function<void(std::span<std::uint8_t>)>& fill) {
   std::vector<std::uint8_t> pixels;
   {
     std::unique_lock lock(mutex_);
@@ -95,7 +110,7 @@ void FrameRecorder::record(const SwarmSnapshot& snapshot) {
   }
   pixels.resize(static_cast<std::size_t>(width_) * height_ * 4);
   try {
-    renderer_.render(snapshot, pixels);
+    fill(pixels);
   } catch (...) {
     std::lock_guard lock(mutex_);
     free_buffers_.push_back(std::move(pixels));

@@ -15,7 +15,9 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <mutex>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -42,6 +44,9 @@ class FrameRecorder {
   FrameRecorder& operator=(const FrameRecorder&) = delete;
 
   void record(const SwarmSnapshot& snapshot);
+  // Queues an image drawn elsewhere (width * height * 4 bytes, RGBA, top-down), as the next
+  // frame: the live view records the scene it shows.
+  void record_image(std::span<const std::uint8_t> rgba);
   // Waits until every recorded frame is on disk and stops the encoders; idempotent.
   void finish();
 
@@ -54,6 +59,8 @@ class FrameRecorder {
     std::int64_t index = 0;
     std::vector<std::uint8_t> pixels;
   };
+  // Takes a free buffer (waiting for one), lets `fill` draw into it, queues it for encoding.
+  void enqueue(const std::function<void(std::span<std::uint8_t>)>& fill);
   void encode_loop();
   void rethrow_error_locked();
 

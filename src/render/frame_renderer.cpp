@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_header.hpp"
 #include "render/frame_scene.hpp"
 #include "render/instanced_shapes.hpp"
 #include "render/osmesa_context.hpp"
@@ -52,11 +51,13 @@ struct FrameRenderer::Impl {
   }
 
   // Draws straight into `target` (width * height * 4 bytes): no copy.
-  void render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> target) {
+  void render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> target,
+              const SceneOptions& options = {}, const SceneExtras& extras = {}) {
     if (snapshot.spec == nullptr) throw std::invalid_argument("render: snapshot without a spec");
-    const FrameLayout layout =
+    const FrameLayout fit =
         make_frame_layout(context.width(), context.height(), snapshot.spec->arena);
-    const FrameScene& scene = builder.build(snapshot, layout);
+    const FrameScene& scene = builder.build(snapshot, fit, options, extras);
+    const FrameLayout layout = FrameSceneBuilder::layout_for(fit, options);
     {
       Binding binding(context, target);
       using Layer = InstancedShapes::Layer;
@@ -70,14 +71,22 @@ struct FrameRenderer::Impl {
       shapes->draw(Layer::Rings, scene.rings);
       shapes->draw(Layer::Links, scene.links);
       shapes->draw(Layer::Bodies, scene.bodies);
-      glDisable(GL_SCISSOR_TEST);
+      shapes->draw(Layer::Marks, scene.marks);
+      // Fitted, the walls may reach past the arena's pixels; zoomed, they stay below the header.
+      if (options.fits()) {
+        glDisable(GL_SCISSOR_TEST);
+      } else {
+        const PixelRect view = layout.view();
+        glScissor(view.left, view.top, view.width, view.height);
+      }
       shapes->draw(Layer::Walls, scene.walls);
+      glDisable(GL_SCISSOR_TEST);
       glFinish();
       if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("render: OpenGL error " + std::to_string(error));
       }
     }
-    draw_frame_header(target, layout, snapshot);
+    draw_scene_text(target, layout.width, layout.height, scene);
   }
 
   OsMesaContext context;
@@ -112,12 +121,17 @@ std::span<const std::uint8_t> FrameRenderer::render(const SwarmSnapshot& snapsho
 }
 
 void FrameRenderer::render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> rgba) {
+  render(snapshot, rgba, SceneOptions{});
+}
+
+void FrameRenderer::render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> rgba,
+                           const SceneOptions& options, const SceneExtras& extras) {
   if (rgba.size() != static_cast<std::size_t>(width()) * height() * 4) {
     throw std::invalid_argument("render: output buffer of " + std::to_string(rgba.size()) +
                                 " bytes for a " + std::to_string(width()) + "x" +
                                 std::to_string(height()) + " frame");
   }
-  impl_->render(snapshot, rgba);
+  impl_->render(snapshot, rgba, options, extras);
 }
 
 }  // namespace swarmagg

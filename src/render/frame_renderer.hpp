@@ -13,6 +13,7 @@
 #include "config/world_spec.hpp"
 #include "observers/swarm_snapshot.hpp"
 #include "render/frame_layout.hpp"
+#include "render/scene_options.hpp"
 
 namespace swarmagg {
 
@@ -34,6 +35,10 @@ class FrameRenderer {
   std::span<const std::uint8_t> render(const SwarmSnapshot& snapshot);
   // The same, copied into `rgba`, which must hold exactly width * height * 4 bytes.
   void render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> rgba);
+  // Draws the scene the view options describe (frame_scene.hpp) into `rgba`; the default
+  // options draw the frame above.
+  void render(const SwarmSnapshot& snapshot, std::span<std::uint8_t> rgba,
+              const SceneOptions& options, const SceneExtras& extras = {});
 
  private:
   struct Impl;

@@ -131,7 +131,7 @@ const void* byte_offset(std::size_t offset) {
 
 bool is_circle_layer(InstancedShapes::Layer layer) {
   return layer == InstancedShapes::Layer::Tints || layer == InstancedShapes::Layer::Rings ||
-         layer == InstancedShapes::Layer::Bodies;
+         layer == InstancedShapes::Layer::Bodies || layer == InstancedShapes::Layer::Marks;
 }
 
 }  // namespace

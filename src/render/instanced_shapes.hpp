@@ -19,8 +19,8 @@ class InstancedShapes {
   InstancedShapes(const InstancedShapes&) = delete;
   InstancedShapes& operator=(const InstancedShapes&) = delete;
 
-  enum class Layer { Tints, Rings, Links, Bodies, Walls };
-  static constexpr int kLayerCount = 5;
+  enum class Layer { Tints, Rings, Links, Bodies, Marks, Walls };
+  static constexpr int kLayerCount = 6;
 
   void set_viewport(int width, int height);
   void draw(Layer layer, std::span<const CircleInstance> circles);

@@ -58,10 +58,53 @@ constexpr Rgba8 state_colour(AgentState s) {
   return kText;
 }
 
+// Bodies coloured by aggregate: saturated hues keyed like the tints; agents in none are grey.
+inline constexpr Rgba8 kUnaggregated{170, 170, 170, 255};
+inline constexpr std::array<Rgba8, 8> kAggregateColours{{
+    {0, 114, 178, 255},    // blue
+    {230, 159, 0, 255},    // orange
+    {0, 158, 115, 255},    // bluish green
+    {204, 121, 167, 255},  // reddish purple
+    {86, 180, 233, 255},   // sky blue
+    {213, 94, 0, 255},     // vermillion
+    {120, 94, 240, 255},   // violet
+    {140, 140, 0, 255},    // olive
+}};
+inline constexpr Rgba8 kSelection{0, 0, 0, 255};  // ring around the selected agent
+inline constexpr Rgba8 kApproachRing{204, 121, 167, 160};
+inline constexpr Rgba8 kNeighbourLink{0, 114, 178, 150};
+inline constexpr Rgba8 kContact{213, 0, 0, 230};
+inline constexpr Rgba8 kTrail{90, 90, 90, 110};
+
+// Which of the eight tints (and body colours) an aggregate gets, by its lowest member (Knuth's
+// multiplicative hash).
+constexpr std::size_t aggregate_key(std::int32_t lowest_member) {
+  return ((static_cast<std::uint32_t>(lowest_member) * 2654435761u) >> 16) % kAggregateTints.size();
+}
+
 // The tint of the aggregate whose lowest member index is `lowest_member`.
 constexpr Rgba8 aggregate_tint(std::int32_t lowest_member) {
-  auto h = static_cast<std::uint32_t>(lowest_member) * 2654435761u;  // Knuth's hash
-  return kAggregateTints[(h >> 16) % kAggregateTints.size()];
+  return kAggregateTints[aggregate_key(lowest_member)];
+}
+
+constexpr Rgba8 aggregate_colour(std::int32_t lowest_member) {
+  return kAggregateColours[aggregate_key(lowest_member)];
+}
+
+// Bodies coloured by the size of their aggregate: grey outside one, then from light yellow
+// (pairs) to dark purple (the whole swarm of `agents`), on a logarithmic scale of size.
+constexpr Rgba8 size_colour(std::int32_t size, std::int32_t agents) {
+  if (size < 2) return kUnaggregated;
+  constexpr std::array<Rgba8, 5> ramp{{{253, 231, 37, 255},
+                                       {94, 201, 98, 255},
+                                       {33, 145, 140, 255},
+                                       {59, 82, 139, 255},
+                                       {68, 1, 84, 255}}};
+  // A log2 bucket: 2, 3-4, 5-8, 9-16, more; small swarms reach the last bucket sooner.
+  int bucket = 0;
+  for (std::int32_t s = size - 1; s > 1 && bucket < 4; s >>= 1) ++bucket;
+  if (agents > 1 && size >= agents) bucket = 4;
+  return ramp[bucket];
 }
 
 }  // namespace palette

@@ -32,8 +32,8 @@ nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
   const TimeseriesRow& last = r.rows.back();
   nlohmann::json summary = {{"replicate", r.index},
                             {"seed", r.seed},
-                            {"wall_seconds", r.wall_seconds},
                             {"final_state_hash", state_hash_text(r.final_state_hash)},
+                            {"wall_seconds", r.wall_seconds},
                             {"final",
                              {{"step", last.step},
                               {"time", last.time},

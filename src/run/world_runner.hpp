@@ -23,7 +23,7 @@ struct ReplicateOutcome {
   std::vector<AggregateShape> final_aggregates;         // by aggregate index, as the sizes
   LeaveTally leave;                                     // every LEAVE episode of the run
   std::map<std::string, std::int64_t> partition_steps;  // Soysal worlds
-  std::uint64_t final_state_hash = 0;                   // run/state_hash.hpp
+  std::uint64_t final_state_hash = 0;                   // run/state_hash.hpp, after the last step
   double wall_seconds = 0.0;
 };
 
