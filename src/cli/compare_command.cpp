@@ -5,6 +5,7 @@
 #include "compare/compare_summary.hpp"
 #include "compare/engine_comparison.hpp"
 #include "core/errors.hpp"
+#include "output/output_check.hpp"
 #include "run/interrupt.hpp"
 
 namespace swarmagg::cli {
@@ -23,6 +24,7 @@ int compare_command(const CompareCommandOptions& options) {
     throw InputError("compare needs at least 2 replicates (--replicates)");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
+  check_output_folder(out, options.out.empty() ? "the comparison folder" : "--out");
   install_interrupt_handlers();
   const EngineComparison result = compare_engines(spec, !options.quiet);
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);

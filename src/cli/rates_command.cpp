@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
+#include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
 #include "run/interrupt.hpp"
@@ -25,6 +26,7 @@ int rates_command(const RatesCommandOptions& options) {
   const WorldSpec spec = options.world.load();
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
+  check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   install_interrupt_handlers();
   RateCollector collector(spec);
   RunOptions run_options;

@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "output/output_check.hpp"
 #include "reproduce/reproduce.hpp"
 #include "run/interrupt.hpp"
 
@@ -23,6 +24,7 @@ int reproduce_command(ReproduceCommandOptions options) {
     throw InputError("no paper worlds in " + options.worlds +
                      " (run from the repository root or give --worlds)");
   }
+  check_output_folder(options.reproduce.out, "--out");
   install_interrupt_handlers();
   std::ostream null_stream(nullptr);
   const ReproduceOutcome outcome =

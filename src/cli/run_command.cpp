@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
 #include "rates/rate_outputs.hpp"
@@ -99,6 +100,17 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
   std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
 }
 
+// Every output path is checked before the first step: a long run must not be lost to a
+// folder it cannot write.
+void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
+                   const std::filesystem::path& out, const std::filesystem::path& frames) {
+  check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
+  if (spec.render.every > 0) {
+    check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
+  }
+  if (!options.video.empty()) check_output_file(options.video, "--video");
+}
+
 int run_command(const RunCommandOptions& options) {
   WorldOptions world = options.world;
   add_render_overrides(options, world);
@@ -110,6 +122,7 @@ int run_command(const RunCommandOptions& options) {
   if (!options.video.empty() && spec.render.every <= 0) {
     throw InputError("--video needs frames: give --render-every K (or render.every in the world)");
   }
+  check_outputs(spec, options, out, frames);
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = !options.quiet;

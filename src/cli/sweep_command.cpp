@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
 #include "run/interrupt.hpp"
@@ -43,6 +44,7 @@ int sweep_command(const SweepCommandOptions& command) {
     std::cout << sweep_listing(shard_runs(expand_sweep(plan), options.shard), options.out);
     return 0;
   }
+  check_output_folder(options.out, command.out.empty() ? "the sweep folder" : "--out");
   // Checked once for the whole sweep, so a missing gnuplot is said once, not once a run.
   const std::string plots_missing = command.no_plots ? "" : plots_unavailable_reason();
   if (!plots_missing.empty()) std::cerr << "note: plots skipped: " << plots_missing << "\n";
