@@ -33,6 +33,7 @@ struct RunCommandOptions {
   bool no_model = false;
   bool rates = false;
   bool no_plots = false;
+  bool force = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
@@ -100,10 +101,20 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
   std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
 }
 
+// An earlier run is never replaced without a word: its folder holds results someone may
+// still need.
+void refuse_to_replace(const std::filesystem::path& out) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(out, error) || std::filesystem::is_empty(out, error)) return;
+  throw InputError(out.string() + "/ already holds files (an earlier run?): pass --force to " +
+                   "replace its run, or --out DIR to write this one elsewhere");
+}
+
 // Every output path is checked before the first step: a long run must not be lost to a
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
+  if (!options.force) refuse_to_replace(out);
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
@@ -146,7 +157,7 @@ int run_command(const RunCommandOptions& options) {
   } else {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
-  write_run_folder(spec, result, out);
+  write_run_folder(spec, result, out, options.world.changes());
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;
   if (measure) {
@@ -203,6 +214,8 @@ void add_run_command(CLI::App& app, Action& action) {
                     "`measured` model variants to model.csv");
   command->add_flag("--no-plots", options->no_plots,
                     "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
+  command->add_flag("--force", options->force,
+                    "Replace the run in an existing, non-empty output folder");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });

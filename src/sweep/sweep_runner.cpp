@@ -43,7 +43,7 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, b
   result.wall_seconds = result.replicates.front().wall_seconds;
   observer.reset();  // releases the trajectory's datasets before the file closes
   if (trajectories) trajectories->commit();
-  write_run_folder(run.world, result, folder);
+  write_run_folder(run.world, result, folder, point_overrides(run.point));
   if (!plots) return;
   // A plot gnuplot cannot draw leaves the run complete; `swarmagg plot` can redraw it.
   for (const std::string& failure : draw_run_plots(folder, folder).failures) {

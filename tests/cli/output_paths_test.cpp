@@ -92,4 +92,26 @@ TEST_F(OutputPaths, EveryCommandChecksItsOutputFolderFirst) {
   }
 }
 
+// A second run into the folder of an earlier one is refused, before any work, until
+// --force says to replace it.
+TEST_F(OutputPaths, AnEarlierRunIsReplacedOnlyWithForce) {
+  const fs::path out = dir_ / "run";
+  const std::string tiny = "run worlds/examples/demo.yaml --replicates 1 --no-plots --quiet ";
+  ASSERT_EQ(swarmagg(tiny + "--set run.duration=5 --out " + out.string()).exit_code, 0);
+  const std::string earlier = swarmagg::testing::read_all(out / "world.resolved.yaml");
+  const Outcome refused = swarmagg(kLongRun + "--out " + out.string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_THAT(refused.output, HasSubstr(out.string()));
+  EXPECT_THAT(refused.output, HasSubstr("--force"));
+  EXPECT_EQ(swarmagg::testing::read_all(out / "world.resolved.yaml"), earlier);
+  const Outcome forced =
+      swarmagg(tiny + "--set run.duration=6 --set robots.count=20 --force --out " + out.string());
+  ASSERT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_THAT(swarmagg::testing::read_all(out / "world.resolved.yaml"), HasSubstr("count: 20"));
+  // The summary names what the command line changed of the world file.
+  EXPECT_THAT(swarmagg::testing::read_all(out / "summary.json"),
+              HasSubstr("\"overrides\": [\n    \"run.duration=6\",\n    \"robots.count=20\",\n"
+                        "    \"run.replicates=1\"\n  ]"));
+}
+
 }  // namespace
