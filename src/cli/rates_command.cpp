@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
 #include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
@@ -20,6 +21,7 @@ struct RatesCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  ProgressOption progress;
 };
 
 int rates_command(const RatesCommandOptions& options) {
@@ -30,7 +32,7 @@ int rates_command(const RatesCommandOptions& options) {
   install_interrupt_handlers();
   RateCollector collector(spec);
   RunOptions run_options;
-  run_options.progress = !options.quiet;
+  run_options.progress = options.progress.shown(options.quiet);
   run_options.observers = [&collector](int index) { return collector.observer(index); };
   const RunResult result = run_world(spec, run_options);
   const std::vector<RateRow> rows = write_rate_outputs(spec, collector.total(), out);
@@ -52,6 +54,7 @@ void add_rates_command(CLI::App& app, Action& action) {
       "--out", options->out,
       "Output folder for rates.csv, rates.json and plots (default runs/<world name>)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->callback([options, &action] { action = [options] { return rates_command(*options); }; });
 }
 

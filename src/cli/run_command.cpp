@@ -4,6 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
@@ -29,6 +30,7 @@ struct RunCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  ProgressOption progress;
   bool check = false;
   bool no_model = false;
   bool rates = false;
@@ -136,7 +138,7 @@ int run_command(const RunCommandOptions& options) {
   check_outputs(spec, options, out, frames);
   install_interrupt_handlers();
   RunOptions run_options;
-  run_options.progress = !options.quiet;
+  run_options.progress = options.progress.shown(options.quiet);
   run_options.check = options.check;
   const auto trajectories = trajectory_writer(spec, out);
   run_options.observers =
@@ -165,14 +167,20 @@ int run_command(const RunCommandOptions& options) {
     rows = options.rates ? write_rate_outputs(spec, tally, out) : measured_rate_rows(spec, tally);
     measured = measured_terms(rows);
   }
-  if (!options.no_model) write_predictions(spec, out, measured ? &*measured : nullptr);
+  if (!options.no_model) {
+    options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
+    write_predictions(spec, out, measured ? &*measured : nullptr);
+  }
   if (!options.quiet && options.rates) {
     for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
     if (controller_rules(spec).model != ModelFamily::Encounters)
       std::cout << measured_variant_note(spec, *measured) << "\n";
   }
   if (!options.quiet) print_summary(spec, result, out);
-  if (!options.no_plots) draw_plots(out, options.quiet);
+  if (!options.no_plots) {
+    options.progress.phase(options.quiet, spec.name, "drawing the plots (gnuplot)");
+    draw_plots(out, options.quiet);
+  }
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
   if (trajectories && !options.quiet) {
@@ -207,6 +215,7 @@ void add_run_command(CLI::App& app, Action& action) {
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");
   command->add_flag("--rates", options->rates,

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
@@ -21,6 +22,7 @@ struct SweepCommandOptions {
   std::string shard;
   bool list = false;
   bool quiet = false;
+  ProgressOption progress;
   bool no_plots = false;
 };
 
@@ -39,7 +41,7 @@ int sweep_command(const SweepCommandOptions& command) {
                                     : std::filesystem::path(command.out);
   options.threads = command.threads;
   options.shard = command.shard.empty() ? Shard{} : parse_shard(command.shard);
-  options.progress = !command.quiet;
+  options.progress = command.progress.shown(command.quiet);
   if (command.list) {
     std::cout << sweep_listing(shard_runs(expand_sweep(plan), options.shard), options.out);
     return 0;
@@ -60,10 +62,12 @@ int sweep_command(const SweepCommandOptions& command) {
     return 0;
   }
   // An unsharded sweep holds every run, so it merges itself.
+  command.progress.phase(command.quiet, plan.name, "merging the runs");
   const MergeReport merged = merge_sweep({options.out}, options.out);
   if (!command.quiet)
     std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n";
   if (!options.plots) return 0;
+  command.progress.phase(command.quiet, plan.name, "drawing the sweep's plots (gnuplot)");
   const PlotOutcome plots = draw_sweep_plots(options.out, options.out);
   for (const std::string& failure : plots.failures) std::cerr << "warning: " << failure << "\n";
   if (!command.quiet) {
@@ -90,6 +94,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->add_flag("--no-plots", options->no_plots,
                     "Skip the plots of each run and of the merged sweep (gnuplot)");
   command->callback([options, &action] { action = [options] { return sweep_command(*options); }; });
