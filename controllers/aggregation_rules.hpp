@@ -2,6 +2,8 @@
 // The parameters of the aggregation state machine that Bayindir's, Soysal's and the
 // collision experiment's controllers share (SPEC 3); each controller only builds these.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "config/world_spec.hpp"
 #include "control_interface/controller_rules.hpp"
@@ -28,6 +30,10 @@ struct AggregationRules {
   double tumble = 0.0;                    // heading redraw probability per step while GO
   CompactionRule compaction;
 };
+
+// The shared controller.* keys every rule set below reads (joining, leaving, the timeout, the
+// isolated wait, compaction), followed by `own`: a registration's shared_keys.
+std::vector<std::string> aggregation_keys(std::vector<std::string> own);
 
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives
 // `perceived` agents within s (which of the two is i is the rule's size_source).
