@@ -19,7 +19,7 @@ struct SweepOptions {
   int threads = 0;  // 0: the machine's cores
   Shard shard;
   bool progress = false;  // a progress line on stderr (run/progress_line.hpp)
-  bool plots = false;     // draw each run's plots (run_plots.hpp); the caller checks for gnuplot
+  bool plots = false;  // draw each run's own plots (run_plots.hpp); the caller checks for gnuplot
 };
 
 struct SweepReport {
