@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 #include "core/errors.hpp"
 #include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"

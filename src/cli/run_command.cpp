@@ -6,6 +6,7 @@
 #include "cli/frame_output.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"

@@ -1,5 +1,7 @@
 #include "config/world_keys.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>

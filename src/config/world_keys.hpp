@@ -2,13 +2,18 @@
 // The registry of world-file keys (SPEC 7): every dotted key path, what it expects, how to
 // read it into a WorldSpec and how to write it back. The loader, `--set`, `validate` and
 // the resolved-world writer all go through this one table.
-#include <yaml-cpp/yaml.h>
-
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "config/world_spec.hpp"
+
+// Declared, not included: this header reaches most of the code base through the controller
+// catalog, and yaml-cpp's headers are among the slowest to compile; only the files that read
+// or write nodes include <yaml-cpp/yaml.h>.
+namespace YAML {
+class Node;
+}
 
 namespace swarmagg {
 

@@ -35,6 +35,17 @@ std::filesystem::path file_in_the_way(const std::filesystem::path& folder) {
   return {};
 }
 
+// The outermost folder of `folder` that does not exist yet (empty when it exists).
+std::filesystem::path first_missing(const std::filesystem::path& folder) {
+  std::error_code ignored;
+  std::filesystem::path missing;
+  for (std::filesystem::path p = folder; !p.empty() && p != p.parent_path(); p = p.parent_path()) {
+    if (std::filesystem::exists(p, ignored)) break;
+    missing = p;
+  }
+  return missing;
+}
+
 // Why no file can be written in `folder` (created if missing), or "" when one can.
 std::string folder_problem(const std::filesystem::path& folder) {
   if (folder.empty()) return "an empty path";
@@ -42,15 +53,20 @@ std::string folder_problem(const std::filesystem::path& folder) {
     return file == folder ? "is a file, not a folder (outputs go into a folder)"
                           : file.string() + " is a file, so no folder can be made below it";
   }
+  // The folders made for the probe are removed after it: a run refused later (a world the
+  // engine rejects) leaves no empty folder, and the writers make them again.
+  const std::filesystem::path made = first_missing(folder);
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) return "cannot create the folder (" + reason(error.value()) + ")";
   const std::filesystem::path probe =
       folder / (".swarmagg-write-test." + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return "cannot write in the folder (" + reason(errno) + ")";
-  ::close(fd);
+  const int open_error = errno;
+  if (fd >= 0) ::close(fd);
   std::filesystem::remove(probe, error);
+  if (!made.empty()) std::filesystem::remove_all(made, error);
+  if (fd < 0) return "cannot write in the folder (" + reason(open_error) + ")";
   return "";
 }
 
