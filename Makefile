@@ -3,10 +3,14 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SWARMAGG := $(BUILD_DIR)/swarmagg
 
-.PHONY: deps configure build install demo test test-slurm bench microbench clean fuzz test-sanitize
+.PHONY: deps deps-test configure build install demo test test-slurm bench microbench clean fuzz test-sanitize
 
 deps:
 	@scripts/install-deps.sh
+
+# What only the tests need besides (Slurm and munge for tests/cluster/).
+deps-test:
+	@scripts/install-deps.sh --test
 
 configure: deps
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -23,18 +27,18 @@ install: build
 demo: build
 	@scripts/demo.sh $(SWARMAGG)
 
-test: build
+test: deps-test build
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
 # A single-node Slurm on localhost runs the example sweep through examples/slurm/submit.sh
 # (tests/cluster/slurm_sweep_test.sh; needs root for munged and slurmd).
-test-slurm: build
+test-slurm: deps-test build
 	@tests/cluster/slurm_sweep_test.sh $(BUILD_DIR)
 
 # The whole suite built with AddressSanitizer and UndefinedBehaviorSanitizer (Debug, so
 # every replicate also checks its invariants, at -O1 to keep it fast enough).
 SANITIZE_DIR ?= build-sanitize
-test-sanitize: deps
+test-sanitize: deps-test
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
 	  -DSWARMAGG_SANITIZE=ON >/dev/null
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS)

@@ -20,6 +20,14 @@ AggregationRules common_rules(const WorldSpec& spec) {
 
 }  // namespace
 
+std::vector<std::string> aggregation_keys(std::vector<std::string> own) {
+  std::vector<std::string> keys = {"controller.join", "controller.leave",
+                                   "controller.isolated_wait", "controller.leave_timeout"};
+  for (std::string& key : compaction_keys()) keys.push_back(std::move(key));
+  for (std::string& key : own) keys.push_back(std::move(key));
+  return keys;
+}
+
 double leave_probability(const LeaveRule& rule, int aggregate_size, int perceived) {
   const int size = rule.size_source == LeaveSize::Neighbours ? perceived + 1 : aggregate_size;
   return leave_probability(rule.law, rule.base, size);

@@ -3,6 +3,8 @@
 // collision experiment's controllers share (docs/controllers.md); each controller only builds
 // these.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "config/world_spec.hpp"
 #include "control_interface/controller_rules.hpp"
@@ -29,6 +31,10 @@ struct AggregationRules {
   double tumble = 0.0;                    // heading redraw probability per step while GO
   CompactionRule compaction;
 };
+
+// The shared controller.* keys every rule set below reads (joining, leaving, the timeout, the
+// isolated wait, compaction), followed by `own`: a registration's shared_keys.
+std::vector<std::string> aggregation_keys(std::vector<std::string> own);
 
 // P_l(i) per step for an agent in an aggregate of `aggregate_size` agents that perceives
 // `perceived` agents within s (which of the two is i is the rule's size_source).

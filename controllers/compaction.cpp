@@ -18,4 +18,9 @@ double standing_norm2(double tolerance) {
   return square;
 }
 
+std::vector<std::string> compaction_keys() {
+  return {"controller.compaction.enabled", "controller.compaction.spacing",
+          "controller.compaction.gain", "controller.compaction.tolerance"};
+}
+
 }  // namespace swarmagg

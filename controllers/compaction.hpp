@@ -5,6 +5,8 @@
 // enclosed. Each controller decides who its members are; the arithmetic lives here once.
 #include <algorithm>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "config/world_spec.hpp"
 #include "control_interface/neighbour_lists.hpp"
@@ -22,6 +24,8 @@ struct CompactionRule {
 
 // controller.compaction.* of the world (spacing resolved to 2r when unset).
 CompactionRule compaction_rule(const WorldSpec& spec);
+// Those keys' paths, for the registrations' ControllerCatalogEntry::shared_keys.
+std::vector<std::string> compaction_keys();
 
 // A leaver counts as enclosed when the vectors to the agents it perceives (s = 2 spacing)
 // sum to less than this fraction of their lengths. In hexagonal packs at spacing 2r the

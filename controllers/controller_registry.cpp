@@ -1,5 +1,9 @@
 #include "controllers/controller_registry.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+
 #include "core/errors.hpp"
 
 // Every controller, once: X(name) stands for name_registration(), defined in controllers/name/.
@@ -19,21 +23,52 @@ namespace swarmagg {
 SWARMAGG_CONTROLLERS(SWARMAGG_DECLARE_REGISTRATION)
 #undef SWARMAGG_DECLARE_REGISTRATION
 
-const std::vector<ControllerRegistration>& controller_registrations() {
+namespace {
+
+std::vector<ControllerRegistration>& registrations() {
 #define SWARMAGG_LIST_REGISTRATION(name) name##_registration(),
-  static const std::vector<ControllerRegistration> all = {
+  static std::vector<ControllerRegistration> all = {
       SWARMAGG_CONTROLLERS(SWARMAGG_LIST_REGISTRATION)};
 #undef SWARMAGG_LIST_REGISTRATION
   return all;
 }
 
+std::atomic<bool> catalog_built{false};
+
+}  // namespace
+
+const std::vector<ControllerRegistration>& controller_registrations() {
+  return registrations();
+}
+
+void register_controller(ControllerRegistration registration) {
+  if (catalog_built) {
+    throw std::logic_error("controller '" + registration.world.type +
+                           "' registered after the key table was built");
+  }
+  for (const ControllerRegistration& r : registrations()) {
+    if (r.world.type == registration.world.type) {
+      throw std::logic_error("controller '" + r.world.type + "' is registered twice");
+    }
+  }
+  registrations().push_back(std::move(registration));
+}
+
 const std::vector<ControllerCatalogEntry>& controller_catalog() {
   static const std::vector<ControllerCatalogEntry> entries = [] {
+    catalog_built = true;
     std::vector<ControllerCatalogEntry> world;
     for (const ControllerRegistration& r : controller_registrations()) world.push_back(r.world);
     return world;
   }();
   return entries;
+}
+
+bool controller_reads(const WorldSpec& spec, const WorldKey& key) {
+  if (!key.path.starts_with("controller.") || key.path == "controller.type") return true;
+  if (!key.controller.empty()) return key.controller == spec.controller.type;
+  const std::vector<std::string>& shared = catalog_entry(spec.controller.type).shared_keys;
+  return std::find(shared.begin(), shared.end(), key.path) != shared.end();
 }
 
 const ControllerRegistration& registration_of(const std::string& type) {

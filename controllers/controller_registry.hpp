@@ -24,6 +24,10 @@ struct ControllerRegistration {
 };
 
 const std::vector<ControllerRegistration>& controller_registrations();
+// Adds a controller this library does not list (a test suite's, a program's own). Call it
+// before the first world is read: the key table is built once, from the controllers
+// registered then. Throws std::logic_error when it comes later or the type is taken.
+void register_controller(ControllerRegistration registration);
 // The registration of `type`; throws InputError when none is registered under that name.
 const ControllerRegistration& registration_of(const std::string& type);
 

@@ -4,7 +4,8 @@ set -euo pipefail
 swarmagg=${1:-build/swarmagg}
 world=worlds/examples/demo.yaml
 out=runs/demo
-"$swarmagg" run "$world" --out "$out" --render-every 20 --render-dir renders/demo
+# --force: the demo writes the same folders each time it is run.
+"$swarmagg" run "$world" --out "$out" --render-every 20 --render-dir renders/demo --force
 echo
 echo "demo outputs:"
 echo "  $out/timeseries.csv   NOA, state counts and events over time, per replicate"

@@ -20,7 +20,8 @@ ControllerRules rules(const WorldSpec& spec) {
 
 ControllerRegistration bayindir_registration() {
   ControllerRegistration r;
-  r.world = {"bayindir", {}, detection_radius, detection_radius, nullptr};
+  r.world = {"bayindir",       {},      detection_radius,
+             detection_radius, nullptr, aggregation_keys({"controller.p_leave"})};
   r.make = [](const WorldSpec& spec) -> std::unique_ptr<Controller> {
     return std::make_unique<AggregationController>(bayindir_rules(spec));
   };

@@ -59,7 +59,10 @@ ControllerRules rules(const WorldSpec& spec) {
 
 ControllerRegistration cockroach_registration() {
   ControllerRegistration r;
-  r.world = {"cockroach", {stop_key(), leave_key()}, detection_radius, detection_radius, nullptr};
+  std::vector<std::string> reads = {"controller.leave_timeout"};
+  for (std::string& key : compaction_keys()) reads.push_back(std::move(key));
+  r.world = {"cockroach", {stop_key(), leave_key()}, detection_radius, detection_radius,
+             nullptr,     std::move(reads)};
   r.make = make;
   r.rules = rules;
   return r;

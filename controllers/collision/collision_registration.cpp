@@ -37,7 +37,12 @@ ControllerRules rules(const WorldSpec& spec) {
 
 ControllerRegistration collision_registration() {
   ControllerRegistration r;
-  r.world = {"collision", {}, sensing_radius, perception_radius, nullptr};
+  // Paper mode joins and leaves by its own rule; compaction is off in its rules but its
+  // spacing is checked against the world and packs the observers' shapes.
+  std::vector<std::string> reads = {"controller.collision_mode", "controller.tumble",
+                                    "controller.isolated_wait", "controller.leave_timeout"};
+  for (std::string& key : compaction_keys()) reads.push_back(std::move(key));
+  r.world = {"collision", {}, sensing_radius, perception_radius, nullptr, std::move(reads)};
   r.make = [](const WorldSpec& spec) -> std::unique_ptr<Controller> {
     if (ghost(spec)) {
       return std::make_unique<GhostController>(spec.robots.speed, spec.controller.tumble);

@@ -30,7 +30,13 @@ ControllerRules rules(const WorldSpec& spec) {
 
 ControllerRegistration soysal_registration() {
   ControllerRegistration r;
-  r.world = {"soysal", {}, sensing_radius, sensing_radius, check};
+  r.world = {"soysal",
+             {},
+             sensing_radius,
+             sensing_radius,
+             check,
+             aggregation_keys({"controller.p0", "controller.leave_law", "controller.leave_size",
+                               "controller.approach_radius"})};
   r.make = [](const WorldSpec& spec) -> std::unique_ptr<Controller> {
     return std::make_unique<AggregationController>(soysal_rules(spec));
   };

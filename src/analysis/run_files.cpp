@@ -36,6 +36,17 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   return run;
 }
 
+std::string run_title(const RunFiles& run) {
+  std::string title = run.world.name;
+  const auto overrides = run.summary.find("overrides");
+  if (overrides == run.summary.end() || !overrides->is_array() || overrides->empty()) return title;
+  std::string changed;
+  for (const auto& assignment : *overrides) {
+    changed += (changed.empty() ? "" : ", ") + assignment.get<std::string>();
+  }
+  return title + " (" + changed + ")";
+}
+
 std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run) {
   std::vector<std::vector<int>> sizes;
   for (const auto& replicate : run.summary.at("replicates")) {

@@ -24,6 +24,10 @@ struct RunFiles {
 // is written last) or a file is unreadable.
 RunFiles read_run_files(const std::filesystem::path& folder);
 
+// The world's name for plot titles, followed by the overrides the run was given, if any:
+// "full-0.0025 (robots.count=80)".
+std::string run_title(const RunFiles& run);
+
 // Each replicate's final aggregate sizes from summary.json, in replicate order.
 std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run);
 

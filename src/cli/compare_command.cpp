@@ -1,10 +1,12 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
 #include "compare/compare_summary.hpp"
 #include "compare/engine_comparison.hpp"
 #include "core/errors.hpp"
+#include "output/output_check.hpp"
 #include "run/interrupt.hpp"
 
 namespace swarmagg::cli {
@@ -14,6 +16,7 @@ struct CompareCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  ProgressOption progress;
 };
 
 int compare_command(const CompareCommandOptions& options) {
@@ -23,8 +26,9 @@ int compare_command(const CompareCommandOptions& options) {
     throw InputError("compare needs at least 2 replicates (--replicates)");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
+  check_output_folder(out, options.out.empty() ? "the comparison folder" : "--out");
   install_interrupt_handlers();
-  const EngineComparison result = compare_engines(spec, !options.quiet);
+  const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet));
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   if (!options.quiet) {
     std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";
@@ -45,6 +49,7 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
   command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->callback(
       [options, &action] { action = [options] { return compare_command(*options); }; });
 }

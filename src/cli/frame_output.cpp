@@ -1,5 +1,6 @@
 #include "cli/frame_output.hpp"
 
+#include "config/world_override.hpp"
 #include "render/frame_recorder.hpp"
 #include "render/render_size.hpp"
 #include "run/replicate.hpp"

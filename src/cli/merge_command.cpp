@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "output/output_check.hpp"
 #include "sweep/sweep_merge.hpp"
 
 namespace swarmagg::cli {
@@ -14,6 +15,7 @@ struct MergeCommandOptions {
 
 int merge_command(const MergeCommandOptions& command) {
   const std::vector<std::filesystem::path> folders(command.folders.begin(), command.folders.end());
+  check_output_folder(command.out, "--out");
   const MergeReport report = merge_sweep(folders, command.out);
   if (!command.quiet) {
     std::cout << "merged " << report.runs << " runs (" << report.points

@@ -8,6 +8,7 @@
 #include "cli/world_options.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "output/output_check.hpp"
 #include "rates/rates_csv.hpp"
 #include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
@@ -26,6 +27,7 @@ int model_command(const ModelCommandOptions& options) {
   const WorldSpec spec = options.world.load();
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
+  check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   const auto start = std::chrono::steady_clock::now();
   std::optional<MeasuredTerms> measured;
   if (!options.rates.empty()) measured = measured_terms(read_rates_csv(options.rates));

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
 
@@ -19,6 +20,7 @@ int plot_command(const PlotCommandOptions& options) {
   const std::filesystem::path folder(options.folder);
   const std::filesystem::path out =
       options.out.empty() ? folder : std::filesystem::path(options.out);
+  if (!options.out.empty()) check_output_folder(out, "--out");
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
   const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
   for (const std::string& failure : outcome.failures) std::cerr << "swarmagg: " << failure << "\n";

@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
 #include "run/interrupt.hpp"
@@ -18,15 +20,17 @@ struct RatesCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  ProgressOption progress;
 };
 
 int rates_command(const RatesCommandOptions& options) {
   const WorldSpec spec = options.world.load();
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
+  check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   install_interrupt_handlers();
   RunOptions run_options;
-  run_options.progress = !options.quiet;
+  run_options.progress = options.progress.shown(options.quiet);
   const MeasuredRun run = run_world_measuring(spec, run_options, true);
   const std::vector<RateRow> rows = write_rate_outputs(spec, *run.rates, out);
   if (options.quiet) return 0;
@@ -48,6 +52,7 @@ void add_rates_command(CLI::App& app, Action& action) {
       "--out", options->out,
       "Output folder for rates.csv, rates.json and plots (default runs/<world name>)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->callback([options, &action] { action = [options] { return rates_command(*options); }; });
 }
 

@@ -9,7 +9,9 @@
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 #include "core/errors.hpp"
+#include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "output/trajectory_reader.hpp"
 #include "render/frame_recorder.hpp"
@@ -48,7 +50,8 @@ int render_command(const RenderCommandOptions& options) {
   const std::filesystem::path folder = options.out.empty()
                                            ? std::filesystem::path(options.run_dir) / "frames"
                                            : std::filesystem::path(options.out);
-
+  check_output_folder(folder, options.out.empty() ? "the frame folder" : "--out");
+  if (!options.video.empty()) check_output_file(options.video, "--video");
   install_interrupt_handlers();
   FrameRecorder recorder(spec, folder);
   TrajectoryRow row;

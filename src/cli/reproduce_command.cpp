@@ -1,7 +1,9 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "core/errors.hpp"
+#include "output/output_check.hpp"
 #include "reproduce/reproduce.hpp"
 #include "run/interrupt.hpp"
 
@@ -13,16 +15,18 @@ struct ReproduceCommandOptions {
   std::string out = "reproduce";
   std::string worlds = "worlds/paper";
   bool quiet = false;
+  ProgressOption progress;
 };
 
 int reproduce_command(ReproduceCommandOptions options) {
   options.reproduce.out = options.out;
   options.reproduce.worlds = options.worlds;
-  options.reproduce.progress = !options.quiet;
+  options.reproduce.progress = options.progress.shown(options.quiet);
   if (!std::filesystem::is_directory(options.reproduce.worlds)) {
     throw InputError("no paper worlds in " + options.worlds +
                      " (run from the repository root or give --worlds)");
   }
+  check_output_folder(options.reproduce.out, "--out");
   install_interrupt_handlers();
   std::ostream null_stream(nullptr);
   const ReproduceOutcome outcome =
@@ -63,6 +67,7 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)");
   command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->callback(
       [options, &action] { action = [options] { return reproduce_command(*options); }; });
 }

@@ -5,11 +5,14 @@
 #include "analysis/model_errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
 #include "rates/rate_outputs.hpp"
@@ -30,10 +33,12 @@ struct RunCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  ProgressOption progress;
   bool check = false;
   bool no_model = false;
   bool rates = false;
   bool no_plots = false;
+  bool force = false;
   std::optional<int> render_every;
   std::optional<std::string> render_size;
   std::optional<std::string> render_dir;
@@ -101,6 +106,27 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
   std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
 }
 
+// An earlier run is never replaced without a word: its folder holds results someone may
+// still need.
+void refuse_to_replace(const std::filesystem::path& out) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(out, error) || std::filesystem::is_empty(out, error)) return;
+  throw InputError(out.string() + "/ already holds files (an earlier run?): pass --force to " +
+                   "replace its run, or --out DIR to write this one elsewhere");
+}
+
+// Every output path is checked before the first step: a long run must not be lost to a
+// folder it cannot write.
+void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
+                   const std::filesystem::path& out, const std::filesystem::path& frames) {
+  if (!options.force) refuse_to_replace(out);
+  check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
+  if (spec.render.every > 0) {
+    check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
+  }
+  if (!options.video.empty()) check_output_file(options.video, "--video");
+}
+
 int run_command(const RunCommandOptions& options) {
   WorldOptions world = options.world;
   add_render_overrides(options, world);
@@ -112,9 +138,10 @@ int run_command(const RunCommandOptions& options) {
   if (!options.video.empty() && spec.render.every <= 0) {
     throw InputError("--video needs frames: give --render-every K (or render.every in the world)");
   }
+  check_outputs(spec, options, out, frames);
   install_interrupt_handlers();
   RunOptions run_options;
-  run_options.progress = !options.quiet;
+  run_options.progress = options.progress.shown(options.quiet);
   run_options.check = options.check;
   const auto trajectories = trajectory_writer(spec, out);
   run_options.observers =
@@ -129,7 +156,7 @@ int run_command(const RunCommandOptions& options) {
   } else {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
-  write_run_folder(spec, result, out);
+  write_run_folder(spec, result, out, options.world.changes());
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;
   if (run.rates) {
@@ -138,6 +165,7 @@ int run_command(const RunCommandOptions& options) {
     measured = measured_terms(rows);
   }
   if (!options.no_model) {
+    options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
     write_predictions(spec, out, measured ? &*measured : nullptr);
     write_model_errors(out);
   }
@@ -147,7 +175,10 @@ int run_command(const RunCommandOptions& options) {
       std::cout << measured_variant_note(spec, *measured) << "\n";
   }
   if (!options.quiet) print_summary(spec, result, out);
-  if (!options.no_plots) draw_plots(out, options.quiet);
+  if (!options.no_plots) {
+    options.progress.phase(options.quiet, spec.name, "drawing the plots (gnuplot)");
+    draw_plots(out, options.quiet);
+  }
   if (spec.render.every > 0 && !options.quiet)
     std::cout << "frames in " << frames.string() << "/\n";
   if (trajectories && !options.quiet) {
@@ -182,6 +213,7 @@ void add_run_command(CLI::App& app, Action& action) {
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");
   command->add_flag("--rates", options->rates,
@@ -189,6 +221,8 @@ void add_run_command(CLI::App& app, Action& action) {
                     "`measured` model variants to model.csv");
   command->add_flag("--no-plots", options->no_plots,
                     "Skip the plots (noa.png, states.png, ... drawn with gnuplot)");
+  command->add_flag("--force", options->force,
+                    "Replace the run in an existing, non-empty output folder");
   command->add_flag("--check", options->check,
                     "Check invariants after every step (always on in Debug builds)");
   command->callback([options, &action] { action = [options] { return run_command(*options); }; });

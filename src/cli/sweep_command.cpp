@@ -1,6 +1,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
+#include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
 #include "run/interrupt.hpp"
@@ -20,7 +22,9 @@ struct SweepCommandOptions {
   std::string shard;
   bool list = false;
   bool quiet = false;
+  ProgressOption progress;
   bool no_plots = false;
+  bool run_plots = false;
 };
 
 void print_report(const SweepPlan& plan, const SweepOptions& options, const SweepReport& report) {
@@ -38,15 +42,18 @@ int sweep_command(const SweepCommandOptions& command) {
                                     : std::filesystem::path(command.out);
   options.threads = command.threads;
   options.shard = command.shard.empty() ? Shard{} : parse_shard(command.shard);
-  options.progress = !command.quiet;
+  options.progress = command.progress.shown(command.quiet);
   if (command.list) {
     std::cout << sweep_listing(shard_runs(expand_sweep(plan), options.shard), options.out);
     return 0;
   }
+  check_output_folder(options.out, command.out.empty() ? "the sweep folder" : "--out");
   // Checked once for the whole sweep, so a missing gnuplot is said once, not once a run.
   const std::string plots_missing = command.no_plots ? "" : plots_unavailable_reason();
   if (!plots_missing.empty()) std::cerr << "note: plots skipped: " << plots_missing << "\n";
-  options.plots = !command.no_plots && plots_missing.empty();
+  const bool sweep_plots = !command.no_plots && plots_missing.empty();
+  // Each run's own plots cost more than a short run itself: drawn only when asked.
+  options.plots = sweep_plots && command.run_plots;
   install_interrupt_handlers();
   const SweepReport report = run_sweep(plan, options);
   if (!command.quiet) print_report(plan, options, report);
@@ -58,10 +65,12 @@ int sweep_command(const SweepCommandOptions& command) {
     return 0;
   }
   // An unsharded sweep holds every run, so it merges itself.
+  command.progress.phase(command.quiet, plan.name, "merging the runs");
   const MergeReport merged = merge_sweep({options.out}, options.out);
   if (!command.quiet)
     std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n";
-  if (!options.plots) return 0;
+  if (!sweep_plots) return 0;
+  command.progress.phase(command.quiet, plan.name, "drawing the sweep's plots (gnuplot)");
   const PlotOutcome plots = draw_sweep_plots(options.out, options.out);
   for (const std::string& failure : plots.failures) std::cerr << "warning: " << failure << "\n";
   if (!command.quiet) {
@@ -88,8 +97,10 @@ void add_sweep_command(CLI::App& app, Action& action) {
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
-  command->add_flag("--no-plots", options->no_plots,
-                    "Skip the plots of each run and of the merged sweep (gnuplot)");
+  options->progress.add_to(*command);
+  command->add_flag("--no-plots", options->no_plots, "Skip the merged sweep's plots (gnuplot)");
+  command->add_flag("--run-plots", options->run_plots,
+                    "Also draw each run's own plots in its folder (noa.png, states.png, ...)");
   command->callback([options, &action] { action = [options] { return sweep_command(*options); }; });
 }
 

@@ -25,4 +25,12 @@ WorldSpec WorldOptions::load() const {
   return load_world_with(path, all);
 }
 
+std::vector<std::string> WorldOptions::changes() const {
+  std::vector<std::string> result = overrides;
+  if (engine) result.push_back("engine.type=" + *engine);
+  if (replicates) result.push_back("run.replicates=" + std::to_string(*replicates));
+  if (seed) result.push_back("run.seed=" + std::to_string(*seed));
+  return result;
+}
+
 }  // namespace swarmagg::cli

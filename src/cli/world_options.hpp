@@ -23,6 +23,10 @@ struct WorldOptions {
   // Adds WORLD and --set; with `run_options`, also --engine/--replicates/--seed/--threads.
   void add_to(CLI::App& command, bool run_options = true);
   WorldSpec load() const;
+  // What these options change of the world file's simulation, as key=value
+  // ("robots.count=80", "engine.type=box2d"), in the order given; not run.threads, which
+  // changes no result.
+  std::vector<std::string> changes() const;
 };
 
 }  // namespace swarmagg::cli

@@ -28,14 +28,29 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   c.noa_difference = welch_interval(c.a.final_noa, c.b.final_noa);
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
+  c.encounter_rate_difference = welch_interval(c.a.encounter_rates, c.b.encounter_rates);
+  c.escape_fraction = two_proportion_test(c.a.leave.escapes.total(), c.a.leave.attempts.total(),
+                                          c.b.leave.escapes.total(), c.b.leave.attempts.total());
   c.has_leaving =
       controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;
   return c;
 }
 
-bool Comparison::differs() const {
+bool Comparison::noa_differs() const {
   return noa_difference.p_value < kSignificance || ks_noa.p_value < kSignificance ||
          ks_sizes.p_value < kSignificance;
+}
+
+bool Comparison::encounter_rate_differs() const {
+  return encounter_rate_difference.p_value < kSignificance;
+}
+
+bool Comparison::escape_fraction_differs() const {
+  return has_leaving && escape_fraction.p_value < kSignificance;
+}
+
+bool Comparison::differs() const {
+  return noa_differs() || encounter_rate_differs() || escape_fraction_differs();
 }
 
 }  // namespace swarmagg

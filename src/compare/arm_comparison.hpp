@@ -10,6 +10,7 @@
 
 #include "compare/engine_arm.hpp"
 #include "compare/ks_test.hpp"
+#include "compare/proportion_test.hpp"
 #include "compare/welch_interval.hpp"
 #include "observers/leave_tally.hpp"
 
@@ -33,8 +34,16 @@ struct Comparison {
   WelchResult noa_difference;  // b - a
   KsResult ks_noa;
   KsResult ks_sizes;
+  WelchResult encounter_rate_difference;  // b - a, per-replicate encounters per tu
+  ProportionResult escape_fraction;       // LEAVE attempts that got out, pooled
   bool has_leaving = false;
-  bool differs() const;  // any of the three tests significant at kSignificance
+  // One verdict per quantity, each significant at kSignificance: the final NOA (Welch on the
+  // mean, KS on the final NOA and on the final aggregate sizes), the encounter rate (Welch)
+  // and the escape fraction (two-proportion test; only when agents leave).
+  bool noa_differs() const;
+  bool encounter_rate_differs() const;
+  bool escape_fraction_differs() const;
+  bool differs() const;  // any of the three
 };
 
 ArmSummary summarize_arm(const ArmResult& arm);

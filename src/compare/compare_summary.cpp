@@ -19,6 +19,10 @@ const char* verdict(double p) {
   return p < kSignificance ? "different" : "no significant difference";
 }
 
+std::string judged(bool differs) {
+  return differs ? "different" : "no significant difference";
+}
+
 void leave_line(std::ostringstream& out, const ArmSummary& arm) {
   const RimSplit& tried = arm.leave.attempts;
   const RimSplit& out_of = arm.leave.escapes;
@@ -76,39 +80,69 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
       << verdict(c.ks_sizes.p_value) << "\n";
   out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
          "with ties)\n";
+  const WelchResult& e = c.encounter_rate_difference;
   out << "encounters per tu: " << c.a.label
       << format_text(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
       << c.b.label
-      << format_text(" %.2f +- %.2f\n", c.b.encounter_rate.mean, c.b.encounter_rate.half_width);
+      << format_text(" %.2f +- %.2f", c.b.encounter_rate.mean, c.b.encounter_rate.half_width)
+      << format_text(" (Welch, p = %.3g)\n", e.p_value);
+  const ProportionResult& f = c.escape_fraction;
   if (c.has_leaving) {
     out << "LEAVE attempts that got out (" << kRimRuleText << "):\n";
     leave_line(out, c.a);
     leave_line(out, c.b);
+    out << "  escape fraction: " << c.a.label << format_text(" %.3f, ", f.fraction_a) << c.b.label
+        << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
   }
-  out << "verdict: " << (c.differs() ? "the two differ" : "no significant difference") << " at the "
-      << format_text("%.0f%% level (per test)\n", 100.0 * (1.0 - kSignificance));
+  out << format_text("verdicts at the %.0f%% level (per test), one per quantity:\n",
+                     100.0 * (1.0 - kSignificance));
+  out << "  final NOA: " << judged(c.noa_differs())
+      << " (Welch on the mean, KS on NOA and sizes)\n";
+  out << "  encounter rate: " << judged(c.encounter_rate_differs()) << " (Welch)\n";
+  out << "  escape fraction: "
+      << (c.has_leaving
+              ? judged(c.escape_fraction_differs()) + std::string(" (two-proportion z test)")
+              : std::string("not judged (no agent leaves in this world)"))
+      << "\n";
   return out.str();
 }
 
 nlohmann::json comparison_json(const std::string& world_name, const Comparison& c) {
   const WelchResult& w = c.noa_difference;
-  return {{"world", world_name},
-          {"a", arm_json(c.a)},
-          {"b", arm_json(c.b)},
-          {"final_noa_difference",
-           {{"b_minus_a", w.difference},
-            {"ci95", {w.low, w.high}},
-            {"welch_dof", w.dof},
-            {"p_value", w.p_value}}},
-          {"ks_final_noa", ks_json(c.ks_noa)},
-          {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
-          {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
-          {"rim_rule", std::string(kRimRuleText) +
-                           "; got out: perceives (within s) no still-waiting member of the "
-                           "aggregate it left when its LEAVE timeout ends"},
-          {"has_leaving", c.has_leaving},
-          {"significance", kSignificance},
-          {"differs", c.differs()}};
+  return {
+      {"world", world_name},
+      {"a", arm_json(c.a)},
+      {"b", arm_json(c.b)},
+      {"final_noa_difference",
+       {{"b_minus_a", w.difference},
+        {"ci95", {w.low, w.high}},
+        {"welch_dof", w.dof},
+        {"p_value", w.p_value}}},
+      {"ks_final_noa", ks_json(c.ks_noa)},
+      {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
+      {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
+      {"rim_rule", std::string(kRimRuleText) +
+                       "; got out: perceives (within s) no still-waiting member of the "
+                       "aggregate it left when its LEAVE timeout ends"},
+      {"encounter_rate_difference",
+       {{"b_minus_a", c.encounter_rate_difference.difference},
+        {"ci95", {c.encounter_rate_difference.low, c.encounter_rate_difference.high}},
+        {"welch_dof", c.encounter_rate_difference.dof},
+        {"p_value", c.encounter_rate_difference.p_value}}},
+      {"escape_fraction",
+       {{"a", c.escape_fraction.fraction_a},
+        {"b", c.escape_fraction.fraction_b},
+        {"z", c.escape_fraction.z},
+        {"p_value", c.escape_fraction.p_value}}},
+      {"has_leaving", c.has_leaving},
+      {"significance", kSignificance},
+      {"verdicts",
+       {{"final_noa", c.noa_differs() ? "different" : "no significant difference"},
+        {"encounter_rate", c.encounter_rate_differs() ? "different" : "no significant difference"},
+        {"escape_fraction", !c.has_leaving                ? "not judged"
+                            : c.escape_fraction_differs() ? "different"
+                                                          : "no significant difference"}}},
+      {"differs", c.differs()}};
 }
 
 }  // namespace swarmagg

@@ -3,6 +3,7 @@
 #include "compare/compare_plots.hpp"
 #include "compare/compare_summary.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 #include "output/atomic_file.hpp"
 #include "run/run_folder.hpp"
 

@@ -29,7 +29,14 @@ struct ControllerCatalogEntry {
   // engine need not build lists nobody reads.
   double (*perception_radius)(const WorldSpec&) = nullptr;
   std::optional<KeyProblem> (*check)(const WorldSpec&) = nullptr;
+  // The shared controller.* keys of the key table (ControllerSpec's fields) it reads; the
+  // resolved world writes only these and its own keys, so a world shows what acts on it.
+  std::vector<std::string> shared_keys;
 };
+
+// Whether `spec`'s resolved world holds `key`: any key outside controller.*, controller.type,
+// and the controller.* keys its controller reads.
+bool controller_reads(const WorldSpec& spec, const WorldKey& key);
 
 // Every registered controller, in registration order (defined by the controllers library).
 const std::vector<ControllerCatalogEntry>& controller_catalog();

@@ -1,5 +1,7 @@
 #include "config/world_keys.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -49,12 +51,44 @@ const RealBounds kPositive{0.0, false, std::numeric_limits<double>::infinity(),
 const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(), "a number >= 0"};
 const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
 
+double read_bounded_real(const YAML::Node& node, const RealBounds& bounds) {
+  const double v = read_real(node, bounds.expected);
+  const bool above = bounds.low_inclusive ? v >= bounds.low : v > bounds.low;
+  if (!above || v > bounds.high) throw KeyValueError{bounds.expected};
+  return v;
+}
+
+std::string whole_expected(long long low, long long high) {
+  return "a whole number from " + std::to_string(low) + " to " + std::to_string(high);
+}
+
+long long read_whole(const YAML::Node& node, long long low, long long high,
+                     const std::string& expected) {
+  const long long v = read_integer(node, expected);
+  if (v < low || v > high) throw KeyValueError{expected};
+  return v;
+}
+
+const std::string kFlagExpected = "true or false";
+
+bool read_flag(const YAML::Node& node) {
+  const std::string text = scalar_text(node, kFlagExpected);
+  if (text == "true") return true;
+  if (text == "false") return false;
+  throw KeyValueError{kFlagExpected};
+}
+
+std::string choice_expected(const std::vector<std::string>& names) {
+  std::string expected = "one of:";
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    expected += (k == 0 ? " " : ", ") + names[k];
+  }
+  return expected;
+}
+
 WorldKey real_key(std::string path, Access<double> access, const RealBounds& bounds) {
   auto read = [access, bounds](WorldSpec& w, const YAML::Node& node) {
-    const double v = read_real(node, bounds.expected);
-    const bool above = bounds.low_inclusive ? v >= bounds.low : v > bounds.low;
-    if (!above || v > bounds.high) throw KeyValueError{bounds.expected};
-    access(w) = v;
+    access(w) = read_bounded_real(node, bounds);
   };
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(format_number(access(const_cast<WorldSpec&>(w))));
@@ -64,12 +98,9 @@ WorldKey real_key(std::string path, Access<double> access, const RealBounds& bou
 
 template <typename Int>
 WorldKey integer_key(std::string path, Access<Int> access, long long low, long long high) {
-  std::string expected =
-      "a whole number from " + std::to_string(low) + " to " + std::to_string(high);
+  std::string expected = whole_expected(low, high);
   auto read = [access, low, high, expected](WorldSpec& w, const YAML::Node& node) {
-    const long long v = read_integer(node, expected);
-    if (v < low || v > high) throw KeyValueError{expected};
-    access(w) = static_cast<Int>(v);
+    access(w) = static_cast<Int>(read_whole(node, low, high, expected));
   };
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(std::to_string(access(const_cast<WorldSpec&>(w))));
@@ -93,30 +124,19 @@ WorldKey seed_key(std::string path, Access<std::uint64_t> access) {
 }
 
 WorldKey bool_key(std::string path, Access<bool> access) {
-  const std::string expected = "true or false";
-  auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
-    const std::string text = scalar_text(node, expected);
-    if (text == "true") {
-      access(w) = true;
-    } else if (text == "false") {
-      access(w) = false;
-    } else {
-      throw KeyValueError{expected};
-    }
-  };
+  auto read = [access](WorldSpec& w, const YAML::Node& node) { access(w) = read_flag(node); };
   auto write = [access](const WorldSpec& w) {
     return YAML::Node(access(const_cast<WorldSpec&>(w)) ? "true" : "false");
   };
-  return {std::move(path), "boolean", expected, read, write, {}, {}, {}};
+  return {std::move(path), "boolean", kFlagExpected, read, write, {}, {}, {}};
 }
 
 template <typename Enum>
 WorldKey enum_key(std::string path, Access<Enum> access,
                   std::vector<std::pair<std::string, Enum>> names) {
-  std::string expected = "one of:";
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    expected += (k == 0 ? " " : ", ") + names[k].first;
-  }
+  std::vector<std::string> texts;
+  for (const auto& name : names) texts.push_back(name.first);
+  const std::string expected = choice_expected(texts);
   auto read = [access, names, expected](WorldSpec& w, const YAML::Node& node) {
     const std::string text = scalar_text(node, expected);
     for (const auto& [name, value] : names) {
@@ -486,34 +506,125 @@ std::vector<WorldKey> build_keys() {
 
 }  // namespace
 
-WorldKey number_list_key(std::string path, std::vector<double> defaults, double low, double high,
+namespace {
+
+// A controller's own key: its value lives in ControllerSpec::parameters under `path`.
+template <typename T>
+WorldKey controller_key(std::string path, std::string type, std::string expected, T fallback,
+                        std::function<T(const YAML::Node&)> parse,
+                        std::function<YAML::Node(const T&)> show, std::string controller) {
+  auto read = [path, parse](WorldSpec& w, const YAML::Node& node) {
+    w.controller.parameters[path] = parse(node);
+  };
+  auto write = [path, fallback, show](const WorldSpec& w) {
+    const auto found = w.controller.parameters.find(path);
+    return show(found == w.controller.parameters.end() ? fallback : std::get<T>(found->second));
+  };
+  return {std::move(path), std::move(type),       std::move(expected), read,
+          write,           std::move(controller), std::move(fallback), {}};
+}
+
+template <typename T>
+const T& controller_value(const WorldSpec& spec, const WorldKey& key) {
+  const auto found = spec.controller.parameters.find(key.path);
+  return std::get<T>(found == spec.controller.parameters.end() ? key.default_value : found->second);
+}
+
+YAML::Node show_number(const double& value) {
+  return YAML::Node(format_number(value));
+}
+
+}  // namespace
+
+WorldKey number_key(std::string path, double fallback, double low, double high,
+                    std::string controller) {
+  const RealBounds bounds{low, true, high,
+                          "a number from " + format_number(low) + " to " + format_number(high)};
+  return controller_key<double>(
+      std::move(path), "number", bounds.expected, fallback,
+      [bounds](const YAML::Node& node) { return read_bounded_real(node, bounds); }, show_number,
+      std::move(controller));
+}
+
+WorldKey whole_number_key(std::string path, long long fallback, long long low, long long high,
+                          std::string controller) {
+  const std::string expected = whole_expected(low, high);
+  return controller_key<double>(
+      std::move(path), "integer", expected, static_cast<double>(fallback),
+      [low, high, expected](const YAML::Node& node) {
+        return static_cast<double>(read_whole(node, low, high, expected));
+      },
+      show_number, std::move(controller));
+}
+
+WorldKey probability_key(std::string path, double fallback, std::string controller) {
+  return controller_key<double>(
+      std::move(path), "probability", kProbability.expected, fallback,
+      [](const YAML::Node& node) { return read_bounded_real(node, kProbability); }, show_number,
+      std::move(controller));
+}
+
+WorldKey name_choice_key(std::string path, std::string fallback, std::vector<std::string> names,
+                         std::string controller) {
+  const std::string expected = choice_expected(names);
+  return controller_key<std::string>(
+      std::move(path), "choice", expected, std::move(fallback),
+      [names, expected](const YAML::Node& node) {
+        std::string text = scalar_text(node, expected);
+        if (std::find(names.begin(), names.end(), text) == names.end()) {
+          throw KeyValueError{expected};
+        }
+        return text;
+      },
+      [](const std::string& name) { return YAML::Node(name); }, std::move(controller));
+}
+
+WorldKey flag_key(std::string path, bool fallback, std::string controller) {
+  return controller_key<bool>(
+      std::move(path), "boolean", kFlagExpected, fallback, read_flag,
+      [](const bool& on) { return YAML::Node(on ? "true" : "false"); }, std::move(controller));
+}
+
+WorldKey number_list_key(std::string path, std::vector<double> fallback, double low, double high,
                          std::string controller) {
   const std::string expected = "a list of one or more numbers from " + format_number(low) + " to " +
                                format_number(high) + ", e.g. [" + format_number(low) + ", " +
                                format_number(high) + "]";
-  auto read = [path, low, high, expected](WorldSpec& w, const YAML::Node& node) {
-    if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
-    std::vector<double> values;
-    for (const YAML::Node& item : node) {
-      const double v = read_real(item, expected);
-      if (!(v >= low && v <= high)) throw KeyValueError{expected};
-      values.push_back(v);
-    }
-    w.controller.parameters[path] = std::move(values);
-  };
-  auto write = [path, defaults](const WorldSpec& w) {
-    const auto found = w.controller.parameters.find(path);
-    const std::vector<double>& values =
-        found == w.controller.parameters.end() ? defaults : found->second;
-    YAML::Node list(YAML::NodeType::Sequence);
-    list.SetStyle(YAML::EmitterStyle::Flow);
-    for (const double v : values) list.push_back(format_number(v));
-    return list;
-  };
-  WorldKey key{std::move(path), "list of numbers",     expected, read,
-               write,           std::move(controller), {},       {}};
-  key.list_defaults = std::move(defaults);
-  return key;
+  return controller_key<std::vector<double>>(
+      std::move(path), "list of numbers", expected, std::move(fallback),
+      [low, high, expected](const YAML::Node& node) {
+        if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
+        std::vector<double> values;
+        for (const YAML::Node& item : node) {
+          const double v = read_real(item, expected);
+          if (!(v >= low && v <= high)) throw KeyValueError{expected};
+          values.push_back(v);
+        }
+        return values;
+      },
+      [](const std::vector<double>& values) {
+        YAML::Node list(YAML::NodeType::Sequence);
+        list.SetStyle(YAML::EmitterStyle::Flow);
+        for (const double v : values) list.push_back(format_number(v));
+        return list;
+      },
+      std::move(controller));
+}
+
+double number(const WorldSpec& spec, const WorldKey& key) {
+  return controller_value<double>(spec, key);
+}
+
+long long whole_number(const WorldSpec& spec, const WorldKey& key) {
+  return static_cast<long long>(controller_value<double>(spec, key));
+}
+
+const std::string& name_choice(const WorldSpec& spec, const WorldKey& key) {
+  return controller_value<std::string>(spec, key);
+}
+
+bool flag(const WorldSpec& spec, const WorldKey& key) {
+  return controller_value<bool>(spec, key);
 }
 
 WorldKey described(WorldKey key, std::string meaning) {
@@ -522,8 +633,7 @@ WorldKey described(WorldKey key, std::string meaning) {
 }
 
 const std::vector<double>& number_list(const WorldSpec& spec, const WorldKey& key) {
-  const auto found = spec.controller.parameters.find(key.path);
-  return found == spec.controller.parameters.end() ? key.list_defaults : found->second;
+  return controller_value<std::vector<double>>(spec, key);
 }
 
 std::string format_number(double value) {

@@ -17,6 +17,7 @@
 #include "config/controller_catalog.hpp"
 #include "config/did_you_mean.hpp"
 #include "config/world_keys.hpp"
+#include "config/world_override.hpp"
 #include "core/errors.hpp"
 #include "geometry/pair_finder.hpp"
 

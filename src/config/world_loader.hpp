@@ -5,10 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "config/world_override.hpp"
 #include "config/world_spec.hpp"
 
 namespace swarmagg {
+
+struct WorldOverride;  // config/world_override.hpp, for the callers that make them
 
 WorldSpec load_world_with(const std::string& path, const std::vector<WorldOverride>& overrides);
 // The same with `--set` assignments (`key.path=value`, the value read as YAML).

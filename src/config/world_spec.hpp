@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "geometry/arena_geometry.hpp"
@@ -62,6 +63,10 @@ struct CompactionSpec {
   double tolerance = 0.05;        // u: a net force below it leaves the agent standing
 };
 
+// The value of a registered controller's own key (config/world_keys.hpp builds them): a
+// number (integers too, exactly up to 2^53), a flag, a name or a list of numbers.
+using ControllerValue = std::variant<double, bool, std::string, std::vector<double>>;
+
 struct ControllerSpec {
   std::string type = "bayindir";  // a registered controller (config/controller_catalog.hpp)
   double p_leave = 0.0;           // bayindir: per step
@@ -78,7 +83,7 @@ struct ControllerSpec {
   CompactionSpec compaction;
   // The keys of controllers registered with their own keys (controller.<name> -> values), so a
   // new controller adds no field here. Absent: the key's default.
-  std::map<std::string, std::vector<double>> parameters;
+  std::map<std::string, ControllerValue> parameters;
 };
 
 struct Box2DSpec {

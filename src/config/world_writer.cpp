@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/controller_catalog.hpp"
 #include "config/world_keys.hpp"
 
 namespace swarmagg {
@@ -24,8 +25,8 @@ void insert(YAML::Node root, const std::string& path, const YAML::Node& value) {
 std::string world_to_yaml(const WorldSpec& spec) {
   YAML::Node root(YAML::NodeType::Map);
   for (const WorldKey& key : world_keys()) {
-    // Another registered controller's own keys mean nothing to this world.
-    if (!key.controller.empty() && key.controller != spec.controller.type) continue;
+    // Keys the world's controller does not read (another controller's) mean nothing to it.
+    if (!controller_reads(spec, key)) continue;
     insert(root, key.path, key.write(spec));
   }
   YAML::Emitter out;

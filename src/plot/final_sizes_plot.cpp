@@ -55,7 +55,7 @@ void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
   const double end_time = run.world.run.duration;
   std::string script =
       png_preamble(files.size, files.png_name(),
-                   run.world.name + ": aggregate sizes at the end (t = " + csv_number(end_time) +
+                   run_title(run) + ": aggregate sizes at the end (t = " + csv_number(end_time) +
                        " tu), mean of " + std::to_string(sizes.size()) + " replicate" +
                        (sizes.size() == 1 ? "" : "s"));
   script += std::string(kKeyAbovePlot) +

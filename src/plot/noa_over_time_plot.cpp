@@ -38,7 +38,7 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
   write_file_atomic(files.csv(""), simulation_csv(noa, thin_lines));
   const std::string data = gnuplot_quote(files.csv_name(""));
   std::string script = png_preamble(files.size, files.png_name(),
-                                    run.world.name + ": number of aggregates, " +
+                                    run_title(run) + ": number of aggregates, " +
                                         std::to_string(run.world.robots.count) + " agents");
   script += std::string(kKeyAbovePlot) +
             "set xlabel 'time (tu)'\nset ylabel 'number of aggregates (NOA)'\n"

@@ -6,7 +6,7 @@
 namespace swarmagg {
 
 void draw_run_partitions(const RunFiles& run, const FigureFiles& files) {
-  plot_partitions(files, run.world.name + ": time per partition (mean over replicates)",
+  plot_partitions(files, run_title(run) + ": time per partition (mean over replicates)",
                   compare_partitions(run.folder));
 }
 

@@ -50,7 +50,7 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
   const std::string data = gnuplot_quote(files.csv_name(""));
   std::string script =
       png_preamble(files.size, files.png_name(),
-                   run.world.name + ": agents per state, mean of " + std::to_string(replicates) +
+                   run_title(run) + ": agents per state, mean of " + std::to_string(replicates) +
                        " replicate" + (replicates == 1 ? "" : "s"));
   script += std::string(kKeyAbovePlot) +
             "set xlabel 'time (tu)'\nset ylabel 'agents'\n"

@@ -7,6 +7,7 @@
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"

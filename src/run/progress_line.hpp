@@ -3,6 +3,8 @@
 // percentage of the work and an ETA. Work is counted in agent-steps (robots.count x steps),
 // reported while units are going, so the ETA is smooth and fair to units of different sizes.
 // Thread-safe: each unit's ProgressObserver reports, the waiting thread prints.
+// On a terminal the line is rewritten in place; elsewhere (a batch or Slurm log) a plain line
+// is written every 10 % of the work or every 30 s, whichever comes first, and once at the end.
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -20,8 +22,10 @@ class ProgressLine {
 
   void add_work(double work);
   void finished_unit();
-  void print() const;
-  void clear() const;
+  // Called about every 250 ms while the units run: the live line, or a log line when due.
+  void report();
+  // Once the units are done: clears the live line, or writes the last log line.
+  void finish();
 
  private:
   std::string name_;
@@ -29,9 +33,15 @@ class ProgressLine {
   int total_units_;
   double total_work_;
   std::chrono::steady_clock::time_point start_;
+  bool terminal_;
   mutable std::mutex mutex_;
   int done_units_ = 0;
   double done_work_ = 0.0;
+  int logged_tenths_ = 0;   // tenths of the work done at the last log line
+  double logged_at_ = 0.0;  // seconds since start_ at the last log line
+
+  std::string text() const;  // with the mutex held
+  double elapsed() const;
 };
 
 // Observes one replicate and reports its agent-steps to a progress line in batches.

@@ -74,7 +74,8 @@ std::vector<TimeseriesRow> all_rows(const RunResult& result) {
   return rows;
 }
 
-nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result) {
+nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result,
+                           const std::vector<std::string>& overrides) {
   nlohmann::json replicates = nlohmann::json::array();
   std::vector<double> noa, largest, encounters_per_time;
   for (const ReplicateOutcome& r : result.replicates) {
@@ -90,6 +91,7 @@ nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result) {
   return {{"swarmagg", SWARMAGG_VERSION},
           {"git", SWARMAGG_GIT_HASH},
           {"world", spec.name},
+          {"overrides", overrides},
           {"engine", spec.engine.type == EngineType::Box2D ? "box2d" : "kinematic"},
           {"agents", spec.robots.count},
           {"steps", spec.steps()},
@@ -117,13 +119,13 @@ std::string partitions_csv(const RunResult& result, std::int64_t steps) {
 }
 
 void write_run_folder(const WorldSpec& spec, const RunResult& result,
-                      const std::filesystem::path& out) {
+                      const std::filesystem::path& out, const std::vector<std::string>& overrides) {
   std::filesystem::create_directories(out);
   write_file_atomic(out / "timeseries.csv", timeseries_csv(all_rows(result)));
   if (controller_rules(spec).records_partitions) {
     write_file_atomic(out / "partitions.csv", partitions_csv(result, spec.steps()));
   }
-  write_file_atomic(out / "summary.json", run_summary(spec, result).dump(2) + "\n");
+  write_file_atomic(out / "summary.json", run_summary(spec, result, overrides).dump(2) + "\n");
   // Written last: a folder whose resolved world matches is a complete run (reproduce reuses it).
   write_file_atomic(out / "world.resolved.yaml", resolved_world_text(spec));
 }

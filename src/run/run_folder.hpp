@@ -13,12 +13,16 @@ namespace swarmagg {
 // The resolved world with the swarmagg version and every replicate's seed as comments; it
 // loads back as the same world.
 std::string resolved_world_text(const WorldSpec& spec);
-nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result);
+// `overrides` ("robots.count=80") name what the command line changed of the world file, so
+// the summary and the plot titles do not pass an overridden run off as the file's world.
+nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result,
+                           const std::vector<std::string>& overrides = {});
 std::string partitions_csv(const RunResult& result, std::int64_t steps);
 std::vector<TimeseriesRow> all_rows(const RunResult& result);
 
 void write_run_folder(const WorldSpec& spec, const RunResult& result,
-                      const std::filesystem::path& out);
+                      const std::filesystem::path& out,
+                      const std::vector<std::string>& overrides = {});
 
 // runs/<world name> unless --out says otherwise.
 std::filesystem::path default_run_folder(const WorldSpec& spec);

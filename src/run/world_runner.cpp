@@ -1,7 +1,5 @@
 #include "run/world_runner.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -100,10 +98,9 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
     result.replicates[index] = run_replicate(spec, i, &observers, options.check, plan.step_threads);
     progress.finished_unit();
   };
-  const bool show = options.progress && ::isatty(::fileno(stderr));
   parallel_for(result.replicates.size(), result.threads, run_one,
-               show ? std::function<void()>([&] { progress.print(); }) : nullptr);
-  if (show) progress.clear();
+               options.progress ? std::function<void()>([&] { progress.report(); }) : nullptr);
+  if (options.progress) progress.finish();
   result.wall_seconds = seconds_since(start);
   return result;
 }

@@ -1,7 +1,5 @@
 #include "sweep/sweep_runner.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <fstream>
@@ -43,7 +41,7 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, b
   result.wall_seconds = result.replicates.front().wall_seconds;
   observer.reset();  // releases the trajectory's datasets before the file closes
   if (trajectories) trajectories->commit();
-  write_run_folder(run.world, result, folder);
+  write_run_folder(run.world, result, folder, point_overrides(run.point));
   if (!plots) return;
   // A plot gnuplot cannot draw leaves the run complete; `swarmagg plot` can redraw it.
   for (const std::string& failure : draw_run_plots(folder, folder).failures) {
@@ -64,10 +62,9 @@ void run_parallel(const std::vector<SweepRun>& runs, const SweepOptions& options
     run_into_folder(runs[i], sweep_run_folder(options.out, runs[i]), options.plots, progress);
     progress.finished_unit();
   };
-  const bool show = options.progress && ::isatty(::fileno(stderr));
   parallel_for(runs.size(), threads, run_one,
-               show ? std::function<void()>([&] { progress.print(); }) : nullptr);
-  if (show) progress.clear();
+               options.progress ? std::function<void()>([&] { progress.report(); }) : nullptr);
+  if (options.progress) progress.finish();
 }
 
 // Shards sharing one output folder all write the same manifest; leaving an identical one

@@ -18,8 +18,8 @@ struct SweepOptions {
   std::filesystem::path out;
   int threads = 0;  // 0: the machine's cores
   Shard shard;
-  bool progress = false;  // a progress line on stderr, if stderr is a terminal
-  bool plots = false;     // draw each run's plots (run_plots.hpp); the caller checks for gnuplot
+  bool progress = false;  // a progress line on stderr (run/progress_line.hpp)
+  bool plots = false;  // draw each run's own plots (run_plots.hpp); the caller checks for gnuplot
 };
 
 struct SweepReport {

@@ -21,19 +21,19 @@ std::string point_id(const std::vector<Assignment>& assignments) {
   return id.substr(0, kMaxIdLength - 17) + "~" + hash;
 }
 
-std::vector<std::string> overrides(const SweepPoint& point) {
+// Cross-key checks (check_world) name the world's source, so the source names the point.
+WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
+  return load_world_text(plan.base_world, plan.source + " (point " + describe_point(point) + ")",
+                         point_overrides(point));
+}
+
+}  // namespace
+
+std::vector<std::string> point_overrides(const SweepPoint& point) {
   std::vector<std::string> result;
   for (const auto& [key, value] : point.assignments) result.push_back(key + "=" + value);
   return result;
 }
-
-// Cross-key checks (check_world) name the world's source, so the source names the point.
-WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
-  return load_world_text(plan.base_world, plan.source + " (point " + describe_point(point) + ")",
-                         overrides(point));
-}
-
-}  // namespace
 
 std::vector<SweepPoint> sweep_points(const std::vector<SweepParameter>& parameters) {
   std::vector<SweepPoint> points(1);

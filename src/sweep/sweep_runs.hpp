@@ -36,6 +36,8 @@ std::vector<SweepRun> expand_sweep(const SweepPlan& plan);
 
 // <out>/runs/<point id>/rep-<replicate>
 std::filesystem::path sweep_run_folder(const std::filesystem::path& out, const SweepRun& run);
+// The point's parameters as --set takes them: {"robots.count=50", "controller.p_leave=0.001"}.
+std::vector<std::string> point_overrides(const SweepPoint& point);
 // "robots.count=50 controller.p_leave=0.001", for listings and messages.
 std::string describe_point(const SweepPoint& point);
 

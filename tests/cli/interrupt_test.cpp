@@ -158,9 +158,10 @@ Outcome interrupt(const std::vector<std::string>& arguments, int signal_number,
 
 std::vector<std::string> long_run(const fs::path& out) {
   // 10^7 steps of 120 agents in each of two replicates: far longer than the test waits.
-  return {SWARMAGG_BINARY, "run",       kLongWorld, "--replicates",         "2",
-          "--threads",     "2",         "--set",    "run.duration=1000000", "--quiet",
-          "--out",         out.string()};
+  // --force: it replaces the earlier run some tests leave in `out`.
+  return {SWARMAGG_BINARY, "run",   kLongWorld,  "--replicates",         "2",
+          "--threads",     "2",     "--set",     "run.duration=1000000", "--quiet",
+          "--force",       "--out", out.string()};
 }
 
 void expect_interrupted(const Outcome& o, int code) {

@@ -130,7 +130,7 @@ TEST(Trajectories, BadRenderRequestsExitTwoWithAReason) {
   o = swarmagg("render " + out.string() + " --replicate 2");
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_THAT(o.output, HasSubstr("no replicate 2"));
-  o = swarmagg("run " + kWorld + " --trajectories -1 --out " + out.string());
+  o = swarmagg("run " + kWorld + " --trajectories -1 --force --out " + out.string());
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_THAT(o.output, HasSubstr("run.trajectories"));
   fs::remove_all(out);
@@ -140,7 +140,7 @@ TEST(Trajectories, ARunWithoutTrajectoriesRemovesAnEarlierFile) {
   const fs::path out = fresh_dir("stale");
   ASSERT_EQ(swarmagg("run " + kWorld + " --trajectories 10 --out " + out.string()).exit_code, 0);
   ASSERT_TRUE(fs::exists(out / "trajectories.h5"));
-  ASSERT_EQ(swarmagg("run " + kWorld + " --out " + out.string()).exit_code, 0);
+  ASSERT_EQ(swarmagg("run " + kWorld + " --force --out " + out.string()).exit_code, 0);
   EXPECT_FALSE(fs::exists(out / "trajectories.h5")) << "would not belong to the new run";
   fs::remove_all(out);
 }

@@ -25,7 +25,7 @@ fail() { say "FAIL: $*"; exit 1; }
 
 if [[ $(id -u) != 0 ]]; then echo "skipped: needs root (munged, slurmd)"; exit 77; fi
 for tool in munged slurmctld slurmd sbatch squeue scancel setpriv; do
-  command -v "$tool" >/dev/null || { echo "skipped: $tool not installed (scripts/install-deps.sh)"; exit 77; }
+  command -v "$tool" >/dev/null || { echo "skipped: $tool not installed (scripts/install-deps.sh --test)"; exit 77; }
 done
 id munge >/dev/null 2>&1 || { echo "skipped: no munge user (package munge)"; exit 77; }
 

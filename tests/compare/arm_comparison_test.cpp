@@ -14,11 +14,12 @@ namespace {
 // these fixed seeds were chosen with still-standing waiting agents, and with compaction
 // seeds 11 and 12 give p = 0.02 on the NOA difference, the one false positive in twenty a
 // 5 % test allows. What is tested is the comparison, not the controller.
-WorldSpec small_world(double p_leave, std::uint64_t seed) {
+WorldSpec small_world(double p_leave, std::uint64_t seed, int agents = 30) {
   return load_world_text(R"(
 name: small
 arena: {width: 50, height: 50}
-robots: {count: 30}
+robots: {count: )" + std::to_string(agents) +
+                             R"(}
 controller: {type: bayindir, join: true, leave: true, leave_timeout: 10,
              compaction: {enabled: false}, p_leave: )" +
                              std::to_string(p_leave) + R"(}
@@ -39,8 +40,12 @@ TEST(ArmComparison, AWorldAgainstItselfShowsNoSignificantDifference) {
   EXPECT_FALSE(c.differs());
   EXPECT_TRUE(c.has_leaving);
   EXPECT_GT(c.a.leave.attempts.total(), 0);
-  EXPECT_NE(comparison_text("small", c).find("verdict: no significant difference"),
-            std::string::npos);
+  const std::string text = comparison_text("small", c);
+  for (const char* verdict :
+       {"  final NOA: no significant difference", "  encounter rate: no significant difference",
+        "  escape fraction: no significant difference"}) {
+    EXPECT_NE(text.find(verdict), std::string::npos) << verdict << "\n" << text;
+  }
 }
 
 TEST(ArmComparison, NoLeavingAgainstLeavingIsDifferent) {
@@ -54,6 +59,32 @@ TEST(ArmComparison, NoLeavingAgainstLeavingIsDifferent) {
   const nlohmann::json json = comparison_json("small", c);
   EXPECT_TRUE(json["differs"].get<bool>());
   EXPECT_EQ(json["a"]["final_noa"].size(), 12u);
+}
+
+// Each verdict names its quantity: a denser arm meets more often (encounter rate differs),
+// and a world without leaving leaves the escape fraction unjudged.
+TEST(ArmComparison, EveryQuantityGetsItsOwnVerdict) {
+  const ArmResult sparse = run_arm("sparse", small_world(0.0, 11, 15));
+  const ArmResult dense = run_arm("dense", small_world(0.0, 11, 60));
+  const Comparison c = compare_arms(sparse, dense);
+  EXPECT_TRUE(c.encounter_rate_differs());
+  EXPECT_FALSE(c.has_leaving);
+  EXPECT_FALSE(c.escape_fraction_differs());
+  const std::string text = comparison_text("small", c);
+  EXPECT_NE(text.find("  encounter rate: different (Welch)"), std::string::npos) << text;
+  EXPECT_NE(text.find("  escape fraction: not judged"), std::string::npos) << text;
+  EXPECT_NE(text.find("  final NOA: "), std::string::npos) << text;
+  const nlohmann::json json = comparison_json("small", c);
+  EXPECT_EQ(json["verdicts"]["encounter_rate"], "different");
+  EXPECT_EQ(json["verdicts"]["escape_fraction"], "not judged");
+}
+
+TEST(ArmComparison, TwoProportionsTestLikeAHandComputation) {
+  // 30/100 against 50/100: pooled 0.4, z = 0.2 / sqrt(0.4 * 0.6 * 0.02) = 2.8868.
+  const ProportionResult r = two_proportion_test(30, 100, 50, 100);
+  EXPECT_NEAR(r.z, 2.8868, 1e-4);
+  EXPECT_NEAR(r.p_value, 0.00389, 1e-5);
+  EXPECT_EQ(two_proportion_test(0, 0, 5, 10).p_value, 1.0);
 }
 
 TEST(ArmComparison, EncounterRatesArePerTimeUnit) {

@@ -28,7 +28,7 @@ std::filesystem::path run_into(const std::string& world, const std::vector<std::
                                const std::filesystem::path& out) {
   const WorldSpec spec =
       load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/" + world, overrides);
-  write_run_folder(spec, run_world(spec, RunOptions{}), out);
+  write_run_folder(spec, run_world(spec, RunOptions{}), out, overrides);
   write_model_outputs(spec, predict(spec), out);
   return out;
 }
@@ -82,6 +82,13 @@ TEST_F(RunPlotsTest, ABayindirRunGetsNoaStatesAndSizesWithTheirScriptsAndCsvs) {
     const auto stem = png.stem().string();
     EXPECT_TRUE(std::filesystem::exists(bayindir_ / "plots" / (stem + ".gp"))) << stem;
     EXPECT_TRUE(std::filesystem::exists(bayindir_ / "plots" / (stem + ".csv"))) << stem;
+    // The title says the run is not the world file's own: it had overrides.
+    std::ifstream script(bayindir_ / "plots" / (stem + ".gp"));
+    const std::string text{std::istreambuf_iterator<char>(script), {}};
+    EXPECT_NE(text.find("demo (robots.count=30, run.duration=80, run.replicates=3, "
+                        "model.stochastic_replicates=2)"),
+              std::string::npos)
+        << stem;
   }
 }
 

@@ -156,15 +156,21 @@ TEST_F(SweepCommandTest, ASweepKilledOutrightResumesToTheSameResult) {
   expect_merged_like_an_uninterrupted_sweep("out");
 }
 
-TEST_F(SweepCommandTest, EachRunAndTheMergedSweepGetTheirPlots) {
+// Each run's own plots cost more than a short run: by default only the merged sweep's are
+// drawn, and --run-plots adds each run's.
+TEST_F(SweepCommandTest, TheMergedSweepGetsItsPlotsAndEachRunOnlyWhenAsked) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
   const std::string sweep =
       sweep_file("base: worlds/tiny.yaml\nparameters:\n  robots.count: [10, 20]\nreplicates: 1\n");
   ASSERT_EQ(swarmagg({"sweep", sweep, "--out", (dir_ / "out").string()}), 0) << output();
-  EXPECT_EQ(count_files("out", "noa.png"), 2);
-  EXPECT_EQ(count_files("out", "noa.gp"), 2);
+  EXPECT_EQ(count_files("out", "noa.png"), 0);
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "final-noa-vs-robots.count.png"));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out" / "plots" / "final-noa-vs-robots.count.gp"));
+  ASSERT_EQ(swarmagg({"sweep", sweep, "--run-plots", "--out", (dir_ / "drawn").string()}), 0)
+      << output();
+  EXPECT_EQ(count_files("drawn", "noa.png"), 2);
+  EXPECT_EQ(count_files("drawn", "noa.gp"), 2);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "drawn" / "final-noa-vs-robots.count.png"));
 }
 
 TEST_F(SweepCommandTest, ShardsThenMergeMatchTheUnshardedSweep) {

@@ -1,0 +1,20 @@
+#pragma once
+// --progress auto|always|never, shared by the commands that simulate. auto: progress unless
+// --quiet; always: even with --quiet; never: none. On a terminal it is one line rewritten in
+// place, in a log a plain line every 10 % or 30 s (run/progress_line.hpp). The phases after
+// the simulation (models, plots, merging) say what they do on the same stream.
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace swarmagg::cli {
+
+struct ProgressOption {
+  std::string mode = "auto";
+
+  void add_to(CLI::App& command);
+  bool shown(bool quiet) const;
+  // "<what>: <doing>..." on stderr when progress is shown.
+  void phase(bool quiet, const std::string& what, const std::string& doing) const;
+};
+
+}  // namespace swarmagg::cli

@@ -1,0 +1,88 @@
+#include "output/output_check.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <system_error>
+
+#include "core/errors.hpp"
+
+namespace swarmagg {
+namespace {
+
+[[noreturn]] void refuse(const std::string& option, const std::filesystem::path& path,
+                         const std::string& why) {
+  throw InputError(option + " " + path.string() + ": " + why);
+}
+
+// The reason in lower case, as it reads in the middle of a sentence.
+std::string reason(int error) {
+  std::string text = std::strerror(error);
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return text;
+}
+
+// The first ancestor of `folder` that exists but is not a folder, if any: a folder cannot be
+// made below a file.
+std::filesystem::path file_in_the_way(const std::filesystem::path& folder) {
+  std::error_code ignored;
+  for (std::filesystem::path p = folder; !p.empty() && p != p.parent_path(); p = p.parent_path()) {
+    if (std::filesystem::exists(p, ignored) && !std::filesystem::is_directory(p, ignored)) return p;
+  }
+  return {};
+}
+
+// The outermost folder of `folder` that does not exist yet (empty when it exists).
+std::filesystem::path first_missing(const std::filesystem::path& folder) {
+  std::error_code ignored;
+  std::filesystem::path missing;
+  for (std::filesystem::path p = folder; !p.empty() && p != p.parent_path(); p = p.parent_path()) {
+    if (std::filesystem::exists(p, ignored)) break;
+    missing = p;
+  }
+  return missing;
+}
+
+// Why no file can be written in `folder` (created if missing), or "" when one can.
+std::string folder_problem(const std::filesystem::path& folder) {
+  if (folder.empty()) return "an empty path";
+  if (const std::filesystem::path file = file_in_the_way(folder); !file.empty()) {
+    return file == folder ? "is a file, not a folder (outputs go into a folder)"
+                          : file.string() + " is a file, so no folder can be made below it";
+  }
+  // The folders made for the probe are removed after it: a run refused later (a world the
+  // engine rejects) leaves no empty folder, and the writers make them again.
+  const std::filesystem::path made = first_missing(folder);
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) return "cannot create the folder (" + reason(error.value()) + ")";
+  const std::filesystem::path probe =
+      folder / (".swarmagg-write-test." + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int open_error = errno;
+  if (fd >= 0) ::close(fd);
+  std::filesystem::remove(probe, error);
+  if (!made.empty()) std::filesystem::remove_all(made, error);
+  if (fd < 0) return "cannot write in the folder (" + reason(open_error) + ")";
+  return "";
+}
+
+}  // namespace
+
+void check_output_folder(const std::filesystem::path& folder, const std::string& option) {
+  if (const std::string why = folder_problem(folder); !why.empty()) refuse(option, folder, why);
+}
+
+void check_output_file(const std::filesystem::path& file, const std::string& option) {
+  if (file.empty() || !file.has_filename()) refuse(option, file, "expected a file name");
+  std::error_code ignored;
+  if (std::filesystem::is_directory(file, ignored)) refuse(option, file, "is a folder, not a file");
+  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+  if (const std::string why = folder_problem(folder); !why.empty())
+    refuse(option, file, "its folder " + folder.string() + ": " + why);
+}
+
+}  // namespace swarmagg

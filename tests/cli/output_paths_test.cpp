@@ -1,0 +1,117 @@
+// Output paths are checked before any work: a bad --out, --render-dir or --video ends a run
+// of a long world at once, with exit 2 and a message naming the option, the path and the
+// reason, before the first step.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/cli_testing.hpp"
+
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+namespace fs = std::filesystem;
+
+using Outcome = swarmagg::testing::CliOutcome;
+
+Outcome swarmagg(const std::string& arguments) {
+  return swarmagg::testing::run_swarmagg(arguments);
+}
+
+// A world far too long to finish while the test waits (10^8 steps): only a check made
+// before the first step lets the command return.
+const std::string kLongRun =
+    "run worlds/examples/demo.yaml --replicates 1 --set run.duration=1e7 --quiet ";
+
+class OutputPaths : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("swarmagg-outputs-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "afile") << "not a folder\n";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+};
+
+void expect_refused(const Outcome& o, const std::string& option, const std::string& why) {
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_THAT(o.output, HasSubstr(option));
+  EXPECT_THAT(o.output, HasSubstr(why));
+  EXPECT_THAT(o.output, Not(HasSubstr("filesystem error")));
+  EXPECT_THAT(o.output, Not(HasSubstr("trajectories.h5")));
+}
+
+TEST_F(OutputPaths, AFileAsOutIsRefusedBeforeTheFirstStep) {
+  const fs::path frames = dir_ / "frames";
+  const Outcome o = swarmagg(kLongRun + "--render-every 1 --render-dir " + frames.string() +
+                             " --out " + (dir_ / "afile").string());
+  expect_refused(o, "--out " + (dir_ / "afile").string(), "is a file, not a folder");
+  // A frame is drawn at the setup of the replicate: none means nothing was simulated.
+  EXPECT_FALSE(fs::exists(frames / "frame_000000.png"));
+}
+
+TEST_F(OutputPaths, AFolderThatCannotBeCreatedIsRefusedBeforeTheFirstStep) {
+  const Outcome below_a_file = swarmagg(kLongRun + "--out " + (dir_ / "afile" / "run").string());
+  expect_refused(below_a_file, "--out", "is a file, so no folder can be made below it");
+  const Outcome in_proc = swarmagg(kLongRun + "--out /proc/swarmagg-nope");
+  expect_refused(in_proc, "--out /proc/swarmagg-nope", "cannot create the folder");
+}
+
+TEST_F(OutputPaths, ABadVideoOrFrameFolderIsRefusedBeforeTheFirstStep) {
+  const fs::path frames = dir_ / "frames";
+  const Outcome video =
+      swarmagg(kLongRun + "--out " + (dir_ / "run").string() + " --render-every 1 --render-dir " +
+               frames.string() + " --video /proc/swarmagg-nope/x.mp4");
+  expect_refused(video, "--video /proc/swarmagg-nope/x.mp4", "its folder /proc/swarmagg-nope");
+  EXPECT_FALSE(fs::exists(frames / "frame_000000.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "run" / "timeseries.csv"));
+  const Outcome render_dir =
+      swarmagg(kLongRun + "--out " + (dir_ / "run").string() + " --render-every 1 --render-dir " +
+               (dir_ / "afile").string());
+  expect_refused(render_dir, "--render-dir", "is a file, not a folder");
+}
+
+TEST_F(OutputPaths, EveryCommandChecksItsOutputFolderFirst) {
+  const std::string afile = (dir_ / "afile").string();
+  for (const std::string& command :
+       {"rates worlds/examples/demo.yaml --set run.duration=1e7 --quiet --out " + afile,
+        "model worlds/examples/demo.yaml --quiet --out " + afile,
+        "compare worlds/examples/demo.yaml --set run.duration=1e7 --quiet --out " + afile,
+        "sweep examples/sweeps/p-leave-vs-count.yaml --quiet --out " + afile,
+        "reproduce --quick --quiet --out " + afile}) {
+    SCOPED_TRACE(command);
+    expect_refused(swarmagg(command), "--out " + afile, "is a file, not a folder");
+  }
+}
+
+// A second run into the folder of an earlier one is refused, before any work, until
+// --force says to replace it.
+TEST_F(OutputPaths, AnEarlierRunIsReplacedOnlyWithForce) {
+  const fs::path out = dir_ / "run";
+  const std::string tiny = "run worlds/examples/demo.yaml --replicates 1 --no-plots --quiet ";
+  ASSERT_EQ(swarmagg(tiny + "--set run.duration=5 --out " + out.string()).exit_code, 0);
+  const std::string earlier = swarmagg::testing::read_all(out / "world.resolved.yaml");
+  const Outcome refused = swarmagg(kLongRun + "--out " + out.string());
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_THAT(refused.output, HasSubstr(out.string()));
+  EXPECT_THAT(refused.output, HasSubstr("--force"));
+  EXPECT_EQ(swarmagg::testing::read_all(out / "world.resolved.yaml"), earlier);
+  const Outcome forced =
+      swarmagg(tiny + "--set run.duration=6 --set robots.count=20 --force --out " + out.string());
+  ASSERT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_THAT(swarmagg::testing::read_all(out / "world.resolved.yaml"), HasSubstr("count: 20"));
+  // The summary names what the command line changed of the world file.
+  EXPECT_THAT(swarmagg::testing::read_all(out / "summary.json"),
+              HasSubstr("\"overrides\": [\n    \"run.duration=6\",\n    \"robots.count=20\",\n"
+                        "    \"run.replicates=1\"\n  ]"));
+}
+
+}  // namespace
