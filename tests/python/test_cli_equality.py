@@ -16,9 +16,14 @@ def set_arguments(values):
     return [a for key, value in values.items() for a in ("--set", f"{key}={value}")]
 
 
+# What summary() leaves out of summary.json: wall times, and the two keys the CLI adds from
+# its command line and its run folder (docs/python.md says so).
+NOT_COMPARED = {"wall_seconds", "overrides", "model_errors"}
+
+
 def without_wall_times(value):
     if isinstance(value, dict):
-        return {k: without_wall_times(v) for k, v in value.items() if k != "wall_seconds"}
+        return {k: without_wall_times(v) for k, v in value.items() if k not in NOT_COMPARED}
     if isinstance(value, list):
         return [without_wall_times(v) for v in value]
     return value
