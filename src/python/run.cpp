@@ -3,12 +3,16 @@
 // summary.json, model.csv, partitions.csv, rates.csv, rates.json), made by the same
 // functions, so a frame read from them equals the file.
 #include <pybind11/stl.h>
+#include <stdlib.h>
 
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
+#include "analysis/model_errors.hpp"
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/model_csv.hpp"
@@ -21,6 +25,7 @@
 #include "rates/rates_csv.hpp"
 #include "rates/rates_json.hpp"
 #include "run/measured_run.hpp"
+#include "run/model_outputs.hpp"
 #include "run/run_folder.hpp"
 
 namespace py = pybind11;
@@ -28,16 +33,42 @@ namespace py = pybind11;
 namespace swarmagg::python {
 namespace {
 
+// A private folder under the system's temporary directory, removed with everything in it.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    std::string name = (std::filesystem::temp_directory_path() / "swarmagg-py-XXXXXX").string();
+    if (mkdtemp(name.data()) == nullptr) throw std::runtime_error("cannot create " + name);
+    path_ = name;
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 class RunOutput {
  public:
-  RunOutput(std::shared_ptr<const WorldSpec> spec, MeasuredRun run)
-      : spec_(std::move(spec)), run_(std::move(run)) {
+  RunOutput(World world, MeasuredRun run)
+      : spec_(world.spec), changes_(std::move(world.changes)), run_(std::move(run)) {
     if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates);
   }
 
-  World world() const { return {spec_}; }
+  World world() const { return {spec_, changes_}; }
   std::string timeseries_csv_text() const { return timeseries_csv(all_rows(run_.result)); }
-  std::string summary_json() const { return run_summary(*spec_, run_.result).dump(); }
+  // summary.json as `swarmagg run` leaves it: its overrides, and the model errors it adds from
+  // the run folder's files, here from a scratch folder of the same files.
+  std::string summary_json() const {
+    nlohmann::json summary = run_summary(*spec_, run_.result, changes_);
+    summary["model_errors"] = call_interruptibly([&] { return model_errors(); });
+    return summary.dump();
+  }
   std::string partitions_csv_text() const {
     if (!controller_rules(*spec_).records_partitions) {
       throw InputError("partitions: the world's controller (" + spec_->controller.type +
@@ -47,8 +78,7 @@ class RunOutput {
   }
   // model.csv of `swarmagg run`: with the measured variants when the run measured rates.
   std::string model_csv_text() const {
-    std::optional<MeasuredTerms> terms;
-    if (run_.rates) terms = measured_terms(rate_rows_);
+    const std::optional<MeasuredTerms> terms = run_terms();
     return call_interruptibly(
         [&] { return model_csv(predict(*spec_, terms ? &*terms : nullptr), spec_->engine.dt); });
   }
@@ -62,7 +92,25 @@ class RunOutput {
     return rate_rows_;
   }
 
+  std::optional<MeasuredTerms> run_terms() const {
+    if (!run_.rates) return std::nullopt;
+    return measured_terms(rate_rows_);
+  }
+
+  nlohmann::json model_errors() const {
+    const ScratchFolder folder;
+    write_run_folder(*spec_, run_.result, folder.path());
+    try {
+      const std::optional<MeasuredTerms> terms = run_terms();
+      write_model_outputs(*spec_, predict(*spec_, terms ? &*terms : nullptr), folder.path());
+    } catch (const InputError&) {
+      return nlohmann::json::array();  // a world without a model: the CLI writes none either
+    }
+    return model_errors_json(run_model_errors(folder.path()));
+  }
+
   std::shared_ptr<const WorldSpec> spec_;
+  std::vector<std::string> changes_;
   MeasuredRun run_;
   std::vector<RateRow> rate_rows_;
 };
@@ -78,7 +126,12 @@ RunOutput run(const World& world, std::optional<long long> replicates,
   const World ran = with_overrides(world, overrides);
   MeasuredRun result =
       call_interruptibly([&] { return run_world_measuring(*ran.spec, RunOptions{}, rates); });
-  return RunOutput(ran.spec, std::move(result));
+  // Named as the CLI's summary.json names --engine, --replicates and --seed (not --threads).
+  World named = ran;
+  if (engine) named.changes.push_back("engine.type=" + *engine);
+  if (replicates) named.changes.push_back("run.replicates=" + std::to_string(*replicates));
+  if (seed) named.changes.push_back("run.seed=" + std::to_string(*seed));
+  return RunOutput(std::move(named), std::move(result));
 }
 
 }  // namespace

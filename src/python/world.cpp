@@ -34,6 +34,26 @@ YAML::Node yaml_value(py::handle value, const std::string& key) {
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());
 }
 
+// A `set` value as `--set` would have been written: booleans and None in YAML's words,
+// numbers and strings as Python prints them, lists in brackets.
+std::string value_text(py::handle value) {
+  if (value.is_none()) return "null";
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::string text = "[";
+    for (py::handle item : value) text += (text.size() > 1 ? ", " : "") + value_text(item);
+    return text + "]";
+  }
+  return py::str(value).cast<std::string>();
+}
+
+std::vector<std::string> set_texts(const py::dict& set) {
+  std::vector<std::string> texts;
+  for (const auto& [key, value] : set)
+    texts.push_back(py::str(key).cast<std::string>() + "=" + value_text(value));
+  return texts;
+}
+
 std::vector<WorldOverride> set_overrides(const py::dict& set) {
   std::vector<WorldOverride> overrides;
   for (const auto& [key, value] : set) {
@@ -47,7 +67,8 @@ std::vector<WorldOverride> set_overrides(const py::dict& set) {
 World load(const std::filesystem::path& path, const py::dict& set) {
   const std::vector<WorldOverride> overrides = set_overrides(set);
   return {std::make_shared<const WorldSpec>(
-      reading_file([&] { return load_world_with(path.string(), overrides); }))};
+              reading_file([&] { return load_world_with(path.string(), overrides); })),
+          set_texts(set)};
 }
 
 std::string engine_name(const WorldSpec& spec) {
@@ -61,7 +82,7 @@ World with_overrides(const World& world, const std::vector<WorldOverride>& overr
   auto spec = std::make_shared<WorldSpec>(*world.spec);
   for (const WorldOverride& o : overrides) apply_override(*spec, o);
   check_world(*spec);
-  return {std::move(spec)};
+  return {std::move(spec), world.changes};
 }
 
 void bind_world(py::module_& module) {

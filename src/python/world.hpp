@@ -17,6 +17,9 @@ namespace swarmagg::python {
 
 struct World {
   std::shared_ptr<const WorldSpec> spec;
+  // What load_world's `set` changed of the world file, "key=value" each, as summary.json's
+  // `overrides` names the CLI's --set texts.
+  std::vector<std::string> changes;
 };
 
 // The override of world key `key` by the Python argument `name`, when it was given.
@@ -27,7 +30,7 @@ void add_argument(std::vector<WorldOverride>& overrides, const char* key,
 }
 
 // `world` with `overrides` applied and checked again; InputError (ValueError) when a value
-// does not fit its key.
+// does not fit its key. The world's `changes` are kept: the caller names its own arguments.
 World with_overrides(const World& world, const std::vector<WorldOverride>& overrides);
 
 }  // namespace swarmagg::python

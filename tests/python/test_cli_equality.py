@@ -16,9 +16,9 @@ def set_arguments(values):
     return [a for key, value in values.items() for a in ("--set", f"{key}={value}")]
 
 
-# What summary() leaves out of summary.json: wall times, and the two keys the CLI adds from
-# its command line and its run folder (docs/python.md says so).
-NOT_COMPARED = {"wall_seconds", "overrides", "model_errors"}
+# Wall times differ from run to run; everything else of summary.json must be equal, the
+# overrides and the model errors included.
+NOT_COMPARED = {"wall_seconds"}
 
 
 def without_wall_times(value):
