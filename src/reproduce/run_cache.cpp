@@ -1,6 +1,7 @@
 #include "reproduce/run_cache.hpp"
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "analysis/model_errors.hpp"
@@ -22,6 +23,14 @@ std::string without_comment_lines(std::istream& in) {
   return body;
 }
 
+// summary.json gains its model errors after world.resolved.yaml marked the folder complete
+// (they are read from the folder's files), so a run stopped in between is not reused.
+bool holds_model_errors(const std::filesystem::path& summary_file) {
+  std::ifstream in(summary_file);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
+  return summary.is_object() && summary.contains("model_errors");
+}
+
 }  // namespace
 
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder) {
@@ -32,7 +41,8 @@ bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder)
     return false;
   }
   std::istringstream current(world_to_yaml(spec));
-  return without_comment_lines(resolved) == without_comment_lines(current);
+  return without_comment_lines(resolved) == without_comment_lines(current) &&
+         holds_model_errors(folder / "summary.json");
 }
 
 bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
