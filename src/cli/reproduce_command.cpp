@@ -52,7 +52,9 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   command
       ->add_option("--engine", r.engine, "Engine for every world: kinematic or box2d (engine.type)")
       ->check(CLI::IsMember({"kinematic", "box2d"}));
-  command->add_option("--threads", r.threads, "Threads per world (0 = all cores)");
+  command->add_option("--threads", r.threads,
+                      "Threads in all (0 = all cores): runs go side by side, one thread each, "
+                      "as long as there are more runs than threads");
   command->add_option("--only", r.only,
                       "Only the worlds whose name contains this text (repeatable)");
   command->add_option("--set", r.overrides,
@@ -66,6 +68,10 @@ void add_reproduce_command(CLI::App& app, Action& action) {
                       "Folder of the paper worlds (default worlds/paper)");
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)");
   command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)");
+  command->add_flag("--run-plots", r.run_plots,
+                    "Also draw each run's rate plots (rates-<term>.png); without it their "
+                    "gnuplot scripts and CSVs are written, and 'gnuplot rates-<term>.gp' in the "
+                    "run folder draws one");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   options->progress.add_to(*command);
   command->callback(

@@ -160,8 +160,10 @@ int run_command(const RunCommandOptions& options) {
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;
   if (run.rates) {
-    rows = options.rates ? write_rate_outputs(spec, *run.rates, out)
-                         : measured_rate_rows(spec, *run.rates);
+    rows = options.rates
+               ? write_rate_outputs(spec, *run.rates, out,
+                                    options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw)
+               : measured_rate_rows(spec, *run.rates);
     measured = measured_terms(rows);
   }
   if (!options.no_model) {

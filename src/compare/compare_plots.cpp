@@ -10,6 +10,7 @@
 #include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/gnuplot_batch.hpp"
 
 namespace swarmagg {
 namespace {
@@ -177,6 +178,7 @@ void write_comparison_plots(const std::string& world_name, const ArmResult& a, c
                     histogram_csv("final_noa", c.a.label, c.a.final_noa, c.b.label, c.b.final_noa));
   write_file_atomic(out / "sizes.csv",
                     histogram_csv("size", c.a.label, c.a.final_sizes, c.b.label, c.b.final_sizes));
+  GnuplotBatch batch;
   run_gnuplot(out / "noa.gp", noa_script(world_name, a, b));
   run_gnuplot(out / "final.gp", final_script(world_name, c));
   // The escape-rate curves are the controller's leave law by aggregate size (Bayindir's,
@@ -185,6 +187,7 @@ void write_comparison_plots(const std::string& world_name, const ArmResult& a, c
     write_file_atomic(out / "escape_rate.csv", escape_rate_csv(a, b, c));
     run_gnuplot(out / "escape_rate.gp", escape_rate_script(world_name, c));
   }
+  batch.draw_or_throw();
 }
 
 }  // namespace swarmagg

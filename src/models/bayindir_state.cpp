@@ -1,5 +1,6 @@
 #include "models/bayindir_state.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace swarmagg {
@@ -36,7 +37,7 @@ double BayindirState::agents_accounted() const {
 }
 
 double BayindirState::largest_present() const {
-  for (int m = agents(); m >= 2; --m) {
+  for (int m = std::min(agents(), size_bound.value_or(agents())); m >= 2; --m) {
     if (aggregates[m] > 0.0) return m;
   }
   return 0.0;

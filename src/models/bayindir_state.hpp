@@ -3,6 +3,7 @@
 // and the cumulative event counts. The expected-value model holds real expectations, the
 // stochastic model whole numbers (exact in a double). Both conserve y + sum m n_m = N.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "models/model_series.hpp"
@@ -17,6 +18,10 @@ struct BayindirState {
   double searching = 0.0;
   std::vector<double> aggregates;  // [m] = n_m; indices 0 and 1 unused
   EventTotals totals;
+  // When set, no aggregate is larger than this: the stochastic model keeps it after each
+  // step, so that finding the largest aggregate does not search all N sizes. Whoever
+  // changes `aggregates` otherwise leaves it unset.
+  std::optional<int> size_bound;
 
   static BayindirState all_searching(int agents);
   // The state after a first decision that formed `aggregates` ([m]) from all searching:

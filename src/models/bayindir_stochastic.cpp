@@ -34,9 +34,13 @@ void advance_stochastic(const BayindirRates& rates, BayindirState& state, Unifor
   std::int64_t searchers_left = y - 2 * creations;
   std::int64_t growths = 0, dissipations = 0, shrinks = 0;
   std::vector<double>& count = state.aggregates;
-  // Same upward walk as the expected-value model: n_m is read before it changes.
+  // Same upward walk as the expected-value model: n_m is read before it changes. Above the
+  // largest aggregate present, plus the one size it can grow into, nothing is drawn and
+  // nothing changes, so the walk stops there.
+  const int last =
+      std::min(state.agents(), std::max(2, static_cast<int>(state.largest_present()) + 1));
   std::int64_t inflow_from_below = creations;
-  for (int m = 2; m <= state.agents(); ++m) {
+  for (int m = 2; m <= last; ++m) {
     const auto present = static_cast<std::int64_t>(count[m]);
     std::int64_t grow = 0, lose = 0;
     if (present > 0) {
@@ -51,6 +55,7 @@ void advance_stochastic(const BayindirRates& rates, BayindirState& state, Unifor
     growths += grow;
     (m == 2 ? dissipations : shrinks) += lose;
   }
+  state.size_bound = last;
   state.searching = static_cast<double>(searchers_left + 2 * dissipations + shrinks);
   state.totals.creations += static_cast<double>(creations);
   state.totals.encounters += static_cast<double>(creations);

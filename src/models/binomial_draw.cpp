@@ -11,7 +11,16 @@ namespace {
 // in two halves (the sum of independent binomials with the same q is binomial).
 constexpr double kLargestInvertedMean = 20.0;
 
-std::int64_t invert_cdf(std::int64_t trials, double q, double u) {
+// P(0) = (1 - q)^n >= 1 - n q (Bernoulli's inequality), and exp(n log1p(-q)) is within a
+// few ulp of it, so a uniform below 1 - n q less this margin (far above rounding) is below
+// the computed P(0) too: no success, known without the exp and log1p that most draws of a
+// model's small per-step probabilities would otherwise cost.
+constexpr double kBelowFirstStepMargin = 1e-9;
+
+}  // namespace
+
+std::int64_t inverted_binomial(std::int64_t trials, double q, double u) {
+  if (u < 1.0 - static_cast<double>(trials) * q - kBelowFirstStepMargin) return 0;
   const double odds = q / (1.0 - q);
   double probability = std::exp(static_cast<double>(trials) * std::log1p(-q));
   double cumulative = probability;
@@ -25,8 +34,6 @@ std::int64_t invert_cdf(std::int64_t trials, double q, double u) {
   return successes;
 }
 
-}  // namespace
-
 std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStream& uniforms) {
   if (trials <= 0 || probability <= 0.0) return 0;
   if (probability >= 1.0) return trials;
@@ -36,7 +43,7 @@ std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStrea
     return binomial_draw(half, probability, uniforms) +
            binomial_draw(trials - half, probability, uniforms);
   }
-  return invert_cdf(trials, probability, uniforms.next());
+  return inverted_binomial(trials, probability, uniforms.next());
 }
 
 }  // namespace swarmagg

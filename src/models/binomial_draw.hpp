@@ -26,4 +26,9 @@ class UniformStream {
 // (clamped to [0, 1]).
 std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStream& uniforms);
 
+// The draw of binomial_draw's inversion path for the uniform u in [0, 1): the smallest k
+// whose CDF exceeds u, for q <= 1/2 and a mean n q small enough that (1 - q)^n does not
+// underflow (binomial_draw splits larger ones).
+std::int64_t inverted_binomial(std::int64_t trials, double q, double u);
+
 }  // namespace swarmagg

@@ -13,7 +13,8 @@ bool gnuplot_available();
 // Writes `script` to `script_path` (atomically) and runs gnuplot on it with the script's
 // folder as working directory, so the script names its CSV and PNG files relatively.
 // Throws std::runtime_error with gnuplot's own messages when it fails or is missing (the
-// message says how to install it).
+// message says how to install it). While a GnuplotBatch is open on this thread, the script
+// is written and queued instead, and the batch draws it (plot/gnuplot_batch.hpp).
 void run_gnuplot(const std::filesystem::path& script_path, const std::string& script);
 
 // Quotes text for a gnuplot string literal ("...").

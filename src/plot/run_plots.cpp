@@ -4,6 +4,7 @@
 
 #include "controllers/controller_registry.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/plot_collection.hpp"
 
 namespace swarmagg {
 namespace {
@@ -50,18 +51,13 @@ PlotOutcome draw_run_plots(const std::filesystem::path& run_folder,
     throw std::runtime_error("cannot draw plots: " + reason);
   }
   std::filesystem::create_directories(out / kPlotsFolder);
-  PlotOutcome outcome;
+  PlotCollection batch;
   for (const RunPlot& plot : run_plots()) {
     if (!plot.applies(run)) continue;
-    const FigureFiles files{out / kPlotsFolder, plot.id, size, ".."};
-    try {
-      plot.draw(run, files);
-      outcome.drawn.push_back(files.png());
-    } catch (const std::exception& e) {
-      outcome.failures.push_back(plot.id + ".png: " + e.what());
-    }
+    batch.prepare({out / kPlotsFolder, plot.id, size, ".."},
+                  [&](const FigureFiles& files) { plot.draw(run, files); });
   }
-  return outcome;
+  return batch.draw();
 }
 
 }  // namespace swarmagg

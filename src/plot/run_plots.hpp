@@ -8,17 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "plot/plot_collection.hpp"
 #include "plot/png_terminal.hpp"
 #include "plot/run_plot.hpp"
 
 namespace swarmagg {
 
 const std::vector<RunPlot>& run_plots();
-
-struct PlotOutcome {
-  std::vector<std::filesystem::path> drawn;  // the PNGs
-  std::vector<std::string> failures;         // one message per plot gnuplot could not draw
-};
 
 inline constexpr const char* kPlotsFolder = "plots";
 

@@ -11,6 +11,7 @@
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/plot_collection.hpp"
 #include "plot/variant_colours.hpp"
 
 namespace swarmagg {
@@ -141,17 +142,12 @@ PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,
     throw std::runtime_error("cannot draw plots: " + reason);
   }
   std::filesystem::create_directories(out / kPlotsFolder);
-  PlotOutcome outcome;
+  PlotCollection batch;
   for (std::size_t p = 0; p < keys.size(); ++p) {
-    const FigureFiles files{out / kPlotsFolder, "final-noa-vs-" + keys[p], size, ".."};
-    try {
-      plot_against(keys, p, points, files);
-      outcome.drawn.push_back(files.png());
-    } catch (const std::exception& e) {
-      outcome.failures.push_back(files.id + ".png: " + e.what());
-    }
+    batch.prepare({out / kPlotsFolder, "final-noa-vs-" + keys[p], size, ".."},
+                  [&](const FigureFiles& files) { plot_against(keys, p, points, files); });
   }
-  return outcome;
+  return batch.draw();
 }
 
 }  // namespace swarmagg

@@ -11,12 +11,14 @@
 namespace swarmagg {
 
 std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally& tally,
-                                        const std::filesystem::path& folder) {
+                                        const std::filesystem::path& folder, RatePlots plots) {
   std::filesystem::create_directories(folder);
   const std::vector<RateRow> rows = measured_rate_rows(world, tally);
   write_file_atomic(folder / "rates.csv", rates_csv(rows));
   write_file_atomic(folder / "rates.json", rates_json(world, tally, rows));
-  if (gnuplot_available()) {
+  if (plots == RatePlots::ScriptsOnly) {
+    write_rate_plot_scripts(world, rows, folder);
+  } else if (gnuplot_available()) {
     plot_rates(world, rows, folder);
   } else {
     std::cerr << "note: gnuplot not found: no rate plots (install gnuplot-nox)\n";

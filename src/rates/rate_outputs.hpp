@@ -10,8 +10,13 @@
 
 namespace swarmagg {
 
+// Whether the plot of each term is drawn, or only its gnuplot script and CSV written (the
+// runs of `reproduce` and `run --no-plots`: `gnuplot rates-<term>.gp` in the folder draws it).
+enum class RatePlots { Draw, ScriptsOnly };
+
 // Returns the rows written. Without gnuplot the plots are skipped with a note on stderr.
 std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally& tally,
-                                        const std::filesystem::path& folder);
+                                        const std::filesystem::path& folder,
+                                        RatePlots plots = RatePlots::Draw);
 
 }  // namespace swarmagg

@@ -11,6 +11,7 @@
 #include "output/atomic_file.hpp"
 #include "output/format_text.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/gnuplot_batch.hpp"
 #include "plot/png_terminal.hpp"
 #include "rates/geometry_fits.hpp"
 
@@ -129,10 +130,9 @@ std::vector<RateRow> with_geometry_fits(const WorldSpec& world, const std::vecto
   return plotted;
 }
 
-}  // namespace
-
-void plot_rates(const WorldSpec& world, const std::vector<RateRow>& measured,
-                const std::filesystem::path& folder) {
+// Writes each term's CSV and script; run_gnuplot queues them in the caller's batch.
+void write_scripts(const WorldSpec& world, const std::vector<RateRow>& measured,
+                   const std::filesystem::path& folder) {
   const std::vector<RateRow> rows = with_geometry_fits(world, measured);
   std::map<std::string, std::vector<const RateRow*>> sized;
   for (const RateRow& row : rows) {
@@ -149,6 +149,21 @@ void plot_rates(const WorldSpec& world, const std::vector<RateRow>& measured,
     });
     if (drawable) plot_sized(term, term_rows, folder, world);
   }
+}
+
+}  // namespace
+
+void write_rate_plot_scripts(const WorldSpec& world, const std::vector<RateRow>& rows,
+                             const std::filesystem::path& folder) {
+  const GnuplotBatch undrawn;  // closed without drawing: the scripts stay, no PNG is drawn
+  write_scripts(world, rows, folder);
+}
+
+void plot_rates(const WorldSpec& world, const std::vector<RateRow>& rows,
+                const std::filesystem::path& folder) {
+  GnuplotBatch batch;
+  write_scripts(world, rows, folder);
+  batch.draw_or_throw();
 }
 
 }  // namespace swarmagg

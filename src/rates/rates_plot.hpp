@@ -15,4 +15,8 @@ namespace swarmagg {
 void plot_rates(const WorldSpec& world, const std::vector<RateRow>& rows,
                 const std::filesystem::path& folder);
 
+// The CSVs and gnuplot scripts of plot_rates, without drawing them.
+void write_rate_plot_scripts(const WorldSpec& world, const std::vector<RateRow>& rows,
+                             const std::filesystem::path& folder);
+
 }  // namespace swarmagg

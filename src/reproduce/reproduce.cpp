@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <thread>
 
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
@@ -20,6 +24,7 @@
 #include "reproduce/report.hpp"
 #include "reproduce/run_cache.hpp"
 #include "reproduce/timeout_series.hpp"
+#include "run/parallel_for.hpp"
 
 namespace swarmagg {
 namespace {
@@ -110,23 +115,32 @@ struct Arm {
   std::vector<WorldOverride> overrides;
 };
 
+// The figure's worlds as this arm runs them.
+std::vector<WorldSpec> figure_worlds(const ReproduceOptions& options, const PaperFigure& figure,
+                                     const Arm& arm) {
+  std::vector<WorldSpec> worlds;
+  for (const std::string& name : figure.worlds) {
+    WorldSpec world = load_world((options.worlds / (name + ".yaml")).string());
+    for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
+    for (const WorldOverride& o : arm.overrides) apply_override(world, o);
+    check_world(world);
+    worlds.push_back(std::move(world));
+  }
+  return worlds;
+}
+
 FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure& figure,
-                              const Arm& arm) {
+                              const Arm& arm, const RunOptions& run_options) {
   const auto start = Clock::now();
   FigureResult result;
   result.figure = figure;
   const std::filesystem::path runs = arm.root / "runs";
-  RunOptions run_options;
-  run_options.threads = options.threads;
-  run_options.progress = options.progress;
-  for (const std::string& name : figure.worlds) {
-    const std::string path = (options.worlds / (name + ".yaml")).string();
-    WorldSpec world = load_world(path);
-    for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
-    for (const WorldOverride& o : arm.overrides) apply_override(world, o);
-    check_world(world);
-    result.reused += ensure_run(world, runs / name, run_options) ? 1 : 0;
-    result.worlds.push_back(std::move(world));
+  result.worlds = figure_worlds(options, figure, arm);
+  for (std::size_t i = 0; i < result.worlds.size(); ++i) {
+    result.reused +=
+        ensure_run(result.worlds[i], runs / figure.worlds[i], run_options, run_rate_plots(options))
+            ? 1
+            : 0;
   }
   const FigureFiles files{arm.root / kPlotFolder, figure.id, options.plot_size, ""};
   std::filesystem::create_directories(files.folder);
@@ -141,10 +155,9 @@ FigureResult reproduce_figure(const ReproduceOptions& options, const PaperFigure
 
 // Compaction changes the Bayindir and Soysal experiments whose worlds compact; the collision
 // checks have no waiting agents, and a world already run without compaction has no other arm.
-bool compaction_applies(const FigureResult& result) {
-  const FigureKind kind = result.figure.kind;
-  if (kind != FigureKind::Noa && kind != FigureKind::Partition) return false;
-  return std::all_of(result.worlds.begin(), result.worlds.end(),
+bool compaction_applies(const PaperFigure& figure, const std::vector<WorldSpec>& worlds) {
+  if (figure.kind != FigureKind::Noa && figure.kind != FigureKind::Partition) return false;
+  return std::all_of(worlds.begin(), worlds.end(),
                      [](const WorldSpec& w) { return controller_rules(w).compacts; });
 }
 
@@ -182,7 +195,100 @@ std::vector<CompactionEffect> compaction_effects(const std::vector<FigureResult>
   return effects;
 }
 
+// One unit of reproduce's work for one of its threads: an arm of a figure, or a point of
+// the leave-timeout series; `index` is the figure's or the point's.
+struct ReproduceJob {
+  std::size_t index = 0;
+  bool compaction_off = false;
+  std::optional<TimeoutRun> timeout = std::nullopt;
+  double agent_steps = 0.0;  // what it will simulate, to hand out the longest jobs first
+};
+
+double agent_steps(const WorldSpec& world) {
+  return static_cast<double>(world.robots.count) * world.run.duration / world.engine.dt *
+         world.run.replicates;
+}
+
+double agent_steps(const std::vector<WorldSpec>& worlds) {
+  double total = 0.0;
+  for (const WorldSpec& world : worlds) total += agent_steps(world);
+  return total;
+}
+
+// Every figure's arms and every timeout point, longest first: with the longest last, one
+// thread would finish it alone while the others wait.
+std::vector<ReproduceJob> reproduce_jobs(const ReproduceOptions& options,
+                                         const std::vector<PaperFigure>& figures,
+                                         const std::vector<TimeoutRun>& timeouts) {
+  std::vector<ReproduceJob> jobs;
+  for (std::size_t f = 0; f < figures.size(); ++f) {
+    const std::vector<WorldSpec> worlds = figure_worlds(options, figures[f], Arm{options.out, {}});
+    jobs.push_back({.index = f, .agent_steps = agent_steps(worlds)});
+    if (compaction_applies(figures[f], worlds)) {
+      jobs.push_back({.index = f,
+                      .compaction_off = true,
+                      .agent_steps = agent_steps(
+                          figure_worlds(options, figures[f], compaction_off_arm(options)))});
+    }
+  }
+  for (std::size_t t = 0; t < timeouts.size(); ++t) {
+    jobs.push_back({.index = t,
+                    .timeout = timeouts[t],
+                    .agent_steps = agent_steps(timeout_world(options, timeouts[t]))});
+  }
+  std::stable_sort(jobs.begin(), jobs.end(), [](const ReproduceJob& a, const ReproduceJob& b) {
+    return a.agent_steps > b.agent_steps;
+  });
+  return jobs;
+}
+
+// Jobs run side by side, one thread each, as long as there are enough jobs for the threads;
+// a lone job gets them all for its replicates.
+struct ThreadSplit {
+  int jobs_at_once = 1;
+  int per_job = 1;
+};
+
+ThreadSplit split_threads(int requested, std::size_t jobs) {
+  const int threads = requested > 0
+                          ? requested
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int at_once =
+      static_cast<int>(std::clamp<std::size_t>(jobs, 1, static_cast<std::size_t>(threads)));
+  return {at_once, std::max(1, threads / at_once)};
+}
+
+std::string timeout_line(const TimeoutPoint& p) {
+  std::ostringstream line;
+  line << "timeout series " << p.world << " timeout " << report_number(p.leave_timeout)
+       << (p.reused ? " (reused)" : "") << ", " << report_number(p.wall_seconds) << " s; "
+       << errors_text(p.comparison.errors, "TV distance");
+  return line.str();
+}
+
+// Summary lines written in their order as soon as each and all before it are known, so the
+// output reads the same whatever order the threads finish in.
+class LinesInOrder {
+ public:
+  LinesInOrder(std::ostream& out, std::size_t count) : out_(out), lines_(count) {}
+  void set(std::size_t index, std::string line) {
+    std::lock_guard lock(mutex_);
+    lines_[index] = std::move(line);
+    while (next_ < lines_.size() && lines_[next_]) out_ << *lines_[next_++] << std::endl;
+  }
+
+ private:
+  std::ostream& out_;
+  std::vector<std::optional<std::string>> lines_;
+  std::size_t next_ = 0;
+  std::mutex mutex_;
+};
+
 }  // namespace
+
+RatePlots run_rate_plots(const ReproduceOptions& options) {
+  return options.run_plots ? RatePlots::Draw : RatePlots::ScriptsOnly;
+}
 
 std::vector<WorldOverride> reproduce_overrides(const ReproduceOptions& options,
                                                const WorldSpec& world) {
@@ -201,28 +307,51 @@ std::vector<WorldOverride> reproduce_overrides(const ReproduceOptions& options,
 
 ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summary) {
   const auto start = Clock::now();
-  ReproduceOutcome outcome;
-  for (const PaperFigure& figure : select_worlds(paper_figures(), options.only)) {
-    outcome.figures.push_back(reproduce_figure(options, figure, Arm{options.out, {}}));
-    const FigureResult* off = nullptr;
-    if (compaction_applies(outcome.figures.back())) {
-      outcome.compaction_off.push_back(
-          reproduce_figure(options, figure, compaction_off_arm(options)));
-      off = &outcome.compaction_off.back();
-    }
-    summary << summary_line(outcome.figures.back(), off) << std::endl;
+  const std::vector<PaperFigure> figures = select_worlds(paper_figures(), options.only);
+  const std::vector<TimeoutRun> timeouts =
+      timeout_series_selected(options) ? timeout_runs() : std::vector<TimeoutRun>{};
+  const std::vector<ReproduceJob> jobs = reproduce_jobs(options, figures, timeouts);
+  const ThreadSplit split = split_threads(options.threads, jobs.size());
+  RunOptions run_options;
+  run_options.threads = split.per_job;
+  // Progress lines of runs on several threads at once would overwrite each other.
+  run_options.progress = options.progress && split.jobs_at_once == 1;
+
+  std::vector<std::optional<FigureResult>> on(figures.size()), off(figures.size());
+  std::vector<int> arms_left(figures.size(), 0);
+  for (const ReproduceJob& job : jobs) {
+    if (!job.timeout) ++arms_left[job.index];
   }
-  std::vector<TimeoutPoint> series;
-  if (timeout_series_selected(options)) {
-    series = run_timeout_series(options);
+  std::vector<TimeoutPoint> series(timeouts.size());
+  std::mutex results;
+  LinesInOrder lines(summary, figures.size() + timeouts.size());
+  parallel_for(jobs.size(), split.jobs_at_once, [&](std::size_t j) {
+    const ReproduceJob& job = jobs[j];
+    if (job.timeout) {
+      TimeoutPoint point = run_timeout_point(options, *job.timeout, split.per_job);
+      const std::string line = timeout_line(point);
+      series[job.index] = std::move(point);
+      lines.set(figures.size() + job.index, line);
+      return;
+    }
+    const Arm arm = job.compaction_off ? compaction_off_arm(options) : Arm{options.out, {}};
+    FigureResult result = reproduce_figure(options, figures[job.index], arm, run_options);
+    std::lock_guard lock(results);
+    (job.compaction_off ? off : on)[job.index] = std::move(result);
+    if (--arms_left[job.index] == 0) {
+      lines.set(job.index,
+                summary_line(*on[job.index], off[job.index] ? &*off[job.index] : nullptr));
+    }
+  });
+  ReproduceOutcome outcome;
+  for (std::size_t f = 0; f < figures.size(); ++f) {
+    outcome.figures.push_back(std::move(*on[f]));
+    if (off[f]) outcome.compaction_off.push_back(std::move(*off[f]));
+  }
+  if (!series.empty()) {
     write_file_atomic(options.out / (std::string(kTimeoutFolder) + ".csv"),
                       timeout_series_csv(series));
     plot_timeout_series(options.out / kPlotFolder, options.plot_size, series);
-    for (const TimeoutPoint& p : series) {
-      summary << "timeout series " << p.world << " timeout " << report_number(p.leave_timeout)
-              << (p.reused ? " (reused)" : "") << ", " << report_number(p.wall_seconds) << " s; "
-              << errors_text(p.comparison.errors, "TV distance") << std::endl;
-    }
   }
   outcome.wall_seconds = seconds_since(start);
   std::string mode = options.quick ? "quick" : "full";

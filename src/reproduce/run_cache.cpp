@@ -46,14 +46,15 @@ bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder)
 }
 
 bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
-                const RunOptions& options) {
+                const RunOptions& options, RatePlots rate_plots) {
   if (run_is_reusable(spec, folder)) return true;
   std::filesystem::remove(folder / "world.resolved.yaml");
   // The run measures the model terms as it goes; the measured variants need them, so the
   // models follow the run, and world.resolved.yaml, written last by write_run_folder, marks
   // the folder complete with the rates and model outputs beside it.
   const MeasuredRun run = run_world_measuring(spec, options, true);
-  const MeasuredTerms terms = measured_terms(write_rate_outputs(spec, *run.rates, folder));
+  const MeasuredTerms terms =
+      measured_terms(write_rate_outputs(spec, *run.rates, folder, rate_plots));
   write_model_outputs(spec, paper_predictions(spec, &terms), folder);
   write_run_folder(spec, run.result, folder);
   write_model_errors(folder);

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "config/world_spec.hpp"
+#include "rates/rate_outputs.hpp"
 #include "run/world_runner.hpp"
 
 namespace swarmagg {
@@ -14,9 +15,10 @@ namespace swarmagg {
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder);
 
 // Runs the world and writes the run folder, its measured rates (rates.csv, rates.json,
-// plots) and its model outputs (model.csv, model-timeseries/, with the measured variants)
-// unless run_is_reusable. Returns true when the run was reused.
+// the rate plots' scripts, drawn when `rate_plots` says so) and its model outputs
+// (model.csv, model-timeseries/, with the measured variants) unless run_is_reusable.
+// Returns true when the run was reused.
 bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
-                const RunOptions& options);
+                const RunOptions& options, RatePlots rate_plots = RatePlots::ScriptsOnly);
 
 }  // namespace swarmagg

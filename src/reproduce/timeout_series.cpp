@@ -22,23 +22,6 @@ std::string run_name(const std::string& world, double timeout) {
   return world + "-timeout-" + csv_number(timeout);
 }
 
-// The paper world with the timeout and the series' run length (--timeout-duration, divided
-// like every run length under --quick).
-WorldSpec series_world(const ReproduceOptions& options, const std::string& name, double timeout) {
-  WorldSpec world = load_world((options.worlds / (name + ".yaml")).string());
-  for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
-  if (options.timeout_duration) {
-    const double divisor = options.quick ? kQuickDurationDivisor : 1.0;
-    apply_override(world, typed_override("run.duration", *options.timeout_duration / divisor,
-                                         "--timeout-duration"));
-  }
-  apply_override(world,
-                 typed_override("controller.leave_timeout", timeout, "reproduce (timeout series)"));
-  world.name = run_name(name, timeout);
-  check_world(world);
-  return world;
-}
-
 }  // namespace
 
 bool timeout_series_selected(const ReproduceOptions& options) {
@@ -49,31 +32,49 @@ bool timeout_series_selected(const ReproduceOptions& options) {
   return false;
 }
 
-std::vector<TimeoutPoint> run_timeout_series(const ReproduceOptions& options) {
-  std::vector<TimeoutPoint> points;
-  const std::filesystem::path runs = options.out / kTimeoutFolder / "runs";
-  RunOptions run_options;
-  run_options.threads = options.threads;
-  run_options.progress = options.progress;
-  for (const char* name : kTimeoutWorlds) {
-    for (const double timeout : kLeaveTimeouts) {
-      const auto start = Clock::now();
-      const WorldSpec world = series_world(options, name, timeout);
-      const std::filesystem::path folder = runs / world.name;
-      TimeoutPoint point{.world = name,
-                         .agents = world.robots.count,
-                         .leave_timeout = timeout,
-                         .duration = world.run.duration,
-                         .replicates = world.run.replicates};
-      point.reused = ensure_run(world, folder, run_options);
-      point.comparison = compare_partitions(folder);
-      point.rates = read_rates_csv(folder / "rates.csv");
-      point.trend = second_half_trend(read_step_series(read_csv(folder / "timeseries.csv"), "noa"));
-      point.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      points.push_back(std::move(point));
-    }
+// The series' run length is --timeout-duration's, divided like every run length under --quick.
+WorldSpec timeout_world(const ReproduceOptions& options, const TimeoutRun& run) {
+  WorldSpec world = load_world((options.worlds / (run.world + ".yaml")).string());
+  for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
+  if (options.timeout_duration) {
+    const double divisor = options.quick ? kQuickDurationDivisor : 1.0;
+    apply_override(world, typed_override("run.duration", *options.timeout_duration / divisor,
+                                         "--timeout-duration"));
   }
-  return points;
+  apply_override(world, typed_override("controller.leave_timeout", run.leave_timeout,
+                                       "reproduce (timeout series)"));
+  world.name = run_name(run.world, run.leave_timeout);
+  check_world(world);
+  return world;
+}
+
+std::vector<TimeoutRun> timeout_runs() {
+  std::vector<TimeoutRun> runs;
+  for (const char* world : kTimeoutWorlds) {
+    for (const double timeout : kLeaveTimeouts) runs.push_back({world, timeout});
+  }
+  return runs;
+}
+
+TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun& run,
+                               int run_threads) {
+  const auto start = Clock::now();
+  const WorldSpec world = timeout_world(options, run);
+  const std::filesystem::path folder = options.out / kTimeoutFolder / "runs" / world.name;
+  RunOptions run_options;
+  run_options.threads = run_threads;
+  run_options.progress = options.progress;
+  TimeoutPoint point{.world = run.world,
+                     .agents = world.robots.count,
+                     .leave_timeout = run.leave_timeout,
+                     .duration = world.run.duration,
+                     .replicates = world.run.replicates};
+  point.reused = ensure_run(world, folder, run_options, run_rate_plots(options));
+  point.comparison = compare_partitions(folder);
+  point.rates = read_rates_csv(folder / "rates.csv");
+  point.trend = second_half_trend(read_step_series(read_csv(folder / "timeseries.csv"), "noa"));
+  point.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return point;
 }
 
 std::string timeout_series_csv(const std::vector<TimeoutPoint>& points) {

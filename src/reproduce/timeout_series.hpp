@@ -38,7 +38,19 @@ struct TimeoutPoint {
 // Whether the options ask for the series (no --only, or an --only that names it).
 bool timeout_series_selected(const ReproduceOptions& options);
 
-std::vector<TimeoutPoint> run_timeout_series(const ReproduceOptions& options);
+// The series' runs, in the order of the CSV and the report: each world, each timeout.
+struct TimeoutRun {
+  std::string world;
+  double leave_timeout = 0.0;
+};
+std::vector<TimeoutRun> timeout_runs();
+
+// The paper world with the point's timeout and the series' run length.
+WorldSpec timeout_world(const ReproduceOptions& options, const TimeoutRun& run);
+
+// Runs one point of the series (or reuses its complete run) with `run_threads` threads.
+TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun& run,
+                               int run_threads);
 
 std::string timeout_series_csv(const std::vector<TimeoutPoint>& points);
 

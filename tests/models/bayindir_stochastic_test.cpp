@@ -31,6 +31,29 @@ TEST(BayindirStochastic, ConservesWholeAgentsEveryStep) {
   EXPECT_GT(state.totals.dissipations, 0.0);
 }
 
+// The walk over sizes stops above the largest aggregate; the bound it keeps must stay an
+// upper bound, and the largest aggregate found through it the one a full search finds.
+TEST(BayindirStochastic, KeptSizeBoundNeverHidesAnAggregate) {
+  const BayindirRates rates =
+      bayindir_rates(testing::bayindir_world(120, 5e-4, true, true), CreationVariant::Collision);
+  BayindirState state = BayindirState::all_searching(120);
+  const CounterRng rng = CounterRng::for_replicate(5, 0);
+  double largest_seen = 0.0;
+  for (std::uint64_t step = 0; step < 30000; ++step) {
+    UniformStream uniforms(rng, step, 1);
+    advance_stochastic(rates, state, uniforms);
+    double searched = 0.0;
+    for (int m = 2; m <= state.agents(); ++m) {
+      if (state.aggregates[static_cast<std::size_t>(m)] > 0.0) searched = m;
+    }
+    ASSERT_TRUE(state.size_bound.has_value());
+    ASSERT_GE(*state.size_bound, searched) << "step " << step;
+    ASSERT_EQ(state.largest_present(), searched) << "step " << step;
+    largest_seen = std::max(largest_seen, searched);
+  }
+  EXPECT_GT(largest_seen, 5.0);  // aggregates grew, so the bound moved
+}
+
 TEST(BayindirStochastic, ReproducibleForASeedAndDifferentAcrossSeeds) {
   const BayindirRates rates =
       bayindir_rates(testing::bayindir_world(120, 5e-4, true, true), CreationVariant::Original);

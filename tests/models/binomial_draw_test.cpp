@@ -67,3 +67,59 @@ TEST(BinomialDraw, IsAPureFunctionOfKeyStepAndStream) {
 
 }  // namespace
 }  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// The CDF inversion written out in full, without the shortcut for uniforms below
+// 1 - n q: the draws must be the same whatever the shortcut decides.
+std::int64_t fully_inverted(std::int64_t trials, double q, double u) {
+  const double odds = q / (1.0 - q);
+  double probability = std::exp(static_cast<double>(trials) * std::log1p(-q));
+  double cumulative = probability;
+  std::int64_t successes = 0;
+  while (u >= cumulative && successes < trials) {
+    probability *=
+        odds * static_cast<double>(trials - successes) / static_cast<double>(successes + 1);
+    ++successes;
+    cumulative += probability;
+  }
+  return successes;
+}
+
+TEST(BinomialDraw, NoSuccessShortcutDrawsWhatFullInversionDraws) {
+  const CounterRng rng = CounterRng::for_replicate(11, 0);
+  int shortcut_region = 0;
+  for (std::uint64_t step = 0; step < 20000; ++step) {
+    UniformStream parameters(rng, step, 1);
+    const auto trials = static_cast<std::int64_t>(1 + 40 * parameters.next());
+    // Small probabilities, as a model's per-step rates are, and some near the mean of 20.
+    const double q = std::pow(10.0, -6.0 * parameters.next()) * (step % 2 ? 0.5 : 0.01);
+    if (static_cast<double>(trials) * q > 20.0) continue;
+    UniformStream drawn(rng, step, 0), reference(rng, step, 0);
+    const double u = reference.next();
+    shortcut_region += u < 1.0 - static_cast<double>(trials) * q ? 1 : 0;
+    ASSERT_EQ(binomial_draw(trials, q, drawn), fully_inverted(trials, q, u))
+        << trials << " trials, q " << q << ", u " << u;
+  }
+  EXPECT_GT(shortcut_region, 1000);  // the shortcut was exercised, not only the full walk
+}
+
+// Uniforms right at the edge of the shortcut, 1 - n q less its margin, and around it.
+TEST(BinomialDraw, NoSuccessShortcutHoldsAtItsEdge) {
+  for (const double q : {1e-9, 1e-6, 1e-4, 0.01, 0.1, 0.5}) {
+    for (const std::int64_t trials : {1, 2, 7, 30}) {
+      if (static_cast<double>(trials) * q > 20.0) continue;
+      const double edge = 1.0 - static_cast<double>(trials) * q;
+      for (const double offset : {-1e-6, -2e-9, -1e-9, -5e-10, 0.0, 1e-12, 1e-9, 1e-3}) {
+        const double u = edge + offset;
+        if (u < 0.0 || u >= 1.0) continue;
+        EXPECT_EQ(inverted_binomial(trials, q, u), fully_inverted(trials, q, u))
+            << trials << " trials, q " << q << ", u " << u;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace swarmagg

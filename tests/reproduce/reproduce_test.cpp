@@ -24,6 +24,7 @@ ReproduceOptions reduced_options(const std::filesystem::path& out) {
   options.only = {"collision-count-100", "collision-speed-2", "creation-50", "soysal-5-constant"};
   options.overrides = {"run.replicates=2"};
   options.plot_size = {640, 480};
+  options.threads = 2;  // runs side by side, one thread each
   return options;
 }
 
@@ -245,6 +246,56 @@ TEST_F(ReproduceTest, CompactionTableHoldsBothArmsOfEachExperiment) {
     }
   }
   EXPECT_EQ(compaction_value(csv, "collision-count-100", "on", "error:original"), "missing");
+}
+
+// Every CSV under `root`, by its path relative to it.
+std::map<std::string, std::string> csv_files(const std::filesystem::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (entry.path().extension() == ".csv")
+      files[entry.path().lexically_relative(root).generic_string()] = read_text(entry.path());
+  }
+  return files;
+}
+
+// The summary's lines up to their timing: which figure each line is about, in order.
+std::vector<std::string> line_heads(const std::string& summary) {
+  std::vector<std::string> heads;
+  std::stringstream lines(summary);
+  std::string line;
+  while (std::getline(lines, line)) heads.push_back(line.substr(0, line.find(" reused")));
+  return heads;
+}
+
+bool has_file_named(const std::filesystem::path& folder, const std::string& prefix,
+                    const std::string& extension) {
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(prefix) && entry.path().extension() == extension) return true;
+  }
+  return false;
+}
+
+TEST_F(ReproduceTest, OneThreadWritesTheSameFilesAndSummaryAsRunsSideBySide) {
+  ReproduceOptions options = reduced_options(out_ / "one-thread");
+  options.threads = 1;
+  options.run_plots = true;
+  std::ostringstream summary;
+  reproduce(options, summary);
+  const auto side_by_side = csv_files(out_ / "runs");
+  const auto one_thread = csv_files(out_ / "one-thread" / "runs");
+  ASSERT_FALSE(side_by_side.empty());
+  EXPECT_EQ(one_thread, side_by_side);
+  EXPECT_EQ(csv_files(out_ / "one-thread" / "compaction-off" / "runs"),
+            csv_files(out_ / "compaction-off" / "runs"));
+  EXPECT_EQ(line_heads(summary.str()), line_heads(summary_));
+  EXPECT_EQ(line_heads(summary_).size(), 4u);  // a line per figure, in the paper's order
+  EXPECT_TRUE(line_heads(summary_).front().starts_with("Fig 7 "));
+  // Rate plots: scripts by default, drawn with run_plots.
+  const auto run = out_ / "runs" / "creation-50";
+  EXPECT_TRUE(has_file_named(run, "rates-", ".gp"));
+  EXPECT_FALSE(has_file_named(run, "rates-", ".png"));
+  EXPECT_TRUE(has_file_named(out_ / "one-thread" / "runs" / "creation-50", "rates-", ".png"));
 }
 
 TEST_F(ReproduceTest, AChangedWorldIsRunAgain) {
