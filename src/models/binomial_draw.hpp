@@ -11,13 +11,13 @@ namespace swarmagg {
 
 class UniformStream {
  public:
+  // The step's share of the hash is done once: a model step draws several uniforms.
   UniformStream(const CounterRng& rng, std::uint64_t step, std::uint64_t stream)
-      : rng_(rng), step_(step), stream_(stream) {}
-  double next() { return rng_.uniform(step_, drawn_++, Draw::Model, stream_); }
+      : step_rng_(rng.at_step(step)), stream_(stream) {}
+  double next() { return step_rng_.uniform(drawn_++, Draw::Model, stream_); }
 
  private:
-  CounterRng rng_;
-  std::uint64_t step_;
+  StepRng step_rng_;
   std::uint64_t stream_;
   std::uint64_t drawn_ = 0;
 };
