@@ -232,6 +232,7 @@ std::vector<ReproduceJob> reproduce_jobs(const ReproduceOptions& options,
     }
   }
   for (std::size_t t = 0; t < timeouts.size(); ++t) {
+    if (is_paper_run(options, timeouts[t])) continue;  // after the figures: see reproduce()
     jobs.push_back({.index = t,
                     .timeout = timeouts[t],
                     .agent_steps = agent_steps(timeout_world(options, timeouts[t]))});
@@ -343,6 +344,13 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
                 summary_line(*on[job.index], off[job.index] ? &*off[job.index] : nullptr));
     }
   });
+  // A point that is a figure's own run reuses it; run after the figures, so that the two
+  // never write one folder at once (without its figure selected, it runs here).
+  for (std::size_t t = 0; t < timeouts.size(); ++t) {
+    if (!is_paper_run(options, timeouts[t])) continue;
+    series[t] = run_timeout_point(options, timeouts[t], split_threads(options.threads, 1).per_job);
+    lines.set(figures.size() + t, timeout_line(series[t]));
+  }
   ReproduceOutcome outcome;
   for (std::size_t f = 0; f < figures.size(); ++f) {
     outcome.figures.push_back(std::move(*on[f]));

@@ -6,6 +6,7 @@
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_writer.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/variant_colours.hpp"
@@ -48,6 +49,24 @@ WorldSpec timeout_world(const ReproduceOptions& options, const TimeoutRun& run) 
   return world;
 }
 
+namespace {
+
+WorldSpec paper_world(const ReproduceOptions& options, const std::string& name) {
+  WorldSpec world = load_world((options.worlds / (name + ".yaml")).string());
+  for (const WorldOverride& o : reproduce_overrides(options, world)) apply_override(world, o);
+  check_world(world);
+  return world;
+}
+
+}  // namespace
+
+bool is_paper_run(const ReproduceOptions& options, const TimeoutRun& run) {
+  WorldSpec point = timeout_world(options, run);
+  const WorldSpec paper = paper_world(options, run.world);
+  point.name = paper.name;
+  return world_to_yaml(point) == world_to_yaml(paper);
+}
+
 std::vector<TimeoutRun> timeout_runs() {
   std::vector<TimeoutRun> runs;
   for (const char* world : kTimeoutWorlds) {
@@ -59,8 +78,10 @@ std::vector<TimeoutRun> timeout_runs() {
 TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun& run,
                                int run_threads) {
   const auto start = Clock::now();
-  const WorldSpec world = timeout_world(options, run);
-  const std::filesystem::path folder = options.out / kTimeoutFolder / "runs" / world.name;
+  const bool paper = is_paper_run(options, run);
+  const WorldSpec world = paper ? paper_world(options, run.world) : timeout_world(options, run);
+  const std::filesystem::path folder = paper ? options.out / "runs" / world.name
+                                             : options.out / kTimeoutFolder / "runs" / world.name;
   RunOptions run_options;
   run_options.threads = run_threads;
   run_options.progress = options.progress;

@@ -1,7 +1,8 @@
 #pragma once
 // The leave-timeout series of `reproduce` (docs/models-returns.md): the 10- and 20-agent
 // Soysal worlds run again with leave_timeout 10, 20, 30 and 50 tu, into
-// <out>/timeout-series/runs/<world>-timeout-<T>/, each compared with every partition model
+// <out>/timeout-series/runs/<world>-timeout-<T>/ (the paper's own timeout is the figure's
+// run in <out>/runs/<world>/), each compared with every partition model
 // variant beside its noise floor. Once leave_timeout x v exceeds the approach radius, leavers
 // no longer perceive the aggregate they left when the timeout ends: leaving stops being an
 // excursion, and the paper's variants can fit. <out>/timeout-series.csv holds the numbers,
@@ -47,6 +48,10 @@ std::vector<TimeoutRun> timeout_runs();
 
 // The paper world with the point's timeout and the series' run length.
 WorldSpec timeout_world(const ReproduceOptions& options, const TimeoutRun& run);
+
+// Whether the point changes nothing in its paper world (the paper's own timeout at the
+// paper's length): then it is the figure's own run, <out>/runs/<world>/, not run twice.
+bool is_paper_run(const ReproduceOptions& options, const TimeoutRun& run);
 
 // Runs one point of the series (or reuses its complete run) with `run_threads` threads.
 TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun& run,
