@@ -22,7 +22,12 @@ namespace swarmagg {
 class AggregationController final : public Controller {
  public:
   explicit AggregationController(const AggregationRules& rules)
-      : rules_(rules), standing_norm2_(standing_norm2(rules.compaction.tolerance)) {}
+      : rules_(rules),
+        standing_norm2_(standing_norm2(rules.compaction.tolerance)),
+        leave_counts_neighbours_(rules.leave_rule.law != LeaveLaw::Constant &&
+                                 rules.leave_rule.size_source == LeaveSize::Neighbours),
+        leave_same_for_all_(rules.leave_rule.law == LeaveLaw::Constant),
+        leave_p_for_all_(leave_probability(rules.leave_rule, 1, 0)) {}
 
   void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
               std::span<MotionCommand> commands, EventCounts& events) override;
@@ -54,6 +59,33 @@ class AggregationController final : public Controller {
     Vec2 force;  // the net spring force on it
   };
 
+  // A decision in which every agent waited and nothing changed. While its inputs stay the
+  // same, the next decision differs from it only by the leave draws: when none of them
+  // fires, it gives the same commands and changes nothing either.
+  struct SteadyDecision {
+    bool valid = false;
+    const NeighbourLists* lists = nullptr;
+    std::uint64_t generation = 0;
+    std::vector<std::int32_t> labels;
+    std::vector<std::int32_t> sizes;
+    std::vector<std::int32_t> partners;
+    std::vector<MotionCommand> commands;
+  };
+
+  // The probability that a waiting agent in an aggregate of `aggregate_size` that perceives
+  // `perceived` agents leaves in one decision (the constant law's is the same for all).
+  double leave_chance(std::int32_t aggregate_size, int perceived) const {
+    return leave_same_for_all_ ? leave_p_for_all_
+                               : leave_probability(rules_.leave_rule, aggregate_size,
+                                                   leave_counts_neighbours_ ? perceived : 0);
+  }
+  // Repeats the steady decision (its commands, nothing changed) when the inputs are those it
+  // was made from and no agent draws to leave; false (nothing done) otherwise.
+  bool repeat_steady(const ControllerInput& input, const SwarmState& swarm, const CounterRng& rng,
+                     std::span<MotionCommand> commands) const;
+  void remember_if_steady(const ControllerInput& input, const SwarmState& swarm,
+                          std::span<const MotionCommand> commands);
+
   bool searching(std::uint32_t agent) const;
   bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
 
@@ -73,7 +105,11 @@ class AggregationController final : public Controller {
   void list_by_state(std::size_t n);
 
   AggregationRules rules_;
-  double standing_norm2_;  // compaction: squared net forces below it stand (standing_norm2)
+  double standing_norm2_;         // compaction: squared net forces below it stand (standing_norm2)
+  bool leave_counts_neighbours_;  // the leave law's size is the perceived agents + 1
+  bool leave_same_for_all_;
+  double leave_p_for_all_;
+  SteadyDecision steady_;
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
   std::vector<SearchPair> pairs_;

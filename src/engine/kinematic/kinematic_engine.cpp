@@ -74,6 +74,11 @@ class KinematicEngine final : public Engine {
 
   StepReport step(std::span<const MotionCommand> commands,
                   std::span<const Signal> signals) override {
+    // A world that slept whole in the last step, on pairs it kept, sleeps whole again when
+    // every command and signal repeats: nobody moved, so deciding again would find every
+    // agent at rest on the same pairs and reach (the same summary of the same commands).
+    if (slept_whole_ && !sleep_checks_ && islands_.inputs_repeat(commands, signals)) return {};
+    slept_whole_ = false;
     const CommandSummary summary = summarise(commands);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
     if (summary.fastest > pairs_speed_) {
@@ -91,6 +96,7 @@ class KinematicEngine final : public Engine {
         const double speed = std::max(nominal_speed_, summary.fastest);
         pairs_kept_ = speed == pairs_speed_;
         if (!pairs_kept_) rebuild_neighbourhood(speed, true, 0.0);
+        slept_whole_ = pairs_kept_;
         return report;
       }
       const std::span<const MotionCommand> resolved = without_sleepers(commands);
@@ -319,6 +325,7 @@ class KinematicEngine final : public Engine {
   bool sleep_checks_ = false;
   bool resolved_last_ = false;  // the last step ran the guarded motion
   bool pairs_kept_ = false;     // the last step found no new pairs: nothing moved
+  bool slept_whole_ = false;    // and every agent slept in it
   GuardedMotion full_motion_;   // the check's resolution in full
   std::optional<std::uint32_t> sleep_violation_;
   std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed

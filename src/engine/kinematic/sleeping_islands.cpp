@@ -52,10 +52,21 @@ void SleepingIslands::reset(std::size_t agents) {
 }
 
 bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
-  if (positions.size() != last_position_.size()) return false;
-  bool same = true;
+  // Unrecorded (a step not looked at), the last positions are an older step's.
+  if (!recorded_ || positions.size() != last_position_.size()) return false;
   for (std::size_t a = 0; a < positions.size(); ++a) {
-    same &= same_bits(positions[a], last_position_[a]);
+    if (!same_bits(positions[a], last_position_[a])) return false;
+  }
+  return true;
+}
+
+bool SleepingIslands::inputs_repeat(std::span<const MotionCommand> commands,
+                                    std::span<const Signal> signals) const {
+  if (!recorded_ || commands.size() != last_command_.size()) return false;
+  // Without a branch per agent: a world that slept whole nearly always repeats.
+  bool same = true;
+  for (std::size_t a = 0; a < commands.size(); ++a) {
+    same &= same_command(commands[a], last_command_[a]) & (signals[a] == last_signal_[a]);
   }
   return same;
 }

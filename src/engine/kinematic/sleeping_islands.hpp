@@ -51,8 +51,13 @@ class SleepingIslands {
   std::span<const std::uint32_t> sleepers() const { return sleepers_; }
   // Each agent's position at the step's start (what a sleeper keeps).
   Vec2 start_of(std::uint32_t agent) const { return last_position_[agent]; }
-  // Whether every agent is still where the step started, bit for bit.
+  // Whether every agent is still where the step started, bit for bit (false when this
+  // step's start was not recorded: a moving world's step not looked at).
   bool none_moved(std::span<const Vec2> positions) const;
+  // Whether every agent's command and signal are, bit for bit, those of the last step
+  // decided (a world that slept whole then sleeps whole again: decide() is not needed).
+  bool inputs_repeat(std::span<const MotionCommand> commands,
+                     std::span<const Signal> signals) const;
 
  private:
   void reset(std::size_t agents);
