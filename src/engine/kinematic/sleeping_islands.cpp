@@ -21,10 +21,6 @@ bool is_zero(Vec2 v) {
 
 // Islands are labelled only when at least one agent in this many presses at rest.
 constexpr std::size_t kPressersPerLabelling = 16;
-// After a step that found too few, the next this many steps sleep nobody and record nothing
-// (then one records and one looks again): at most a few steps of sleep are lost when a
-// world comes to rest.
-constexpr int kStepsSkippedWhenMoving = 6;
 
 bool same_command(const MotionCommand& a, const MotionCommand& b) {
   return same_bits(a.velocity, b.velocity) & (a.halt_on == b.halt_on) &
@@ -48,7 +44,6 @@ void SleepingIslands::reset(std::size_t agents) {
   sleepers_.clear();
   known_ = false;
   recorded_ = false;
-  steps_to_skip_ = 0;
 }
 
 bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
@@ -122,14 +117,13 @@ void SleepingIslands::label_islands(std::size_t agents, std::span<const Candidat
 void SleepingIslands::decide(std::span<const Vec2> positions,
                              std::span<const MotionCommand> commands,
                              std::span<const Signal> signals, std::span<const CandidatePair> pairs,
-                             double reach, std::span<const std::uint32_t> met, bool same_pairs) {
+                             double reach, std::span<const std::uint32_t> met, bool same_pairs,
+                             const LastStepRest& last) {
   const std::size_t agents = positions.size();
   if (last_position_.size() != agents) reset(agents);
-  if (steps_to_skip_ > 0) {
-    --steps_to_skip_;
-    return forget();
-  }
-  const bool evaluates = recorded_;  // this step can tell who rests
+  // A world that moved, with too few agents that may press at rest, can sleep nobody in this
+  // step (not all of it rests); recording it pays only when enough may press in the next.
+  if (!last.still && last.pressing * kPressersPerLabelling < agents) return forget();
   const bool same_reach = recorded_ && reach == reach_;
   const bool comparable = known_ && same_reach;
   clear_sleepers();
@@ -151,11 +145,7 @@ void SleepingIslands::decide(std::span<const Vec2> positions,
   if (resting == agents && same_reach && same_pairs) return everybody_sleeps(agents);
   // Labelling costs a pass over the pairs; it pays when it may spare the contact responses
   // of enough agents pressing at rest (a standing agent costs the guarded motion little).
-  if (resting_pressers * kPressersPerLabelling < agents) {
-    // A moving world: looking again at every step would cost more than it can spare.
-    if (evaluates) steps_to_skip_ = kStepsSkippedWhenMoving;
-    return;
-  }
+  if (resting_pressers * kPressersPerLabelling < agents) return;
   known_ = true;
   // The same pairs make the same islands: last step's labels stand (root_ still holds them).
   if (!(comparable && same_pairs)) label_islands(agents, pairs);
