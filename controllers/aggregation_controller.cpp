@@ -338,10 +338,19 @@ bool AggregationController::repeat_steady(const ControllerInput& input, const Sw
   if (!same_inputs) return false;
   if (rules_.leave) {
     const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
-    const std::int32_t* size = input.aggregates.size_of_agent.data();
-    for (std::uint32_t agent = 0; agent < n; ++agent) {
-      if (draws.uniform(agent, Draw::Leave) < leave_chance(size[agent], views_[agent].perceived))
-        return false;
+    if (leave_same_for_all_) {
+      // Every draw is taken (no early exit): which one fires is a coin toss to the predictor.
+      bool fires = false;
+      for (std::uint32_t agent = 0; agent < n; ++agent) {
+        fires |= (draws.bits(agent, Draw::Leave) >> 11) < leave_draws_below_;
+      }
+      if (fires) return false;
+    } else {
+      const std::int32_t* size = input.aggregates.size_of_agent.data();
+      for (std::uint32_t agent = 0; agent < n; ++agent) {
+        if (draws.uniform(agent, Draw::Leave) < leave_chance(size[agent], views_[agent].perceived))
+          return false;
+      }
     }
   }
   std::ranges::copy(s.commands, commands.begin());

@@ -10,6 +10,7 @@
 //  - with compaction, agents that go on waiting move under the spring force of the waiting
 //    members of their aggregate they perceive (docs/controllers.md), solid to waiting and leaving
 //    bodies.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -27,7 +28,8 @@ class AggregationController final : public Controller {
         leave_counts_neighbours_(rules.leave_rule.law != LeaveLaw::Constant &&
                                  rules.leave_rule.size_source == LeaveSize::Neighbours),
         leave_same_for_all_(rules.leave_rule.law == LeaveLaw::Constant),
-        leave_p_for_all_(leave_probability(rules.leave_rule, 1, 0)) {}
+        leave_p_for_all_(leave_probability(rules.leave_rule, 1, 0)),
+        leave_draws_below_(draws_below(leave_p_for_all_)) {}
 
   void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
               std::span<MotionCommand> commands, EventCounts& events) override;
@@ -109,6 +111,14 @@ class AggregationController final : public Controller {
   bool leave_counts_neighbours_;  // the leave law's size is the perceived agents + 1
   bool leave_same_for_all_;
   double leave_p_for_all_;
+  // The constant law by whole draws: uniform() < p exactly when the draw's 53 bits are below
+  // this (uniform() is those bits times 2^-53, and p times 2^53 is exact).
+  std::uint64_t leave_draws_below_;
+  static std::uint64_t draws_below(double p) {
+    return p <= 0.0   ? 0
+           : p >= 1.0 ? std::uint64_t{1} << 53
+                      : static_cast<std::uint64_t>(std::ceil(std::ldexp(p, 53)));
+  }
   SteadyDecision steady_;
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision

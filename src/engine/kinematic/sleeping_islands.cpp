@@ -27,6 +27,18 @@ bool same_command(const MotionCommand& a, const MotionCommand& b) {
          (a.blocked_by == b.blocked_by) & (a.repelled_by == b.repelled_by);
 }
 
+// The bits in which two commands and signals differ, folded into one word (zero: the same).
+std::uint64_t command_difference(const MotionCommand& a, Signal a_signal, const MotionCommand& b,
+                                 Signal b_signal) {
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const std::uint64_t masks = static_cast<std::uint64_t>(a.halt_on ^ b.halt_on) |
+                              static_cast<std::uint64_t>(a.blocked_by ^ b.blocked_by) |
+                              static_cast<std::uint64_t>(a.repelled_by ^ b.repelled_by) |
+                              static_cast<std::uint64_t>(a_signal ^ b_signal);
+  return (bits(a.velocity.x) ^ bits(b.velocity.x)) | (bits(a.velocity.y) ^ bits(b.velocity.y)) |
+         masks;
+}
+
 }  // namespace
 
 void SleepingIslands::reset(std::size_t agents) {
@@ -59,11 +71,11 @@ bool SleepingIslands::inputs_repeat(std::span<const MotionCommand> commands,
                                     std::span<const Signal> signals) const {
   if (!recorded_ || commands.size() != last_command_.size()) return false;
   // Without a branch per agent: a world that slept whole nearly always repeats.
-  bool same = true;
+  std::uint64_t difference = 0;
   for (std::size_t a = 0; a < commands.size(); ++a) {
-    same &= same_command(commands[a], last_command_[a]) & (signals[a] == last_signal_[a]);
+    difference |= command_difference(commands[a], signals[a], last_command_[a], last_signal_[a]);
   }
-  return same;
+  return difference == 0;
 }
 
 void SleepingIslands::clear_sleepers() {
