@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "core/agents_in_state.hpp"
@@ -54,12 +55,6 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   const NeighbourLists& neighbours = input.neighbours;
   const double radius = rules_.detection_radius;
   const CompactionRule& compaction = rules_.compaction;
-  const LeaveRule& rule = rules_.leave_rule;
-  const bool counts_neighbours =
-      rule.law != LeaveLaw::Constant && rule.size_source == LeaveSize::Neighbours;
-  // The constant law's probability is the same for every size.
-  const bool same_for_all = rule.law == LeaveLaw::Constant;
-  const double p_for_all = leave_probability(rule, 1, 0);
   // The members that pull are the waiting agents of its aggregate (none when it is in none),
   // under join: false its waiting partner only: a waiting neighbour whose key (aggregate, or
   // index) is the agent's own key. No key is below -1, so kNoMembers matches nobody.
@@ -111,10 +106,7 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
     }
     if (rules_.leave) {
       const double u = draws.uniform(agent, Draw::Leave);
-      const double p = same_for_all ? p_for_all
-                                    : leave_probability(rule, input.aggregates.size_of_agent[agent],
-                                                        counts_neighbours ? view.perceived : 0);
-      if (u < p) {
+      if (u < leave_chance(input.aggregates.size_of_agent[agent], view.perceived)) {
         swarm.state[agent] = AgentState::Leave;
         swarm.partner[agent] = kNoPartner;
         swarm.leave_time_left[agent] = rules_.leave_timeout;
@@ -317,9 +309,77 @@ void AggregationController::list_by_state(std::size_t n) {
   leavers_.count = list_agents_in_state(previous, AgentState::Leave, leavers_.slots.data());
 }
 
+namespace {
+
+template <typename T, typename U>
+bool same_bytes(std::span<const T> a, std::span<const U> b) {
+  static_assert(sizeof(T) == sizeof(U));
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
+}
+
+bool all_zero(std::span<const std::uint8_t> bytes) {
+  return std::ranges::all_of(bytes, [](std::uint8_t b) { return b == 0; });
+}
+
+}  // namespace
+
+bool AggregationController::repeat_steady(const ControllerInput& input, const SwarmState& swarm,
+                                          const CounterRng& rng,
+                                          std::span<MotionCommand> commands) const {
+  const SteadyDecision& s = steady_;
+  const std::size_t n = swarm.size();
+  const bool same_inputs =
+      s.valid && s.lists == &input.neighbours && s.generation == input.neighbours.generation() &&
+      commands.size() == n && same_bytes<AgentState, AgentState>(swarm.state, previous_) &&
+      same_bytes<std::int32_t, std::int32_t>(swarm.partner, s.partners) &&
+      same_bytes<std::int32_t, std::int32_t>(input.aggregates.aggregate_of, s.labels) &&
+      same_bytes<std::int32_t, std::int32_t>(input.aggregates.size_of_agent, s.sizes) &&
+      all_zero(input.reflections);
+  if (!same_inputs) return false;
+  if (rules_.leave) {
+    const StepRng draws = rng.at_step(static_cast<std::uint64_t>(input.step));
+    if (leave_same_for_all_) {
+      // Every draw is taken (no early exit): which one fires is a coin toss to the predictor.
+      bool fires = false;
+      for (std::uint32_t agent = 0; agent < n; ++agent) {
+        fires |= (draws.bits(agent, Draw::Leave) >> 11) < leave_draws_below_;
+      }
+      if (fires) return false;
+    } else {
+      const std::int32_t* size = input.aggregates.size_of_agent.data();
+      for (std::uint32_t agent = 0; agent < n; ++agent) {
+        if (draws.uniform(agent, Draw::Leave) < leave_chance(size[agent], views_[agent].perceived))
+          return false;
+      }
+    }
+  }
+  std::ranges::copy(s.commands, commands.begin());
+  return true;
+}
+
+// Steady: every agent started waiting and still waits (so no partner was dropped and no
+// heading turned), no wall turned anyone, and the views (views_) are those of these inputs.
+void AggregationController::remember_if_steady(const ControllerInput& input,
+                                               const SwarmState& swarm,
+                                               std::span<const MotionCommand> commands) {
+  SteadyDecision& s = steady_;
+  const std::size_t n = swarm.size();
+  s.valid = n > 0 && waiters_.count == n &&
+            same_bytes<AgentState, AgentState>(swarm.state, previous_) &&
+            all_zero(input.reflections);
+  if (!s.valid) return;
+  s.lists = &input.neighbours;
+  s.generation = input.neighbours.generation();
+  s.labels.assign(input.aggregates.aggregate_of.begin(), input.aggregates.aggregate_of.end());
+  s.sizes.assign(input.aggregates.size_of_agent.begin(), input.aggregates.size_of_agent.end());
+  s.partners.assign(swarm.partner.begin(), swarm.partner.end());
+  s.commands.assign(commands.begin(), commands.end());
+}
+
 void AggregationController::decide(const ControllerInput& input, SwarmState& swarm,
                                    const CounterRng& rng, std::span<MotionCommand> commands,
                                    EventCounts& events) {
+  if (repeat_steady(input, swarm, rng, commands)) return;
   const auto n = static_cast<std::uint32_t>(swarm.size());
   previous_.assign(swarm.state.begin(), swarm.state.end());
   settled_.assign(n, 0);
@@ -343,6 +403,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
     commands[m.agent].velocity =
         spring_velocity(rules_.compaction, m.force, norm(m.force), rules_.speed);
   }
+  remember_if_steady(input, swarm, commands);
 }
 
 }  // namespace swarmagg

@@ -10,6 +10,7 @@
 //  - with compaction, agents that go on waiting move under the spring force of the waiting
 //    members of their aggregate they perceive (docs/controllers.md), solid to waiting and leaving
 //    bodies.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -22,7 +23,13 @@ namespace swarmagg {
 class AggregationController final : public Controller {
  public:
   explicit AggregationController(const AggregationRules& rules)
-      : rules_(rules), standing_norm2_(standing_norm2(rules.compaction.tolerance)) {}
+      : rules_(rules),
+        standing_norm2_(standing_norm2(rules.compaction.tolerance)),
+        leave_counts_neighbours_(rules.leave_rule.law != LeaveLaw::Constant &&
+                                 rules.leave_rule.size_source == LeaveSize::Neighbours),
+        leave_same_for_all_(rules.leave_rule.law == LeaveLaw::Constant),
+        leave_p_for_all_(leave_probability(rules.leave_rule, 1, 0)),
+        leave_draws_below_(draws_below(leave_p_for_all_)) {}
 
   void decide(const ControllerInput& input, SwarmState& swarm, const CounterRng& rng,
               std::span<MotionCommand> commands, EventCounts& events) override;
@@ -54,6 +61,33 @@ class AggregationController final : public Controller {
     Vec2 force;  // the net spring force on it
   };
 
+  // A decision in which every agent waited and nothing changed. While its inputs stay the
+  // same, the next decision differs from it only by the leave draws: when none of them
+  // fires, it gives the same commands and changes nothing either.
+  struct SteadyDecision {
+    bool valid = false;
+    const NeighbourLists* lists = nullptr;
+    std::uint64_t generation = 0;
+    std::vector<std::int32_t> labels;
+    std::vector<std::int32_t> sizes;
+    std::vector<std::int32_t> partners;
+    std::vector<MotionCommand> commands;
+  };
+
+  // The probability that a waiting agent in an aggregate of `aggregate_size` that perceives
+  // `perceived` agents leaves in one decision (the constant law's is the same for all).
+  double leave_chance(std::int32_t aggregate_size, int perceived) const {
+    return leave_same_for_all_ ? leave_p_for_all_
+                               : leave_probability(rules_.leave_rule, aggregate_size,
+                                                   leave_counts_neighbours_ ? perceived : 0);
+  }
+  // Repeats the steady decision (its commands, nothing changed) when the inputs are those it
+  // was made from and no agent draws to leave; false (nothing done) otherwise.
+  bool repeat_steady(const ControllerInput& input, const SwarmState& swarm, const CounterRng& rng,
+                     std::span<MotionCommand> commands) const;
+  void remember_if_steady(const ControllerInput& input, const SwarmState& swarm,
+                          std::span<const MotionCommand> commands);
+
   bool searching(std::uint32_t agent) const;
   bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
 
@@ -73,7 +107,19 @@ class AggregationController final : public Controller {
   void list_by_state(std::size_t n);
 
   AggregationRules rules_;
-  double standing_norm2_;  // compaction: squared net forces below it stand (standing_norm2)
+  double standing_norm2_;         // compaction: squared net forces below it stand (standing_norm2)
+  bool leave_counts_neighbours_;  // the leave law's size is the perceived agents + 1
+  bool leave_same_for_all_;
+  double leave_p_for_all_;
+  // The constant law by whole draws: uniform() < p exactly when the draw's 53 bits are below
+  // this (uniform() is those bits times 2^-53, and p times 2^53 is exact).
+  std::uint64_t leave_draws_below_;
+  static std::uint64_t draws_below(double p) {
+    return p <= 0.0   ? 0
+           : p >= 1.0 ? std::uint64_t{1} << 53
+                      : static_cast<std::uint64_t>(std::ceil(std::ldexp(p, 53)));
+  }
+  SteadyDecision steady_;
   std::vector<AgentState> previous_;
   std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
   std::vector<SearchPair> pairs_;

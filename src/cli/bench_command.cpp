@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "bench/lib/bare_grid_loop.hpp"
 #include "bench/lib/box2d_bench.hpp"
 #include "bench/lib/kinematic_bench.hpp"
 #include "bench/lib/machine_info.hpp"
@@ -39,22 +41,28 @@ double budget_for(bool quick) {
 // The best of `rounds` timings per size, the rounds going over all sizes in turn rather
 // than repeating one size before the next: a virtual machine's speed drifts over minutes,
 // and best times taken across the whole run keep the sizes comparable with each other.
-std::vector<KinematicBenchResult> best_of_rounds(BenchScenario scenario, bool quick) {
+using SizeTiming = std::function<KinematicBenchResult(int n, double budget)>;
+
+std::vector<KinematicBenchResult> best_of_rounds(const SizeTiming& time_size, bool quick) {
   const std::vector<int> sizes{1000, 10000, 100000, 1000000};
   std::vector<KinematicBenchResult> best(sizes.size());
   const int rounds = quick ? 1 : 3;
   for (int round = 0; round < rounds; ++round) {
     for (std::size_t k = 0; k < sizes.size(); ++k) {
-      const auto r = bench_kinematic(sizes[k], scenario, budget_for(quick), 1);
+      const auto r = time_size(sizes[k], budget_for(quick));
       if (r.agent_steps_per_s > best[k].agent_steps_per_s) best[k] = r;
     }
   }
   return best;
 }
 
-nlohmann::json kinematic_series(BenchScenario scenario, bool quick, bool verbose) {
+SizeTiming scenario_timing(BenchScenario scenario) {
+  return [scenario](int n, double budget) { return bench_kinematic(n, scenario, budget, 1); };
+}
+
+nlohmann::json kinematic_series(const SizeTiming& time_size, bool quick, bool verbose) {
   nlohmann::json series = nlohmann::json::array();
-  for (const auto& r : best_of_rounds(scenario, quick)) {
+  for (const auto& r : best_of_rounds(time_size, quick)) {
     series.push_back({{"n", r.n},
                       {"warmup_steps", r.warmup_steps},
                       {"steps", r.steps},
@@ -112,6 +120,45 @@ nlohmann::json soysal_series(const BenchOptions& options, bool verbose) {
   return series;
 }
 
+const nlohmann::json* entry_for(const nlohmann::json& series, int n) {
+  for (const auto& entry : series) {
+    if (entry["n"].get<int>() == n) return &entry;
+  }
+  return nullptr;
+}
+
+// What the kinematic series say together: the full model's speed over the bare loop's at
+// each N (both in this run), and each series' cost per agent-step at 10^6 agents over its cost
+// at 10^3 (how well it scales).
+nlohmann::json kinematic_ratios(const nlohmann::json& report, bool verbose) {
+  nlohmann::json ratios = nlohmann::json::object();
+  if (report.contains("kinematic_bayindir") && report.contains("kinematic_bare")) {
+    nlohmann::json over_bare = nlohmann::json::array();
+    for (const auto& full : report["kinematic_bayindir"]) {
+      const int n = full["n"].get<int>();
+      const nlohmann::json* bare = entry_for(report["kinematic_bare"], n);
+      if (bare == nullptr) continue;
+      const double ratio =
+          full["agent_steps_per_s"].get<double>() / (*bare)["agent_steps_per_s"].get<double>();
+      over_bare.push_back({{"n", n}, {"ratio", ratio}});
+      if (verbose) std::fprintf(stderr, "  Bayindir / bare loop at n = %7d: %.2f\n", n, ratio);
+    }
+    ratios["bayindir_over_bare"] = over_bare;
+  }
+  for (const char* name : {"kinematic", "kinematic_bayindir", "kinematic_bare"}) {
+    if (!report.contains(name)) continue;
+    const nlohmann::json* small = entry_for(report[name], 1000);
+    const nlohmann::json* large = entry_for(report[name], 1000000);
+    if (small == nullptr || large == nullptr) continue;
+    const double ratio =
+        (*large)["ns_per_agent_step"].get<double>() / (*small)["ns_per_agent_step"].get<double>();
+    ratios[std::string(name) + "_cost_1e6_over_1e3"] = ratio;
+    if (verbose)
+      std::fprintf(stderr, "  %s: cost per agent-step at 10^6 / 10^3 = %.2f\n", name, ratio);
+  }
+  return ratios;
+}
+
 int bench_command(const BenchOptions& options) {
   const bool verbose = !options.json;
   nlohmann::json report;
@@ -122,12 +169,21 @@ int bench_command(const BenchOptions& options) {
   }
   if (wanted(options, "ghost")) {
     if (verbose) std::fprintf(stderr, "kinematic, worst case (ghost collisions), one thread:\n");
-    report["kinematic"] = kinematic_series(BenchScenario::GhostWorstCase, options.quick, verbose);
+    report["kinematic"] =
+        kinematic_series(scenario_timing(BenchScenario::GhostWorstCase), options.quick, verbose);
   }
   if (wanted(options, "bayindir")) {
     if (verbose) std::fprintf(stderr, "kinematic, Bayindir full model p = 0.001, one thread:\n");
     report["kinematic_bayindir"] =
-        kinematic_series(BenchScenario::BayindirFull, options.quick, verbose);
+        kinematic_series(scenario_timing(BenchScenario::BayindirFull), options.quick, verbose);
+  }
+  if (wanted(options, "bare")) {
+    if (verbose)
+      std::fprintf(stderr, "bare loop (move, wrap, grid, pairs within s), one thread:\n");
+    report["kinematic_bare"] = kinematic_series(bench_bare_grid_loop, options.quick, verbose);
+  }
+  if (const nlohmann::json ratios = kinematic_ratios(report, verbose); !ratios.empty()) {
+    report["kinematic_ratios"] = ratios;
   }
   if (wanted(options, "box2d")) {
     if (verbose) std::fprintf(stderr, "box2d engine vs bare Box2D:\n");
@@ -157,8 +213,8 @@ void add_bench_command(CLI::App& app, Action& action) {
                       "Folder of the paper worlds (default worlds/paper)");
   command
       ->add_option("--case", options->cases,
-                   "Only these cases (repeatable): soysal, ghost, bayindir, box2d, render")
-      ->check(CLI::IsMember({"soysal", "ghost", "bayindir", "box2d", "render"}));
+                   "Only these cases (repeatable): soysal, ghost, bayindir, bare, box2d, render")
+      ->check(CLI::IsMember({"soysal", "ghost", "bayindir", "bare", "box2d", "render"}));
   command->callback([options, &action] { action = [options] { return bench_command(*options); }; });
 }
 

@@ -1,6 +1,7 @@
 #include "control_interface/neighbour_lists.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace swarmagg {
 namespace {
@@ -136,7 +137,17 @@ void NeighbourLists::close_agent(AgentId agent) {
 // (thread CPU time, best of many, same pairs; callgrind counts more instructions, as the
 // prefetches are some). The passes work through local pointers: through the members, every
 // store could alias them, as far as the compiler knows, and force reloads.
+//
+// The same pairs in the same order, bit for bit, give the same lists: those are kept, with
+// their generation, so that whatever was computed from them stays too (a world where only
+// agents far from everybody move changes no list). ClosePair has no padding, so comparing
+// bytes compares every field's bits.
 void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const ClosePair> pairs) {
+  static_assert(sizeof(ClosePair) == 2 * sizeof(AgentId) + sizeof(Vec2) + sizeof(double));
+  if (agent_count == agent_count_of_pairs_ && pairs.size() == pairs_.size() &&
+      std::memcmp(pairs.data(), pairs_.data(), pairs.size_bytes()) == 0)
+    return;
+  agent_count_of_pairs_ = agent_count;
   ++generation_;
   begin_.assign(agent_count + 1, 0);
   pairs_.resize(pairs.size());

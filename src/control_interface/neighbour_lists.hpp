@@ -34,6 +34,7 @@ class NeighbourLists {
 
   void reset(std::size_t agent_count) {
     ++generation_;
+    agent_count_of_pairs_ = kNotFromPairs;
     begin_.assign(agent_count + 1, 0);
     items_.clear();
     pairs_.clear();
@@ -49,12 +50,15 @@ class NeighbourLists {
   std::span<const ClosePair> pairs() const { return pairs_; }
   std::size_t agent_count() const { return begin_.empty() ? 0 : begin_.size() - 1; }
   std::size_t total() const { return items_.size(); }
-  // Counts the rebuilds (assign_from_pairs, reset): while it stays, so do the lists, and
-  // whatever was computed from them only.
+  // Counts the changes (assign_from_pairs with other pairs than the last, reset): while it
+  // stays, so do the lists, and whatever was computed from them only.
   std::uint64_t generation() const { return generation_; }
 
  private:
   std::uint64_t generation_ = 0;
+  // The agent count of the last assign_from_pairs (kNotFromPairs after reset).
+  static constexpr std::size_t kNotFromPairs = ~std::size_t{0};
+  std::size_t agent_count_of_pairs_ = kNotFromPairs;
   AgentArray<std::uint32_t> begin_;
   AgentArray<Neighbour> items_;
   AgentArray<ClosePair> pairs_;

@@ -1,18 +1,29 @@
 #include "observers/aggregate_tracker.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "core/agents_in_state.hpp"
 
 namespace swarmagg {
+namespace {
+
+// Whole arrays of plain values, compared as bytes (a world at rest compares its states every
+// step).
+template <typename A, typename B>
+bool same_bytes(const A& a, const B& b) {
+  static_assert(sizeof(*a.data()) == sizeof(*b.data()));
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(*a.data())) == 0;
+}
+
+}  // namespace
 
 bool AggregateTracker::same_links(const NeighbourLists& neighbours, const SwarmState& swarm,
                                   double radius, AggregateLinks links) {
   const bool partners = links == AggregateLinks::PartnersOnly;
   const bool same = lists_ == &neighbours && generation_ == neighbours.generation() &&
-                    links_ == links && radius_ == radius &&
-                    std::ranges::equal(states_, swarm.state) &&
-                    (!partners || std::ranges::equal(partners_, swarm.partner));
+                    links_ == links && radius_ == radius && same_bytes(states_, swarm.state) &&
+                    (!partners || same_bytes(partners_, swarm.partner));
   if (same) return true;
   // Remembering costs copies, which pay only in a world at rest (lists that stayed since the
   // last update); in a moving world nothing is remembered.

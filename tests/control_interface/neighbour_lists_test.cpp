@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace swarmagg {
@@ -56,6 +57,35 @@ TEST(NeighbourLists, KeepsEveryPairOnceWhicheverWayTheyAreFilled) {
   EXPECT_EQ(pushed.pairs()[1].distance, 2.0);
   pushed.reset(3);
   EXPECT_TRUE(pushed.pairs().empty());
+}
+
+// Whatever was computed from the lists may be kept while their generation stays: it stays
+// exactly while the pairs repeat, bit for bit and in order.
+TEST(NeighbourLists, TheSamePairsKeepTheGenerationAndOthersChangeIt) {
+  const std::vector<ClosePair> pairs = {{0, 1, {1, 0}, 1.0}, {1, 2, {2, 0}, 2.0}};
+  NeighbourLists lists;
+  lists.assign_from_pairs(3, pairs);
+  const std::uint64_t first = lists.generation();
+  lists.assign_from_pairs(3, pairs);
+  EXPECT_EQ(lists.generation(), first);
+  EXPECT_EQ(ids_of(lists, 1), (std::vector<AgentId>{0, 2}));
+
+  std::vector<ClosePair> moved = pairs;
+  moved[1].offset.x = std::nextafter(2.0, 3.0);  // one bit further
+  lists.assign_from_pairs(3, moved);
+  EXPECT_NE(lists.generation(), first);
+  EXPECT_EQ(lists.of(1)[1].offset.x, moved[1].offset.x);
+
+  const std::uint64_t second = lists.generation();
+  lists.assign_from_pairs(4, moved);  // one more agent, no pair of its own
+  EXPECT_NE(lists.generation(), second);
+  EXPECT_TRUE(lists.of(3).empty());
+
+  const std::uint64_t third = lists.generation();
+  lists.reset(4);
+  EXPECT_NE(lists.generation(), third);
+  lists.assign_from_pairs(4, moved);  // after a reset, the same pairs are lists again
+  EXPECT_EQ(lists.of(1).size(), 2u);
 }
 
 }  // namespace

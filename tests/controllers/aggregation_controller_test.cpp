@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+
 #include "controller_testing/controller_fixture.hpp"
 
 namespace swarmagg {
@@ -396,6 +398,76 @@ TEST(CollisionController, GhostModeMovesStraightAndTumbles) {
   EXPECT_EQ(f.commands[a].halt_on, 0u);
   EXPECT_NE(f.swarm.heading[a], (Vec2{1.0, 0.0}));  // tumble = 1 redraws every step
   EXPECT_NEAR(norm(f.commands[a].velocity), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+bool same_bits(Vec2 a, Vec2 b) {
+  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+}
+
+// A controller that keeps its last decision repeats it from memory while every agent waits,
+// nothing changed and its inputs stay (the same lists, labels, partners), drawing only the
+// leave decisions. Each of its decisions must be the one a fresh controller, which remembers
+// nothing, makes from the same inputs: through steady stretches, leaves and what follows.
+TEST(AggregationController, ASteadyAggregateDecidesAsAFreshControllerWould) {
+  WorldSpec spec = soysal();
+  spec.controller.p0 = 0.01;
+  spec.arena = {100.0, 100.0, Topology::Torus};
+  // Four waiting agents 2.5 apart: compaction pulls them in (their commands move them), and
+  // nothing moves them here, so the lists stay as they are.
+  const std::vector<Vec2> at{{50.0, 50.0}, {52.5, 50.0}, {50.0, 52.5}, {52.5, 52.5}};
+  const auto n = static_cast<std::uint32_t>(at.size());
+  const ArenaGeometry arena = spec.arena.geometry();
+  std::vector<ClosePair> pairs;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t j = i + 1; j < n; ++j) {
+      const Vec2 d = arena.displacement(at[i], at[j]);
+      if (norm(d) <= spec.sensing_radius()) pairs.push_back({i, j, d, norm(d)});
+    }
+  }
+  SwarmState swarm;
+  for (std::uint32_t a = 0; a < n; ++a) swarm.add(AgentState::Wait);
+  NeighbourLists lists;
+  AggregateTracker aggregates;
+  EventCounts remembered_events, fresh_events;
+  std::vector<std::uint64_t> remembered_growths(n + 1, 0), fresh_growths(n + 1, 0);
+  const std::vector<std::uint8_t> reflections(n, 0);
+  std::vector<MotionCommand> remembered_commands(n), fresh_commands(n);
+  const std::unique_ptr<Controller> remembering = make_controller(spec);
+  const CounterRng rng(5);
+  int leaves = 0, moving_commands = 0;
+  for (std::int64_t step = 0; step < 600; ++step) {
+    lists.assign_from_pairs(n, pairs);  // the same pairs: the same lists, generation kept
+    aggregates.update(lists, swarm, spec.robots.detection_radius, AggregateLinks::Proximity);
+    SwarmState fresh_swarm = swarm;
+    const ControllerInput input{step, lists, reflections, aggregates.facts(), remembered_growths};
+    const ControllerInput fresh_input{step, lists, reflections, aggregates.facts(), fresh_growths};
+    remembering->decide(input, swarm, rng, remembered_commands, remembered_events);
+    make_controller(spec)->decide(fresh_input, fresh_swarm, rng, fresh_commands, fresh_events);
+    for (std::uint32_t a = 0; a < n; ++a) {
+      ASSERT_TRUE(same_bits(remembered_commands[a].velocity, fresh_commands[a].velocity))
+          << "agent " << a << " at step " << step;
+      ASSERT_EQ(remembered_commands[a].blocked_by, fresh_commands[a].blocked_by);
+      ASSERT_EQ(remembered_commands[a].halt_on, fresh_commands[a].halt_on);
+      ASSERT_EQ(swarm.state[a], fresh_swarm.state[a]) << "agent " << a << " at step " << step;
+      ASSERT_TRUE(same_bits(swarm.heading[a], fresh_swarm.heading[a]));
+      ASSERT_EQ(swarm.partner[a], fresh_swarm.partner[a]);
+      ASSERT_EQ(swarm.leave_time_left[a], fresh_swarm.leave_time_left[a]);
+      leaves += swarm.state[a] == AgentState::Leave && fresh_swarm.state[a] == AgentState::Leave;
+      moving_commands += remembered_commands[a].velocity.x != 0.0;
+    }
+    ASSERT_EQ(remembered_events.shrinks, fresh_events.shrinks);
+    ASSERT_EQ(remembered_events.dissipations, fresh_events.dissipations);
+    ASSERT_EQ(remembered_growths, fresh_growths);
+  }
+  EXPECT_GT(leaves, 0);           // the draws fired during the run
+  EXPECT_GT(moving_commands, 0);  // and compaction commands were repeated
 }
 
 }  // namespace

@@ -17,9 +17,14 @@ namespace {
 
 // What the step needs to know about the commands before resolving them.
 struct CommandSummary {
-  double fastest = 0.0;  // largest commanded speed
-  bool guarded = false;  // some agent may halt (halt_on or blocked_by bits)
+  double fastest = 0.0;    // largest commanded speed
+  bool guarded = false;    // some agent may halt (halt_on or blocked_by bits)
+  std::size_t moving = 0;  // agents commanded to move
 };
+
+bool zero_velocity(Vec2 v) {
+  return (v.x == 0.0) & (v.y == 0.0);
+}
 
 // Agents per move task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerMoveTask = 65536;
@@ -32,6 +37,7 @@ constexpr double kSkinSteps = 8.0;
 CommandSummary summarise(std::span<const MotionCommand> commands) {
   double even2 = 0.0, odd2 = 0.0;
   SignalMask guards = 0;
+  std::size_t moving = 0;
   const MotionCommand* c = commands.data();
   const std::size_t n = commands.size();
   std::size_t i = 0;
@@ -39,13 +45,15 @@ CommandSummary summarise(std::span<const MotionCommand> commands) {
     const double a = norm2(c[i].velocity), b = norm2(c[i + 1].velocity);
     even2 = a > even2 ? a : even2;
     odd2 = b > odd2 ? b : odd2;
+    moving += static_cast<std::size_t>(a > 0.0) + static_cast<std::size_t>(b > 0.0);
     guards |= c[i].halt_on | c[i].blocked_by | c[i + 1].halt_on | c[i + 1].blocked_by;
   }
   if (i < n) {
     even2 = std::max(even2, norm2(c[i].velocity));
+    moving += static_cast<std::size_t>(norm2(c[i].velocity) > 0.0);
     guards |= c[i].halt_on | c[i].blocked_by;
   }
-  return {std::sqrt(std::max(even2, odd2)), guards != 0};
+  return {std::sqrt(std::max(even2, odd2)), guards != 0, moving};
 }
 
 class KinematicEngine final : public Engine {
@@ -74,6 +82,11 @@ class KinematicEngine final : public Engine {
 
   StepReport step(std::span<const MotionCommand> commands,
                   std::span<const Signal> signals) override {
+    // A world that slept whole in the last step, on pairs it kept, sleeps whole again when
+    // every command and signal repeats: nobody moved, so deciding again would find every
+    // agent at rest on the same pairs and reach (the same summary of the same commands).
+    if (slept_whole_ && !sleep_checks_ && islands_.inputs_repeat(commands, signals)) return {};
+    slept_whole_ = false;
     const CommandSummary summary = summarise(commands);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
     if (summary.fastest > pairs_speed_) {
@@ -83,7 +96,7 @@ class KinematicEngine final : public Engine {
     StepReport report;
     if (summary.guarded) {
       islands_.decide(positions_, commands, signals, pairs_.candidates(), pairs_speed_,
-                      met_last_step(), pairs_kept_);
+                      met_last_step(), pairs_kept_, last_rest_);
       // Everybody asleep: nothing moves, nothing meets, the pairs and lists stay (unless the
       // radii changed). With checks on, the step is resolved as usual, to be checked.
       resolved_last_ = islands_.sleepers().size() < positions_.size() || sleep_checks_;
@@ -91,6 +104,8 @@ class KinematicEngine final : public Engine {
         const double speed = std::max(nominal_speed_, summary.fastest);
         pairs_kept_ = speed == pairs_speed_;
         if (!pairs_kept_) rebuild_neighbourhood(speed, true, 0.0);
+        slept_whole_ = pairs_kept_;
+        last_rest_ = {true, pressing_sleepers(commands)};
         return report;
       }
       const std::span<const MotionCommand> resolved = without_sleepers(commands);
@@ -98,9 +113,12 @@ class KinematicEngine final : public Engine {
           motion_.resolve(pairs_.candidates(), resolved, signals, limits_, positions_);
       if (sleep_checks_) check_sleepers(commands, signals, report.encounters);
       move_and_rebuild(resolved, &motion_, summary.fastest);
+      last_rest_.pressing = pressing_sleepers(commands) + bent_that_stayed(commands);
+      last_rest_.still = last_rest_.pressing == summary.moving;
     } else {
       resolved_last_ = false;
       islands_.forget();
+      last_rest_ = {summary.moving == 0, 0};
       report.encounters = GuardedMotion::count_encounters(pairs_.candidates(), commands, limits_);
       move_and_rebuild(commands, nullptr, summary.fastest);
     }
@@ -132,7 +150,7 @@ class KinematicEngine final : public Engine {
     // On a torus every agent first moves as commanded, in one plain loop, and the few whose
     // motion changed are then moved again from where they started.
     const bool patch_bent = motion != nullptr && arena_.torus();
-    if (patch_bent) remember_starts(motion->bent_agents());
+    if (motion != nullptr) remember_starts(motion->bent_agents());
     auto move = [&](int task) {
       const std::size_t first = StepThreads::slice_begin(n, task, tasks);
       const std::size_t last = StepThreads::slice_begin(n, task + 1, tasks);
@@ -162,6 +180,25 @@ class KinematicEngine final : public Engine {
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
     rebuild_neighbourhood(speed, true, fastest * limits_.dt);
+  }
+
+  // Of the agents commanded to move, those that stayed where they were: the sleepers, and
+  // those whose motion changed (starts_) that ended the step where they started, bit for bit
+  // (halted at once, or within a rounding error of it). All others moved their whole step.
+  std::size_t pressing_sleepers(std::span<const MotionCommand> commands) const {
+    std::size_t pressing = 0;
+    for (const std::uint32_t agent : islands_.sleepers()) {
+      pressing += static_cast<std::size_t>(!zero_velocity(commands[agent].velocity));
+    }
+    return pressing;
+  }
+  std::size_t bent_that_stayed(std::span<const MotionCommand> commands) const {
+    std::size_t stayed = 0;
+    for (const auto& [agent, start] : starts_) {
+      stayed += static_cast<std::size_t>(same_bits(start, positions_[agent]) &
+                                         !zero_velocity(commands[agent].velocity));
+    }
+    return stayed;
   }
 
   // The agents the last step's guarded motion saw meet (none when it was not resolved).
@@ -319,9 +356,12 @@ class KinematicEngine final : public Engine {
   bool sleep_checks_ = false;
   bool resolved_last_ = false;  // the last step ran the guarded motion
   bool pairs_kept_ = false;     // the last step found no new pairs: nothing moved
+  bool slept_whole_ = false;    // and every agent slept in it
+  LastStepRest last_rest_;      // what the last step's motion left at rest
   GuardedMotion full_motion_;   // the check's resolution in full
   std::optional<std::uint32_t> sleep_violation_;
-  std::vector<std::pair<std::uint32_t, Vec2>> starts_;  // of the agents whose motion changed
+  // Where the agents whose motion changed started the last step resolved.
+  std::vector<std::pair<std::uint32_t, Vec2>> starts_;
 };
 
 }  // namespace

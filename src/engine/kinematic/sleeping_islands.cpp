@@ -21,14 +21,22 @@ bool is_zero(Vec2 v) {
 
 // Islands are labelled only when at least one agent in this many presses at rest.
 constexpr std::size_t kPressersPerLabelling = 16;
-// After a step that found too few, the next this many steps sleep nobody and record nothing
-// (then one records and one looks again): at most a few steps of sleep are lost when a
-// world comes to rest.
-constexpr int kStepsSkippedWhenMoving = 6;
 
 bool same_command(const MotionCommand& a, const MotionCommand& b) {
   return same_bits(a.velocity, b.velocity) & (a.halt_on == b.halt_on) &
          (a.blocked_by == b.blocked_by) & (a.repelled_by == b.repelled_by);
+}
+
+// The bits in which two commands and signals differ, folded into one word (zero: the same).
+std::uint64_t command_difference(const MotionCommand& a, Signal a_signal, const MotionCommand& b,
+                                 Signal b_signal) {
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const std::uint64_t masks = static_cast<std::uint64_t>(a.halt_on ^ b.halt_on) |
+                              static_cast<std::uint64_t>(a.blocked_by ^ b.blocked_by) |
+                              static_cast<std::uint64_t>(a.repelled_by ^ b.repelled_by) |
+                              static_cast<std::uint64_t>(a_signal ^ b_signal);
+  return (bits(a.velocity.x) ^ bits(b.velocity.x)) | (bits(a.velocity.y) ^ bits(b.velocity.y)) |
+         masks;
 }
 
 }  // namespace
@@ -48,16 +56,26 @@ void SleepingIslands::reset(std::size_t agents) {
   sleepers_.clear();
   known_ = false;
   recorded_ = false;
-  steps_to_skip_ = 0;
 }
 
 bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
-  if (positions.size() != last_position_.size()) return false;
-  bool same = true;
+  // Unrecorded (a step not looked at), the last positions are an older step's.
+  if (!recorded_ || positions.size() != last_position_.size()) return false;
   for (std::size_t a = 0; a < positions.size(); ++a) {
-    same &= same_bits(positions[a], last_position_[a]);
+    if (!same_bits(positions[a], last_position_[a])) return false;
   }
-  return same;
+  return true;
+}
+
+bool SleepingIslands::inputs_repeat(std::span<const MotionCommand> commands,
+                                    std::span<const Signal> signals) const {
+  if (!recorded_ || commands.size() != last_command_.size()) return false;
+  // Without a branch per agent: a world that slept whole nearly always repeats.
+  std::uint64_t difference = 0;
+  for (std::size_t a = 0; a < commands.size(); ++a) {
+    difference |= command_difference(commands[a], signals[a], last_command_[a], last_signal_[a]);
+  }
+  return difference == 0;
 }
 
 void SleepingIslands::clear_sleepers() {
@@ -111,14 +129,13 @@ void SleepingIslands::label_islands(std::size_t agents, std::span<const Candidat
 void SleepingIslands::decide(std::span<const Vec2> positions,
                              std::span<const MotionCommand> commands,
                              std::span<const Signal> signals, std::span<const CandidatePair> pairs,
-                             double reach, std::span<const std::uint32_t> met, bool same_pairs) {
+                             double reach, std::span<const std::uint32_t> met, bool same_pairs,
+                             const LastStepRest& last) {
   const std::size_t agents = positions.size();
   if (last_position_.size() != agents) reset(agents);
-  if (steps_to_skip_ > 0) {
-    --steps_to_skip_;
-    return forget();
-  }
-  const bool evaluates = recorded_;  // this step can tell who rests
+  // A world that moved, with too few agents that may press at rest, can sleep nobody in this
+  // step (not all of it rests); recording it pays only when enough may press in the next.
+  if (!last.still && last.pressing * kPressersPerLabelling < agents) return forget();
   const bool same_reach = recorded_ && reach == reach_;
   const bool comparable = known_ && same_reach;
   clear_sleepers();
@@ -140,11 +157,7 @@ void SleepingIslands::decide(std::span<const Vec2> positions,
   if (resting == agents && same_reach && same_pairs) return everybody_sleeps(agents);
   // Labelling costs a pass over the pairs; it pays when it may spare the contact responses
   // of enough agents pressing at rest (a standing agent costs the guarded motion little).
-  if (resting_pressers * kPressersPerLabelling < agents) {
-    // A moving world: looking again at every step would cost more than it can spare.
-    if (evaluates) steps_to_skip_ = kStepsSkippedWhenMoving;
-    return;
-  }
+  if (resting_pressers * kPressersPerLabelling < agents) return;
   known_ = true;
   // The same pairs make the same islands: last step's labels stand (root_ still holds them).
   if (!(comparable && same_pairs)) label_islands(agents, pairs);

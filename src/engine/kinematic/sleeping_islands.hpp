@@ -21,8 +21,10 @@
 // Islands are found by union-find over the candidate pairs, only when enough agents press
 // at rest (moving agents pushing into bodies that halt them: their contact responses are
 // what sleep spares; a standing agent costs the guarded motion little). A whole world at rest
-// on the same pairs sleeps without labelling: it is one closed island. A moving world (too
-// few agents pressing at rest) is looked at only every few steps.
+// on the same pairs sleeps without labelling: it is one closed island. A moving world is not
+// even looked at (its inputs recorded) while the last step's motion left too few agents that
+// may press at rest: all its bookkeeping then costs the engine a pass over the agents whose
+// motion changed.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -34,15 +36,24 @@
 
 namespace swarmagg {
 
+// What the engine saw of the last step's motion, to tell whether this step is worth looking
+// at (a guess: it never changes who moves, only whether sleep is tried).
+struct LastStepRest {
+  bool still = true;         // every agent commanded to move stayed where it was
+  std::size_t pressing = 0;  // agents commanded to move that stayed (halted at once, or asleep)
+};
+
 class SleepingIslands {
  public:
   // Decides who sleeps in the step about to be resolved from `positions` (its start) with
   // `commands` and `signals`, over `pairs` found with pair reach `reach`. `met`: the agents
   // that took part in an encounter during the last step. `same_pairs`: the pairs are those
-  // of the last step (nothing moved, the reach stayed), so the islands are too.
+  // of the last step (nothing moved, the reach stayed), so the islands are too. A world
+  // that moved, in which too few agents may press at rest (`last`), is not looked at: it
+  // sleeps nobody and records nothing (then the next step cannot sleep anyone either).
   void decide(std::span<const Vec2> positions, std::span<const MotionCommand> commands,
               std::span<const Signal> signals, std::span<const CandidatePair> pairs, double reach,
-              std::span<const std::uint32_t> met, bool same_pairs);
+              std::span<const std::uint32_t> met, bool same_pairs, const LastStepRest& last);
   // Forgets everything: in the next step nobody sleeps (a step resolved without guards).
   void forget();
 
@@ -51,8 +62,13 @@ class SleepingIslands {
   std::span<const std::uint32_t> sleepers() const { return sleepers_; }
   // Each agent's position at the step's start (what a sleeper keeps).
   Vec2 start_of(std::uint32_t agent) const { return last_position_[agent]; }
-  // Whether every agent is still where the step started, bit for bit.
+  // Whether every agent is still where the step started, bit for bit (false when this
+  // step's start was not recorded: a moving world's step not looked at).
   bool none_moved(std::span<const Vec2> positions) const;
+  // Whether every agent's command and signal are, bit for bit, those of the last step
+  // decided (a world that slept whole then sleeps whole again: decide() is not needed).
+  bool inputs_repeat(std::span<const MotionCommand> commands,
+                     std::span<const Signal> signals) const;
 
  private:
   void reset(std::size_t agents);
@@ -65,7 +81,6 @@ class SleepingIslands {
 
   bool recorded_ = false;  // the last step's inputs were recorded
   bool known_ = false;     // and its islands labelled
-  int steps_to_skip_ = 0;  // steps left in which a moving world is not looked at
   double reach_ = -1.0;
   AgentArray<Vec2> last_position_;
   AgentArray<MotionCommand> last_command_;

@@ -142,6 +142,42 @@ TEST(SleepingIslands, ARowAcrossTheTorusSeamSleepsInPlace) {
   EXPECT_GT(scene.at(1).y, 20.0);
 }
 
+// Without checks, a world asleep whole that is given the same commands and signals again is
+// not decided again: it must still be exactly the world that would have been decided.
+TEST(SleepingIslands, AWorldAsleepWholeStaysAsleepOnRepeatedInputsAndWakesOnAnyChange) {
+  Scene scene = pressed_row(arena_world(40.0, 40.0), {10.0, 10.0});
+  scene.engine->set_sleep_checks(false);
+  const std::vector<Vec2> start(scene.engine->positions().begin(), scene.engine->positions().end());
+  scene.step();
+  for (int k = 0; k < 10; ++k) ASSERT_EQ(scene.step(), 3u);
+  const std::uint64_t generation = scene.engine->neighbours().generation();
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(scene.step(), 3u);
+  for (std::uint32_t a = 0; a < 3; ++a) EXPECT_TRUE(same_bits(scene.at(a), start[a]));
+  EXPECT_EQ(scene.engine->neighbours().generation(), generation);
+  // A signal alone changes (the middle one shows LEAVE, standing): the world is decided
+  // again; its inputs differ from the last step's, so nobody sleeps in this step.
+  scene.signals[1] = kLeave;
+  EXPECT_EQ(scene.step(), 0u);
+  // A command changes: the middle one moves off the row's line, which it could not asleep.
+  scene.signals[1] = kWait;
+  scene.commands[1] = waiting({0.0, 0.5});
+  EXPECT_EQ(scene.step(), 0u);
+  EXPECT_GT(scene.at(1).y, start[1].y);
+}
+
+// Bodies that stay where they were count as pressing at rest whether they halted at once
+// or within a rounding error of it: a pressed row sleeps after a moving phase too.
+TEST(SleepingIslands, ARowThatComesToRestAfterMovingFallsAsleep) {
+  WorldSpec spec = arena_world(40.0, 40.0);
+  Scene scene(spec, {{10.0, 10.0}, {12.0, 10.0}, {14.5, 10.0}},
+              {waiting({0.3, 0.0}), waiting(), waiting({-0.3, 0.0})}, {kWait, kWait, kWait});
+  // The right end closes the half-unit gap in about two steps, then presses at rest.
+  std::size_t asleep = 0;
+  for (int k = 0; k < 20 && asleep == 0; ++k) asleep = scene.step();
+  EXPECT_EQ(asleep, 3u);
+  EXPECT_NEAR(scene.at(2).x - scene.at(1).x, 2.0, 1e-6);
+}
+
 TEST(SleepingIslands, AMovingSwarmNeverSleeps) {
   Scene scene(arena_world(40.0, 40.0), {{5.0, 5.0}, {20.0, 20.0}},
               {searching({1.0, 0.0}), searching({0.0, 1.0})}, {kGo, kGo});
