@@ -49,7 +49,8 @@ link=$(sed "s|libswarmagg_controllers.a|$tmp/build/src/libswarmagg_controllers.a
 (cd "$build_dir/src" && eval "$link")
 
 cd "$source_dir"
-"$tmp/swarmagg" validate worlds/examples/cockroach.yaml --set controller.type=antlike | grep -q 'type: antlike'
+"$tmp/swarmagg" validate worlds/examples/cockroach.yaml --set controller.type=antlike |
+  grep 'type: antlike' >/dev/null
 "$tmp/swarmagg" run worlds/examples/cockroach.yaml --set controller.type=antlike \
   --set run.duration=20 --replicates 1 --no-plots --no-model --quiet --out "$tmp/run"
 grep -q 'type: antlike' "$tmp/run/world.resolved.yaml"
