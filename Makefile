@@ -3,17 +3,24 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SWARMAGG := $(BUILD_DIR)/swarmagg
 
-.PHONY: deps deps-test configure build install demo test test-slurm bench microbench clean fuzz test-sanitize
+.PHONY: deps deps-full deps-test configure build install demo test test-slurm bench microbench clean fuzz test-sanitize
 
+# What the demo needs: the compiler and the libraries of the swarmagg binary.
 deps:
 	@scripts/install-deps.sh
 
-# What only the tests need besides (Slurm and munge for tests/cluster/).
+# Also what the rest of the build needs (GoogleTest, Google Benchmark, the Python module).
+deps-full:
+	@scripts/install-deps.sh --full
+
+# Also what only the tests need (Slurm and munge for tests/cluster/, pytest, xvfb).
 deps-test:
 	@scripts/install-deps.sh --test
 
-configure: deps
-	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The whole build: a build folder that `make demo` configured without the tests and the
+# Python module gets them back here.
+configure: deps-full
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DSWARMAGG_PYTHON=ON >/dev/null
 
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -24,7 +31,12 @@ PREFIX ?= /usr/local
 install: build
 	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
-demo: build
+# Only the swarmagg binary: a new build folder is configured without the tests and the Python
+# module, whose packages the demo does not install; an existing one keeps its settings.
+demo: deps
+	@test -f $(BUILD_DIR)/CMakeCache.txt || cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release \
+	  -DBUILD_TESTING=OFF -DSWARMAGG_PYTHON=OFF >/dev/null
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target swarmagg
 	@scripts/demo.sh $(SWARMAGG)
 
 test: deps-test build
@@ -47,7 +59,7 @@ test-sanitize: deps-test
 
 # libFuzzer on the world loader and on --set (clang++, ASan + UBSan), FUZZ_SECONDS per target.
 FUZZ_SECONDS ?= 60
-fuzz: deps
+fuzz: deps-full
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) fuzz/run.sh
 
 bench: build

@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian packages swarmagg builds and runs with, only those missing, so
 # `make demo` and `make test` work on a fresh Debian 12 machine with one command.
-# libhdf5-dev builds trajectories.h5; python3-h5py reads trajectories.h5 in the README's
-# example. The Python module (`import swarmagg`, docs/python.md) builds with pybind11-dev and
-# python3-dev for Debian's /usr/bin/python3 and returns numpy arrays and pandas frames;
-# python3-matplotlib draws its tutorial's plots. libglfw3-dev, libimgui-dev and libstb-dev
-# build the live view (`swarmagg view`).
-#   scripts/install-deps.sh          what `make demo` needs (build and run)
+#   scripts/install-deps.sh          what `make demo` needs: the compiler and the libraries of
+#                                    the `swarmagg` binary (libglfw3-dev, libimgui-dev and
+#                                    libstb-dev build the live view, `swarmagg view`;
+#                                    libhdf5-dev trajectories.h5; gnuplot-nox draws the plots)
+#   scripts/install-deps.sh --full   also what the rest of the build needs (`make build`,
+#                                    `make install`): GoogleTest and Google Benchmark for the
+#                                    tests and micro-benchmarks; pybind11-dev and python3-dev
+#                                    build the Python module (`import swarmagg`,
+#                                    docs/python.md), which returns numpy arrays and pandas
+#                                    frames; python3-matplotlib draws its tutorial's plots;
+#                                    and, unless SWARMAGG_WITH_OPTIONAL=0, ffmpeg for --video
+#                                    and python3-h5py, which reads trajectories.h5 in the
+#                                    README's example
 #   scripts/install-deps.sh --test   also what only the tests need: slurm-wlm and munge, for
 #                                    the test that runs the Slurm example under a real
 #                                    single-node Slurm (tests/cluster/); python3-pytest for
@@ -14,27 +21,31 @@
 #                                    window tests on a virtual display (tests/view/)
 set -euo pipefail
 packages=(cmake g++ make pkg-config libbox2d-dev libeigen3-dev libyaml-cpp-dev libosmesa6-dev
-  libpng-dev libgtest-dev libgmock-dev libcli11-dev nlohmann-json3-dev libboost-math-dev
-  libbenchmark-dev gnuplot-nox libhdf5-dev
-  pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib
+  libpng-dev libcli11-dev nlohmann-json3-dev libboost-math-dev gnuplot-nox libhdf5-dev
   libglfw3-dev libimgui-dev libstb-dev)
+full_packages=(libgtest-dev libgmock-dev libbenchmark-dev
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-matplotlib)
 test_packages=(slurm-wlm munge python3-pytest xvfb xauth xdotool)
-if [[ ${1:-} == --test ]]; then
-  packages+=("${test_packages[@]}")
-elif [[ -n ${1:-} ]]; then
-  echo "usage: scripts/install-deps.sh [--test]" >&2
-  exit 2
-fi
-optional=(ffmpeg python3-h5py)
+optional=()
+case ${1:-} in
+  "") ;;
+  --full | --test)
+    packages+=("${full_packages[@]}")
+    if [[ ${SWARMAGG_WITH_OPTIONAL:-1} == 1 ]]; then optional=(ffmpeg python3-h5py); fi
+    if [[ $1 == --test ]]; then packages+=("${test_packages[@]}"); fi
+    ;;
+  *)
+    echo "usage: scripts/install-deps.sh [--full | --test]" >&2
+    exit 2
+    ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-if [[ ${SWARMAGG_WITH_OPTIONAL:-1} == 1 ]]; then
-  for p in "${optional[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-  done
-fi
+for p in "${optional[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
 if ((${#missing[@]} == 0)); then
   exit 0
 fi

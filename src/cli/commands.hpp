@@ -2,8 +2,11 @@
 // Every subcommand lives in its own file and adds itself to the application with one of
 // these functions. The action it stores runs after a successful parse and returns the exit
 // code (0 success, 2 bad input, 1 failure); exceptions are mapped in app.cpp.
-#include <CLI/CLI.hpp>
 #include <functional>
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace swarmagg::cli {
 

@@ -1,6 +1,7 @@
 // `swarmagg help [--markdown]`: the help of every command in one page. `--markdown` prints
 // docs/reference/cli.md, which a test compares with this output, so the page cannot drift
 // from the options the commands really take.
+#include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "cli/commands.hpp"

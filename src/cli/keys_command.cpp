@@ -3,6 +3,7 @@
 // which a test compares with this output, so the page cannot drift from the table.
 #include <yaml-cpp/yaml.h>
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
 

@@ -1,5 +1,6 @@
 // `swarmagg model WORLD.yaml [--out DIR]`: the world's macroscopic predictions (docs/models.md),
 // written beside a run of the same world so that the two plot together.
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <iostream>
 #include <optional>

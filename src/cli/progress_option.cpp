@@ -1,5 +1,6 @@
 #include "cli/progress_option.hpp"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 
 namespace swarmagg::cli {

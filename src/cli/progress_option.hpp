@@ -3,8 +3,11 @@
 // --quiet; always: even with --quiet; never: none. On a terminal it is one line rewritten in
 // place, in a log a plain line every 10 % or 30 s (run/progress_line.hpp). The phases after
 // the simulation (models, plots, merging) say what they do on the same stream.
-#include <CLI/CLI.hpp>
 #include <string>
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace swarmagg::cli {
 

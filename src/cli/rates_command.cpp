@@ -1,6 +1,7 @@
 // `swarmagg rates WORLD.yaml [--engine] [--replicates N] [--seed S] [--threads T] [--set ...]
 // [--out DIR]`: runs the world and measures every model term as events over exposure
 // (docs/models.md): rates.csv, rates.json and a plot per term.
+#include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "cli/commands.hpp"

@@ -2,6 +2,7 @@
 // simulating. The frames are those `run --render-every` draws at the same steps, pixel for
 // pixel: the same renderer, given the same snapshot (positions, states, aggregate ids, step
 // and time exactly as stored) of the same world (the resolved world stored in the file).
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
 #include <string>

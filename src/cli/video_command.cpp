@@ -1,6 +1,7 @@
 // `swarmagg video FRAMES_DIR OUT.mp4`: assembles numbered frames (frame_000000.png, ...) into
 // a video with ffmpeg, as `run --video` does; for frames a run, `render` or the live view's
 // recording (V) left in a folder.
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
 

@@ -2,6 +2,7 @@
 // window, steps and inspects it; --script drives it from a file of commands.
 #include "view/view_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
 #include <string>

@@ -1,5 +1,7 @@
 #include "cli/world_options.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include "config/world_loader.hpp"
 
 namespace swarmagg::cli {

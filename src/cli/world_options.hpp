@@ -1,13 +1,16 @@
 #pragma once
 // The options every world-taking subcommand shares: the world file, --set overrides and
 // the common shortcuts, each of which is just another override of a world key.
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "config/world_override.hpp"
 #include "config/world_spec.hpp"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace swarmagg::cli {
 

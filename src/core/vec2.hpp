@@ -40,6 +40,10 @@ constexpr double norm2(Vec2 a) {
 inline double norm(Vec2 a) {
   return std::sqrt(norm2(a));
 }
+// v == 0, as one test (&& would make two branches, each hard to predict).
+constexpr bool is_zero(Vec2 v) {
+  return (v.x == 0.0) & (v.y == 0.0);
+}
 inline Vec2 from_angle(double radians) {
   return {std::cos(radians), std::sin(radians)};
 }

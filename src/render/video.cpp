@@ -44,9 +44,9 @@ std::string escape_percent(const std::string& s) {
   return out;
 }
 
-std::string format_number(double value) {
+std::string fps_text(double fps) {
   char text[64];
-  std::snprintf(text, sizeof text, "%.10g", value);
+  std::snprintf(text, sizeof text, "%.10g", fps);
   return text;
 }
 
@@ -134,7 +134,7 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
 void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
                     const VideoOptions& options) {
   if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 1000.0) {
-    throw InputError("video frame rate " + format_number(options.fps) +
+    throw InputError("video frame rate " + fps_text(options.fps) +
                      ": expected a number of frames per second in (0, 1000]");
   }
   if (options.crf < 0 || options.crf > 51) {
@@ -170,7 +170,7 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
                                 "error",
                                 "-y",
                                 "-framerate",
-                                format_number(options.fps),
+                                fps_text(options.fps),
                                 "-start_number",
                                 "0",
                                 "-i",

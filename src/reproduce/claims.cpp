@@ -24,12 +24,6 @@ const FigureResult* with_world(const std::vector<FigureResult>& results, const s
   return nullptr;
 }
 
-const std::vector<VariantError>* errors_of(const FigureResult& r) {
-  if (r.noa) return &r.noa->errors;
-  if (r.partitions) return &r.partitions->errors;
-  return nullptr;
-}
-
 ClaimCheck unchecked(ClaimCheck claim, const std::string& missing) {
   claim.verdict = "not checked";
   claim.evidence = "world " + missing + " was not run";
@@ -43,7 +37,7 @@ ClaimCheck compare_variants(ClaimCheck claim, const std::vector<FigureResult>& r
   int wins = 0;
   for (const std::string& world : worlds) {
     const FigureResult* r = with_world(results, world);
-    const auto* errors = r ? errors_of(*r) : nullptr;
+    const auto* errors = r ? model_errors(*r) : nullptr;
     if (!errors) return unchecked(claim, world);
     const double w = variant_error(*errors, winner), l = variant_error(*errors, loser);
     wins += w < l ? 1 : 0;

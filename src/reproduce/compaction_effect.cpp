@@ -12,13 +12,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-const std::vector<VariantError>& errors_of(const FigureResult& r) {
-  static const std::vector<VariantError> none;
-  return r.noa ? r.noa->errors : r.partitions ? r.partitions->errors : none;
-}
-
-double error_or_nan(const std::vector<VariantError>& errors, const std::string& variant) {
-  for (const VariantError& e : errors) {
+double error_or_nan(const std::vector<VariantError>* errors, const std::string& variant) {
+  if (!errors) return kNaN;
+  for (const VariantError& e : *errors) {
     if (e.variant == variant) return e.error;
   }
   return kNaN;
@@ -81,9 +77,11 @@ CompactionEffect compaction_effect(const FigureResult& on, const FigureResult& o
   e.figures = on.figure.figures;
   e.world = on.worlds.front().name;
   e.bayindir = on.noa.has_value();
-  for (const VariantError& error : errors_of(on)) {
-    e.variants.push_back(error.variant);
-    e.errors.push_back({error.error, error_or_nan(errors_of(off), error.variant)});
+  if (const std::vector<VariantError>* errors = model_errors(on)) {
+    for (const VariantError& error : *errors) {
+      e.variants.push_back(error.variant);
+      e.errors.push_back({error.error, error_or_nan(model_errors(off), error.variant)});
+    }
   }
   e.final_noa = {final_noa(on), final_noa(off)};
   e.member_spacing = {on.member_spacing.value_or(kNaN), off.member_spacing.value_or(kNaN)};

@@ -4,6 +4,12 @@
 
 namespace swarmagg {
 
+const std::vector<VariantError>* model_errors(const FigureResult& result) {
+  if (result.noa) return &result.noa->errors;
+  if (result.partitions) return &result.partitions->errors;
+  return nullptr;
+}
+
 double variant_error(const std::vector<VariantError>& errors, const std::string& variant) {
   for (const VariantError& e : errors) {
     if (e.variant == variant) return e.error;

@@ -32,6 +32,10 @@ struct FigureResult {
   double wall_seconds = 0.0;
 };
 
+// The errors per model variant of its NOA or partition comparison; nullptr for a figure
+// with neither.
+const std::vector<VariantError>* model_errors(const FigureResult& result);
+
 // The error of `variant` in a NOA or partition comparison (throws when absent).
 double variant_error(const std::vector<VariantError>& errors, const std::string& variant);
 

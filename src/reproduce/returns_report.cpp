@@ -13,10 +13,6 @@ namespace {
 // A variant fits when its error is within this multiple of its noise floor.
 constexpr double kFitsWithin = 2.0;
 
-const std::vector<VariantError>* errors_of(const FigureResult& r) {
-  return r.noa ? &r.noa->errors : r.partitions ? &r.partitions->errors : nullptr;
-}
-
 std::string ratio_text(const VariantError& e) {
   if (!e.noise_floor || *e.noise_floor <= 0.0) return "-";
   return report_number(e.error / *e.noise_floor) + "x";
@@ -106,7 +102,7 @@ std::string remaining_miss(const std::vector<FigureResult>& results,
     if (*ratio > kFitsWithin) misses.push_back(label + " (" + report_number(*ratio) + "x)");
   };
   for (const FigureResult& r : results) {
-    if (const std::vector<VariantError>* errors = errors_of(r))
+    if (const std::vector<VariantError>* errors = model_errors(r))
       judge(r.worlds.front().name, *errors);
     trending |= r.trend && !r.trend->stationary();
   }
@@ -181,7 +177,7 @@ std::string noise_floor_section(const std::vector<FigureResult>& results,
       report_number(kFitsWithin) +
       "x its floor.\n\n| Fig | world | metric | errors / noise floors |\n|---|---|---|---|\n";
   for (const FigureResult& r : results) {
-    const std::vector<VariantError>* errors = errors_of(r);
+    const std::vector<VariantError>* errors = model_errors(r);
     if (!errors) continue;
     text += "| " + r.figure.figures + " | " + r.worlds.front().name + " | " +
             (r.noa ? "rmse_noa" : "tv_partition") + " | " + errors_cell(*errors) + " |\n";
@@ -252,7 +248,7 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
       "aggregate holding a member of the one it left, within 3 leave timeouts. The numbers "
       "below are this run's.\n\n";
   for (const FigureResult& r : results) {
-    const std::vector<VariantError>* errors = errors_of(r);
+    const std::vector<VariantError>* errors = model_errors(r);
     if (!errors || r.rates.empty()) continue;
     const WorldSpec& w = r.worlds.front();
     if (!w.controller.leave) continue;

@@ -15,17 +15,19 @@ namespace {
 // seeds 11 and 12 give p = 0.02 on the NOA difference, the one false positive in twenty a
 // 5 % test allows. What is tested is the comparison, not the controller.
 WorldSpec small_world(double p_leave, std::uint64_t seed, int agents = 30) {
-  return load_world_text(R"(
+  // Appended to a string, not R"(...)" + std::to_string(agents): see the precompiled header
+  // in tests/CMakeLists.txt.
+  std::string text = R"(
 name: small
 arena: {width: 50, height: 50}
-robots: {count: )" + std::to_string(agents) +
-                             R"(}
+robots: {count: )";
+  text += std::to_string(agents) + R"(}
 controller: {type: bayindir, join: true, leave: true, leave_timeout: 10,
              compaction: {enabled: false}, p_leave: )" +
-                             std::to_string(p_leave) + R"(}
+          std::to_string(p_leave) + R"(}
 run: {duration: 300, replicates: 12, record_every: 50, threads: 2, seed: )" +
-                             std::to_string(seed) + "}\n",
-                         "small");
+          std::to_string(seed) + "}\n";
+  return load_world_text(text, "small");
 }
 
 TEST(ArmComparison, AWorldAgainstItselfShowsNoSignificantDifference) {

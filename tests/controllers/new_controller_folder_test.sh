@@ -36,7 +36,11 @@ grep -q 'X(antlike)' "$tmp/src/controllers/controller_registry.cpp" ||
 
 cmake --build "$tmp/build" --target swarmagg_controllers >"$tmp/build.log" 2>&1 ||
   { cat "$tmp/build.log"; exit 1; }
-ar t "$tmp/build/src/libswarmagg_controllers.a" | grep -q antlike_registration ||
+# By the symbol, not the object's name: a unity build compiles the folder as one batch. Not
+# grep -q, which stops reading at the first match: nm then dies of SIGPIPE, and pipefail
+# fails the test.
+nm -C --defined-only "$tmp/build/src/libswarmagg_controllers.a" |
+  grep 'antlike_registration()' >/dev/null ||
   { echo "the build did not compile controllers/antlike/"; cat "$tmp/build.log"; exit 1; }
 
 # This build's link command for swarmagg, with the copy's controllers library.
@@ -45,7 +49,8 @@ link=$(sed "s|libswarmagg_controllers.a|$tmp/build/src/libswarmagg_controllers.a
 (cd "$build_dir/src" && eval "$link")
 
 cd "$source_dir"
-"$tmp/swarmagg" validate worlds/examples/cockroach.yaml --set controller.type=antlike | grep -q 'type: antlike'
+"$tmp/swarmagg" validate worlds/examples/cockroach.yaml --set controller.type=antlike |
+  grep 'type: antlike' >/dev/null
 "$tmp/swarmagg" run worlds/examples/cockroach.yaml --set controller.type=antlike \
   --set run.duration=20 --replicates 1 --no-plots --no-model --quiet --out "$tmp/run"
 grep -q 'type: antlike' "$tmp/run/world.resolved.yaml"

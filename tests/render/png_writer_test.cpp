@@ -36,7 +36,9 @@ TEST(WritePng, RoundTripsOpaquePixelsLosslesslyAtEveryLevel) {
   testing::ScratchDir dir("png-opaque");
   const auto pixels = gradient(37, 23, true);
   for (int level : {0, 1, 6, 9}) {
-    const auto path = dir.path() / ("g" + std::to_string(level) + ".png");
+    // Appended, not "g" + std::to_string(level): see the precompiled header in
+    // tests/CMakeLists.txt.
+    const auto path = dir.path() / std::string("g").append(std::to_string(level)).append(".png");
     write_png(path, 37, 23, pixels, level);
     const testing::Image image = testing::read_png(path);
     EXPECT_EQ(image.width, 37);

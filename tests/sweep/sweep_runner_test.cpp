@@ -120,8 +120,11 @@ TEST_F(SweepRunnerTest, TheListingShowsIndexSeedStatusAndParameters) {
   EXPECT_THAT(listing, ::testing::StartsWith(
                            "   run replicate                 seed status      parameters\n"));
   EXPECT_THAT(listing, HasSubstr("     1         1 "));
-  EXPECT_THAT(listing, HasSubstr(" " + std::to_string(runs[1].seed) +
-                                 " pending     robots.count=10 controller.p_leave=0.0005\n"));
+  // Appended, not " " + std::to_string(...): see the precompiled header in tests/CMakeLists.txt.
+  EXPECT_THAT(listing,
+              HasSubstr(std::string(" ")
+                            .append(std::to_string(runs[1].seed))
+                            .append(" pending     robots.count=10 controller.p_leave=0.0005\n")));
   EXPECT_THAT(listing, HasSubstr(" complete    robots.count=10 controller.p_leave=0.005\n"));
   EXPECT_THAT(listing, HasSubstr("     4         0"));
   EXPECT_THAT(listing, ::testing::Not(HasSubstr("\n     3 ")));

@@ -24,11 +24,6 @@ constexpr std::size_t kNeighboursRoom = 64;
 // Runs of events this short are sorted by insertion.
 constexpr std::size_t kSmallSort = 16;
 
-// v == 0, as one test (&& would make two branches, each hard to predict).
-bool is_zero(Vec2 v) {
-  return (v.x == 0.0) & (v.y == 0.0);
-}
-
 // `when ? a : b` by bit masks: for choices that differ from one neighbour to the next,
 // which the branch predictor cannot learn (GCC keeps a branch for a Vec2 ?:).
 Vec2 choose(bool when, Vec2 a, Vec2 b) {

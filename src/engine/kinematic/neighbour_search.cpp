@@ -9,8 +9,6 @@ namespace {
 // The strips are searched a hair wider than the reach, so that no pair within the reach is
 // lost to rounding in the strip bounds; the exact radii apply to the minimum-image offset.
 constexpr double kWindowMargin = 1e-9;
-// Agents per task below which waking another thread costs more than it saves.
-constexpr std::size_t kAgentsPerTask = 16384;
 
 }  // namespace
 
@@ -35,8 +33,8 @@ inline void NeighbourSearch::report(Found& out, std::uint32_t i, std::uint32_t j
 }
 
 void NeighbourSearch::scan_strips(std::size_t agents, StepThreads& threads) {
-  const int tasks = std::max(
-      1, std::min({threads.size(), strips_.strips(), static_cast<int>(agents / kAgentsPerTask)}));
+  const int tasks = std::max(1, std::min({threads.size(), strips_.strips(),
+                                          static_cast<int>(agents / StepThreads::kAgentsPerTask)}));
   if (found_.size() < static_cast<std::size_t>(tasks))
     found_.resize(static_cast<std::size_t>(tasks));
   auto scan_one = [&](int task) { scan_task(task, tasks); };

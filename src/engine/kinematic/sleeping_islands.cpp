@@ -15,10 +15,6 @@ bool same_bits(Vec2 a, Vec2 b) {
   return same_bits(a.x, b.x) & same_bits(a.y, b.y);
 }
 
-bool is_zero(Vec2 v) {
-  return (v.x == 0.0) & (v.y == 0.0);
-}
-
 // Islands are labelled only when at least one agent in this many presses at rest.
 constexpr std::size_t kPressersPerLabelling = 16;
 

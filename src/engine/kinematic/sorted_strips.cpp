@@ -7,8 +7,6 @@ namespace swarmagg {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// Agents per task below which waking another thread costs more than it saves.
-constexpr std::size_t kAgentsPerTask = 16384;
 // Room for this share of the agents (plus a few) changing strip in one update, reserved up
 // front: updates several steps apart (Verlet lists) see more changes than single steps, and
 // the buffers would otherwise reach new heights now and then long into a run.
@@ -16,7 +14,7 @@ constexpr std::size_t kStripChangesRoom = 16;
 constexpr std::size_t kStripChangesFloor = 64;
 
 int tasks_for(std::size_t agents, int strips, const StepThreads& threads) {
-  const auto by_work = static_cast<int>(agents / kAgentsPerTask);
+  const auto by_work = static_cast<int>(agents / StepThreads::kAgentsPerTask);
   return std::max(1, std::min({threads.size(), by_work, strips}));
 }
 

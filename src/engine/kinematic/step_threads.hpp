@@ -15,6 +15,9 @@ namespace swarmagg {
 
 class StepThreads {
  public:
+  // Agents per task below which waking another thread costs more than it saves.
+  static constexpr std::size_t kAgentsPerTask = 16384;
+
   StepThreads() = default;
   ~StepThreads();
   StepThreads(const StepThreads&) = delete;

@@ -8,7 +8,7 @@ namespace {
 
 // How many pairs ahead the measuring pass requests the higher agent's position: enough to
 // cover a miss to memory with the work of the pairs in between.
-constexpr std::size_t kPrefetchAhead = 16;
+constexpr std::size_t kPairsPrefetchedAhead = 16;
 
 // Moves and distances carry rounding errors of a few ulps of the coordinates; the list is
 // trusted only while this much more than twice the moves fits in the skin as well.
@@ -86,7 +86,7 @@ void VerletPairs::measure(const ArenaGeometry& arena, std::span<const Vec2> posi
   ClosePair* close = close_.data();
   std::size_t candidates = 0, perceived = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    __builtin_prefetch(position + listed[std::min(k + kPrefetchAhead, count - 1)].j);
+    __builtin_prefetch(position + listed[std::min(k + kPairsPrefetchedAhead, count - 1)].j);
     const std::uint32_t i = listed[k].i, j = listed[k].j;
     const Vec2 offset = arena.displacement(position[i], position[j]);
     const double d2 = norm2(offset);
