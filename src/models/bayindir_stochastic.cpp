@@ -77,12 +77,13 @@ BayindirState draw_first_decision(int agents, const std::vector<double>& start,
   return BayindirState::after_first_decision(agents, drawn);
 }
 
-std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
-                                                 const std::vector<std::int64_t>& grid,
-                                                 std::uint64_t seed, int replicates,
-                                                 std::uint64_t stream,
-                                                 const std::vector<double>& start) {
-  std::vector<ModelRow> rows;
+namespace {
+
+// Runs the replicates and hands `record` each replicate's state at every grid point.
+template <typename Record>
+void walk_replicates(const BayindirRates& rates, const std::vector<std::int64_t>& grid,
+                     std::uint64_t seed, int replicates, std::uint64_t stream,
+                     const std::vector<double>& start, Record&& record) {
   for (int replicate = 0; replicate < replicates; ++replicate) {
     const CounterRng rng = CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
     BayindirState state = BayindirState::all_searching(rates.agents);
@@ -96,11 +97,39 @@ std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
             advance_stochastic(rates, state, uniforms);
           }
         },
-        [&](std::int64_t step) {
-          rows.push_back(to_model_row(state, rates.forms_aggregates, false, replicate, step));
-        });
+        [&](std::int64_t step) { record(state, replicate, step); });
   }
+}
+
+}  // namespace
+
+std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
+                                                 const std::vector<std::int64_t>& grid,
+                                                 std::uint64_t seed, int replicates,
+                                                 std::uint64_t stream,
+                                                 const std::vector<double>& start) {
+  std::vector<ModelRow> rows;
+  rows.reserve(grid.size() * static_cast<std::size_t>(std::max(replicates, 0)));
+  walk_replicates(
+      rates, grid, seed, replicates, stream, start,
+      [&](const BayindirState& state, int replicate, std::int64_t step) {
+        rows.push_back(to_model_row(state, rates.forms_aggregates, false, replicate, step));
+      });
   return rows;
+}
+
+std::vector<double> bayindir_stochastic_noa(const BayindirRates& rates,
+                                            const std::vector<std::int64_t>& grid,
+                                            std::uint64_t seed, int replicates,
+                                            std::uint64_t stream,
+                                            const std::vector<double>& start) {
+  std::vector<double> noa;
+  noa.reserve(grid.size() * static_cast<std::size_t>(std::max(replicates, 0)));
+  walk_replicates(rates, grid, seed, replicates, stream, start,
+                  [&](const BayindirState& state, int, std::int64_t) {
+                    noa.push_back(rates.forms_aggregates ? state.noa() : 0.0);
+                  });
+  return noa;
 }
 
 }  // namespace swarmagg

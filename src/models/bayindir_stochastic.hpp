@@ -35,4 +35,12 @@ std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  std::uint64_t stream,
                                                  const std::vector<double>& start = {});
 
+// The NOA alone of the same runs, [replicate * grid.size() + point]: what a noise floor
+// needs, without a full row per point.
+std::vector<double> bayindir_stochastic_noa(const BayindirRates& rates,
+                                            const std::vector<std::int64_t>& grid,
+                                            std::uint64_t seed, int replicates,
+                                            std::uint64_t stream,
+                                            const std::vector<double>& start = {});
+
 }  // namespace swarmagg

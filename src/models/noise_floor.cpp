@@ -88,8 +88,8 @@ double noa_noise_floor(const BayindirRates& rates, const std::vector<std::int64_
                        const std::vector<double>& start, const std::vector<double>& expected_noa,
                        int replicates, std::uint64_t seed, std::uint64_t stream, int batches) {
   if (replicates < 1 || batches < 1) throw std::invalid_argument("noise floor: no replicates");
-  const std::vector<ModelRow> rows =
-      bayindir_stochastic_series(rates, grid, seed, replicates * batches, stream, start);
+  const std::vector<double> noa =
+      bayindir_stochastic_noa(rates, grid, seed, replicates * batches, stream, start);
   const std::size_t points = grid.size();
   double sum = 0.0;
   for (int batch = 0; batch < batches; ++batch) {
@@ -99,7 +99,7 @@ double noa_noise_floor(const BayindirRates& rates, const std::vector<std::int64_
       for (int k = 0; k < replicates; ++k) {
         const std::size_t row =
             static_cast<std::size_t>(replicate_index(batch, replicates, k)) * points + j;
-        mean += rows[row].noa.value_or(0.0);
+        mean += noa[row];
       }
       const double difference = mean / replicates - expected_noa[j];
       squares += difference * difference;

@@ -54,6 +54,19 @@ TEST(BayindirStochastic, KeptSizeBoundNeverHidesAnAggregate) {
   EXPECT_GT(largest_seen, 5.0);  // aggregates grew, so the bound moved
 }
 
+TEST(BayindirStochastic, NoaAloneIsTheSeriesNoa) {
+  const BayindirRates rates =
+      bayindir_rates(testing::bayindir_world(60, 2.5e-3, true, true), CreationVariant::Collision);
+  const std::vector<std::int64_t> grid{0, 10, 500, 3000};
+  const std::vector<double> start{0.0, 0.0, 3.0, 1.0};
+  for (const auto& first_decision : {std::vector<double>{}, start}) {
+    const auto rows = bayindir_stochastic_series(rates, grid, 9, 4, 2, first_decision);
+    const auto noa = bayindir_stochastic_noa(rates, grid, 9, 4, 2, first_decision);
+    ASSERT_EQ(noa.size(), rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) EXPECT_EQ(noa[k], *rows[k].noa) << k;
+  }
+}
+
 TEST(BayindirStochastic, ReproducibleForASeedAndDifferentAcrossSeeds) {
   const BayindirRates rates =
       bayindir_rates(testing::bayindir_world(120, 5e-4, true, true), CreationVariant::Original);
