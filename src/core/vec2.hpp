@@ -1,6 +1,8 @@
 #pragma once
 // A 2D vector of doubles: positions, offsets and velocities in arena units.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace swarmagg {
 
@@ -43,6 +45,11 @@ inline double norm(Vec2 a) {
 // v == 0, as one test (&& would make two branches, each hard to predict).
 constexpr bool is_zero(Vec2 v) {
   return (v.x == 0.0) & (v.y == 0.0);
+}
+// Bit for bit, so that -0.0 and +0.0 differ: what an agent that did not move keeps.
+constexpr bool same_bits(Vec2 a, Vec2 b) {
+  return (std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x)) &
+         (std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y));
 }
 inline Vec2 from_angle(double radians) {
   return {std::cos(radians), std::sin(radians)};

@@ -27,7 +27,12 @@ BayindirState BayindirState::after_first_decision(int agents,
 }
 
 double BayindirState::noa() const {
-  return std::accumulate(aggregates.begin(), aggregates.end(), 0.0);
+  // Above the size bound every count is zero: adding them changes no bit of the sum.
+  const auto end = size_bound
+                       ? std::min(aggregates.size(), static_cast<std::size_t>(*size_bound) + 1)
+                       : aggregates.size();
+  return std::accumulate(aggregates.begin(), aggregates.begin() + static_cast<std::ptrdiff_t>(end),
+                         0.0);
 }
 
 double BayindirState::agents_accounted() const {

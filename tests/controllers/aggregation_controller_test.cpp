@@ -406,11 +406,6 @@ TEST(CollisionController, GhostModeMovesStraightAndTumbles) {
 namespace swarmagg {
 namespace {
 
-bool same_bits(Vec2 a, Vec2 b) {
-  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
-}
-
 // A controller that keeps its last decision repeats it from memory while every agent waits,
 // nothing changed and its inputs stay (the same lists, labels, partners), drawing only the
 // leave decisions. Each of its decisions must be the one a fresh controller, which remembers

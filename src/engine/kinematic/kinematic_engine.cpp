@@ -96,7 +96,7 @@ class KinematicEngine final : public Engine {
     StepReport report;
     if (summary.guarded) {
       islands_.decide(positions_, commands, signals, pairs_.candidates(), pairs_speed_,
-                      met_last_step(), pairs_kept_, last_rest_);
+                      met_last_step(), pairs_kept_ || pairs_.kept(), last_rest_);
       // Everybody asleep: nothing moves, nothing meets, the pairs and lists stay (unless the
       // radii changed). With checks on, the step is resolved as usual, to be checked.
       resolved_last_ = islands_.sleepers().size() < positions_.size() || sleep_checks_;
@@ -174,12 +174,18 @@ class KinematicEngine final : public Engine {
     keep_sleepers_in_place();
     const double speed = std::max(nominal_speed_, fastest);
     // When no agent moved and the radii stay, the pairs and what each agent perceives are
-    // those found last: a world at rest costs no search and no lists.
-    pairs_kept_ = motion != nullptr && speed == pairs_speed_ && islands_.none_moved(positions_);
+    // those found last: a world at rest costs no search and no lists. When only agents far
+    // from everybody moved (searchers away from the packed aggregates), every pair measures
+    // as before: the pairs and lists are kept too.
+    const SleepingIslands::Moved moved = islands_.who_moved(
+        positions_, [this](std::uint32_t agent) { return pairs_.paired(agent); });
+    pairs_kept_ =
+        motion != nullptr && speed == pairs_speed_ && moved == SleepingIslands::Moved::Nobody;
     if (pairs_kept_) return;
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
-    rebuild_neighbourhood(speed, true, fastest * limits_.dt);
+    rebuild_neighbourhood(speed, true, fastest * limits_.dt,
+                          motion == nullptr || moved == SleepingIslands::Moved::Paired);
   }
 
   // Of the agents commanded to move, those that stayed where they were: the sleepers, and
@@ -258,11 +264,6 @@ class KinematicEngine final : public Engine {
     return p;
   }
 
-  static bool same_bits(Vec2 a, Vec2 b) {
-    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
-  }
-
   void remember_starts(std::span<const std::uint32_t> agents) {
     starts_.clear();
     for (const std::uint32_t agent : agents) starts_.push_back({agent, positions_[agent]});
@@ -332,10 +333,12 @@ class KinematicEngine final : public Engine {
     return radii;
   }
 
-  // `moved`: how far any agent moved at most since the last rebuild.
-  void rebuild_neighbourhood(double speed, bool perception, double moved) {
+  // `moved`: how far any agent moved at most since the last rebuild; `pairs_moved`: whether
+  // an agent of a listed pair may have moved since (VerletPairs::find).
+  void rebuild_neighbourhood(double speed, bool perception, double moved, bool pairs_moved = true) {
     perception = perception && sensing_radius_ > 0.0;
-    pairs_.find(arena_, positions_, radii_for(speed, perception), moved, threads_, neighbours_);
+    pairs_.find(arena_, positions_, radii_for(speed, perception), moved, threads_, neighbours_,
+                pairs_moved);
   }
 
   ArenaGeometry arena_;

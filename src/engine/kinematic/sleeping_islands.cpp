@@ -6,15 +6,6 @@
 namespace swarmagg {
 namespace {
 
-// Bit for bit, so that -0.0 and +0.0 differ (a position's bits are what a sleeper keeps).
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
-bool same_bits(Vec2 a, Vec2 b) {
-  return same_bits(a.x, b.x) & same_bits(a.y, b.y);
-}
-
 // Islands are labelled only when at least one agent in this many presses at rest.
 constexpr std::size_t kPressersPerLabelling = 16;
 
@@ -52,15 +43,6 @@ void SleepingIslands::reset(std::size_t agents) {
   sleepers_.clear();
   known_ = false;
   recorded_ = false;
-}
-
-bool SleepingIslands::none_moved(std::span<const Vec2> positions) const {
-  // Unrecorded (a step not looked at), the last positions are an older step's.
-  if (!recorded_ || positions.size() != last_position_.size()) return false;
-  for (std::size_t a = 0; a < positions.size(); ++a) {
-    if (!same_bits(positions[a], last_position_[a])) return false;
-  }
-  return true;
 }
 
 bool SleepingIslands::inputs_repeat(std::span<const MotionCommand> commands,

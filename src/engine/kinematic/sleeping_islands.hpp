@@ -62,9 +62,21 @@ class SleepingIslands {
   std::span<const std::uint32_t> sleepers() const { return sleepers_; }
   // Each agent's position at the step's start (what a sleeper keeps).
   Vec2 start_of(std::uint32_t agent) const { return last_position_[agent]; }
-  // Whether every agent is still where the step started, bit for bit (false when this
-  // step's start was not recorded: a moving world's step not looked at).
-  bool none_moved(std::span<const Vec2> positions) const;
+  // Which agents left where the step started, bit for bit: none, only agents for which
+  // `paired` is false, or (also when this step's start was not recorded: a moving world's
+  // step not looked at) some agent for which it is true. Stops at the first of those.
+  enum class Moved { Nobody, OnlyUnpaired, Paired };
+  template <typename Paired>
+  Moved who_moved(std::span<const Vec2> positions, Paired&& paired) const {
+    if (!recorded_ || positions.size() != last_position_.size()) return Moved::Paired;
+    bool moved = false;
+    for (std::uint32_t a = 0; a < positions.size(); ++a) {
+      if (same_bits(positions[a], last_position_[a])) continue;
+      if (paired(a)) return Moved::Paired;
+      moved = true;
+    }
+    return moved ? Moved::OnlyUnpaired : Moved::Nobody;
+  }
   // Whether every agent's command and signal are, bit for bit, those of the last step
   // decided (a world that slept whole then sleeps whole again: decide() is not needed).
   bool inputs_repeat(std::span<const MotionCommand> commands,

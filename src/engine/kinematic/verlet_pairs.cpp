@@ -36,11 +36,16 @@ bool VerletPairs::covers(const ArenaGeometry& arena, std::size_t agents, double 
 
 void VerletPairs::find(const ArenaGeometry& arena, std::span<const Vec2> positions,
                        const SearchRadii& radii, double moved, StepThreads& threads,
-                       NeighbourLists& lists) {
+                       NeighbourLists& lists, bool pairs_moved) {
   const bool perception = radii.perception && radii.sensing > 0.0;
   const double reach = std::max(perception ? radii.sensing : 0.0, radii.pair_reach);
   moved_ += moved;
-  if (!covers(arena, positions.size(), reach)) build(arena, positions, reach, threads);
+  const bool rebuilt = !covers(arena, positions.size(), reach);
+  if (rebuilt) build(arena, positions, reach, threads);
+  const Measured wanted{radii.sensing, radii.pair_reach, perception};
+  kept_ = !rebuilt && !pairs_moved && wanted == measured_;
+  if (kept_) return;
+  measured_ = wanted;
   if (!perception) return measure<false>(arena, positions, radii);
   measure<true>(arena, positions, radii);
   lists.assign_from_pairs(positions.size(), {close_.data(), close_count_});
@@ -66,6 +71,8 @@ void VerletPairs::build(const ArenaGeometry& arena, std::span<const Vec2> positi
   if (listed_.capacity() < pairs.size()) listed_.reserve(2 * pairs.size());
   listed_.resize(pairs.size());
   for (const CandidatePair& p : pairs) listed_[first_of_agent_[p.i]++] = {p.i, p.j};
+  paired_.assign(agents_, 0);
+  for (const CandidatePair& p : pairs) paired_[p.i] = paired_[p.j] = 1;
   // Each step finds at most every listed pair, and writes one slot more.
   grow_to(candidates_, pairs.size() + 1);
   grow_to(close_, pairs.size() + 1);

@@ -29,9 +29,20 @@ class VerletPairs {
 
   // Finds the candidates among agents at `positions` (by id), every agent having moved at
   // most `moved` since the last call; with radii.perception, rebuilds `lists` from the
-  // perceived pairs too (left as they are otherwise).
+  // perceived pairs too (left as they are otherwise; always the same lists).
+  // `pairs_moved` false: no agent of a listed pair (paired()) moved since the last call. With
+  // the list and the radii kept, every listed pair then measures as it did, bit for bit, so
+  // the candidates and lists are left as they are (kept()).
   void find(const ArenaGeometry& arena, std::span<const Vec2> positions, const SearchRadii& radii,
-            double moved, StepThreads& threads, NeighbourLists& lists);
+            double moved, StepThreads& threads, NeighbourLists& lists, bool pairs_moved = true);
+
+  // Whether `agent` belongs to a listed pair (any agent, while no list fits the agent count).
+  bool paired(std::uint32_t agent) const {
+    return agent >= agents_ || agent >= paired_.size() || paired_[agent] != 0;
+  }
+  // Whether the last find measured nothing: its candidates and lists are those of the find
+  // before it.
+  bool kept() const { return kept_; }
 
   std::span<const CandidatePair> candidates() const {
     return {candidates_.data(), candidate_count_};
@@ -43,6 +54,14 @@ class VerletPairs {
   struct ListedPair {
     std::uint32_t i;  // i < j
     std::uint32_t j;
+  };
+
+  // The radii a measurement used (perception: whether it assigned the lists).
+  struct Measured {
+    double sensing = -1.0;
+    double pair_reach = -1.0;
+    bool perception = false;
+    bool operator==(const Measured&) const = default;
   };
 
   bool covers(const ArenaGeometry& arena, std::size_t agents, double reach) const;
@@ -63,6 +82,9 @@ class VerletPairs {
   std::uint64_t builds_ = 0;
   AgentArray<ListedPair> listed_;
   AgentArray<std::uint32_t> first_of_agent_;  // the counting sort's scratch
+  AgentArray<std::uint8_t> paired_;           // by agent: in some listed pair
+  Measured measured_;                         // by the last measurement (none yet: -1)
+  bool kept_ = false;
   // What a step found: the first candidate_count_ and close_count_ entries (the buffers
   // only grow, with a slot to spare for the branch-free writes).
   AgentArray<CandidatePair> candidates_;

@@ -36,11 +36,6 @@ MotionCommand searching(Vec2 velocity) {
   return {velocity, mask_of(kWait), mask_of(kWait), 0};
 }
 
-bool same_bits(Vec2 a, Vec2 b) {
-  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
-}
-
 struct Scene {
   std::unique_ptr<Engine> engine;
   std::vector<MotionCommand> commands;

@@ -55,8 +55,9 @@ class CheckedVerletPairs {
 
   // VerletPairs::find, then the checks; returns builds().
   std::uint64_t find(const ArenaGeometry& arena, std::span<const Vec2> positions,
-                     const SearchRadii& radii, double moved, const std::string& where) {
-    verlet_.find(arena, positions, radii, moved, threads_, lists_);
+                     const SearchRadii& radii, double moved, const std::string& where,
+                     bool pairs_moved = true) {
+    verlet_.find(arena, positions, radii, moved, threads_, lists_, pairs_moved);
     fresh_.find(arena, positions, radii, threads_);
     EXPECT_EQ(candidate_values(verlet_.candidates()), candidate_values(fresh_.candidates()))
         << where;
@@ -69,6 +70,7 @@ class CheckedVerletPairs {
 
   std::span<const CandidatePair> candidates() const { return verlet_.candidates(); }
   const NeighbourLists& lists() const { return lists_; }
+  const VerletPairs& verlet() const { return verlet_; }
 
  private:
   VerletPairs verlet_;
@@ -277,6 +279,43 @@ TEST(VerletPairs, PairsExactlyAtTheRadiiCountAsInAFreshSearch) {
   pairs.find(arena, positions, SearchRadii{4.0, 5.0, true}, 0.0, "pairs at the radii");
   EXPECT_EQ(pairs.candidates().size(), 3u);     // 0-1 at 5, 0-2 at 4, 1-2 at 3
   EXPECT_EQ(pairs.lists().pairs().size(), 2u);  // 0-2 and 1-2
+}
+
+// A packed trio (0, 1, 2) and two agents far from everybody (3, 4). While only those two
+// move, and the caller says so, the pairs and lists are kept, generation and all, and still
+// equal a fresh search's; a move of a paired agent, other radii or a rebuild measure again.
+TEST(VerletPairs, MovesOfUnpairedAgentsKeepThePairsAndLists) {
+  const ArenaGeometry arena(100.0, 100.0, Topology::Torus);
+  std::vector<Vec2> positions{{50.0, 50.0}, {52.0, 50.0}, {51.0, 51.7}, {10.0, 10.0}, {99.9, 80.0}};
+  CheckedVerletPairs pairs(kSkin);
+  pairs.find(arena, positions, kRadii, 0.0, "first call");
+  EXPECT_FALSE(pairs.verlet().kept());
+  for (const std::uint32_t agent : {0u, 1u, 2u}) EXPECT_TRUE(pairs.verlet().paired(agent));
+  for (const std::uint32_t agent : {3u, 4u}) EXPECT_FALSE(pairs.verlet().paired(agent));
+  const std::uint64_t generation = pairs.lists().generation();
+  // Agent 4 crosses the seam: still nobody near it.
+  for (int call = 0; call < 3; ++call) {
+    positions[3] += Vec2{0.1, 0.0};
+    positions[4] = arena.wrap(positions[4] + Vec2{0.1, 0.05});
+    pairs.find(arena, positions, kRadii, 0.1, "unpaired moves, call " + std::to_string(call),
+               false);
+    EXPECT_TRUE(pairs.verlet().kept());
+    EXPECT_EQ(pairs.lists().generation(), generation);
+  }
+  positions[0] += Vec2{-0.1, 0.0};
+  pairs.find(arena, positions, kRadii, 0.1, "a paired agent moved", true);
+  EXPECT_FALSE(pairs.verlet().kept());
+  EXPECT_NE(pairs.lists().generation(), generation);
+  SearchRadii wider = kRadii;
+  wider.pair_reach = 4.4;
+  pairs.find(arena, positions, wider, 0.0, "other radii", false);
+  EXPECT_FALSE(pairs.verlet().kept());
+  // Moves beyond the skin: the list is built again and measured, whatever the caller says.
+  const std::uint64_t builds = pairs.verlet().builds();
+  positions[3] += Vec2{0.5, 0.0};
+  pairs.find(arena, positions, wider, 0.5, "rebuilt", false);
+  EXPECT_EQ(pairs.verlet().builds(), builds + 1);
+  EXPECT_FALSE(pairs.verlet().kept());
 }
 
 // Skin 0 (header: searched at every call): the list covers nothing beyond the reach, so it
