@@ -71,11 +71,16 @@ void VerletPairs::build(const ArenaGeometry& arena, std::span<const Vec2> positi
   if (listed_.capacity() < pairs.size()) listed_.reserve(2 * pairs.size());
   listed_.resize(pairs.size());
   for (const CandidatePair& p : pairs) listed_[first_of_agent_[p.i]++] = {p.i, p.j};
-  paired_.assign(agents_, 0);
-  for (const CandidatePair& p : pairs) paired_[p.i] = paired_[p.j] = 1;
+  paired_known_ = false;
   // Each step finds at most every listed pair, and writes one slot more.
   grow_to(candidates_, pairs.size() + 1);
   grow_to(close_, pairs.size() + 1);
+}
+
+void VerletPairs::mark_paired() {
+  paired_.assign(agents_, 0);
+  for (const ListedPair& p : listed_) paired_[p.i] = paired_[p.j] = 1;
+  paired_known_ = true;
 }
 
 // Every listed pair, measured from its lower id: a candidate when within the pair reach, a

@@ -37,8 +37,11 @@ class VerletPairs {
             double moved, StepThreads& threads, NeighbourLists& lists, bool pairs_moved = true);
 
   // Whether `agent` belongs to a listed pair (any agent, while no list fits the agent count).
-  bool paired(std::uint32_t agent) const {
-    return agent >= agents_ || agent >= paired_.size() || paired_[agent] != 0;
+  // The flags are found on the first question after a build: a moving world never asks.
+  bool paired(std::uint32_t agent) {
+    if (agent >= agents_) return true;
+    if (!paired_known_) mark_paired();
+    return paired_[agent] != 0;
   }
   // Whether the last find measured nothing: its candidates and lists are those of the find
   // before it.
@@ -65,6 +68,7 @@ class VerletPairs {
   };
 
   bool covers(const ArenaGeometry& arena, std::size_t agents, double reach) const;
+  void mark_paired();
   void build(const ArenaGeometry& arena, std::span<const Vec2> positions, double reach,
              StepThreads& threads);
   template <bool kPerception>
@@ -83,6 +87,7 @@ class VerletPairs {
   AgentArray<ListedPair> listed_;
   AgentArray<std::uint32_t> first_of_agent_;  // the counting sort's scratch
   AgentArray<std::uint8_t> paired_;           // by agent: in some listed pair
+  bool paired_known_ = false;                 // paired_ holds the list's flags
   Measured measured_;                         // by the last measurement (none yet: -1)
   bool kept_ = false;
   // What a step found: the first candidate_count_ and close_count_ entries (the buffers

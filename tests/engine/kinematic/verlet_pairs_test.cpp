@@ -70,7 +70,7 @@ class CheckedVerletPairs {
 
   std::span<const CandidatePair> candidates() const { return verlet_.candidates(); }
   const NeighbourLists& lists() const { return lists_; }
-  const VerletPairs& verlet() const { return verlet_; }
+  VerletPairs& verlet() { return verlet_; }
 
  private:
   VerletPairs verlet_;
