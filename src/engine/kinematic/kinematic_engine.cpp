@@ -184,8 +184,9 @@ class KinematicEngine final : public Engine {
     if (pairs_kept_) return;
     // No agent moved farther than the fastest command for dt: the guarded motion only
     // shortens or projects commanded moves, and a wall's mirror image lies nearer.
+    // (A step resolved without guards forgot the islands: who moved is then unknown.)
     rebuild_neighbourhood(speed, true, fastest * limits_.dt,
-                          motion == nullptr || moved == SleepingIslands::Moved::Paired);
+                          moved == SleepingIslands::Moved::Paired);
   }
 
   // Of the agents commanded to move, those that stayed where they were: the sleepers, and
