@@ -240,6 +240,34 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
   }
 }
 
+// A meeting halts both sides, as two searchers' does: a member closing up stops for the rest
+// of the step where a searcher that may join comes within s, and stands in the step after,
+// in which the searcher joins (its force, from the states before, does not count the
+// newcomer yet). Otherwise a member creeping inward could leave the searcher just beyond s:
+// halted at s, the searcher would see nobody within s and approach again, step after step
+// (counting an encounter each time), or, having joined, find itself alone and search again.
+void AggregationController::close_up(const ControllerInput& input,
+                                     std::span<MotionCommand> commands) const {
+  constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
+                                    mask_of(static_cast<Signal>(AgentState::Approach));
+  const SignalMask closing_halt = rules_.join ? kSearching : 0;
+  for (std::size_t k = 0; k < mover_count_; ++k) {
+    const Mover& m = movers_[k];
+    if (joined_beside(m.agent, input)) continue;  // stands, as write_commands left it
+    MotionCommand& command = commands[m.agent];
+    command.velocity = spring_velocity(rules_.compaction, m.force, norm(m.force), rules_.speed);
+    if (!is_zero(command.velocity)) command.halt_on = closing_halt;
+  }
+}
+
+bool AggregationController::joined_beside(std::uint32_t agent, const ControllerInput& input) const {
+  for (const Neighbour& nb : input.neighbours.of(agent)) {
+    if (nb.distance > rules_.detection_radius) return false;
+    if (settled_[nb.id] == 1) return true;
+  }
+  return false;
+}
+
 // Away from the agents it perceives. Deep in a packed aggregate (compaction) the agent is
 // enclosed: no direction is returned, and the agent keeps its heading, which at the start of
 // the episode is drawn uniformly at random (docs/controllers.md). Nothing here asks where the agent
@@ -397,12 +425,7 @@ void AggregationController::decide(const ControllerInput& input, SwarmState& swa
   pair_searchers(input, swarm, events);
   steer_searchers(input, swarm, rng);
   write_commands(swarm, commands);
-  // Compaction: the waiting agents whose spring force may move them (update_waiting).
-  for (std::size_t k = 0; k < mover_count_; ++k) {
-    const Mover& m = movers_[k];
-    commands[m.agent].velocity =
-        spring_velocity(rules_.compaction, m.force, norm(m.force), rules_.speed);
-  }
+  close_up(input, commands);
   remember_if_steady(input, swarm, commands);
 }
 

@@ -90,6 +90,10 @@ class AggregationController final : public Controller {
 
   bool searching(std::uint32_t agent) const;
   bool may_join(std::uint32_t agent) const;  // may a searcher stop for this agent?
+  // Compaction: the movers' velocities (update_waiting found their forces), after the joins.
+  void close_up(const ControllerInput& input, std::span<MotionCommand> commands) const;
+  // Whether a searcher joined in this decision within s of `agent`.
+  bool joined_beside(std::uint32_t agent, const ControllerInput& input) const;
 
   void update_leaving(std::uint32_t agent, const ControllerInput& input, SwarmState& swarm,
                       const CounterRng& rng);

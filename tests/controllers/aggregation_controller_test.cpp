@@ -289,8 +289,10 @@ TEST(Compaction, WaitingMembersPullEachOtherToTheSpacingAtMostAtV) {
   // b perceives only a (c is 4.30 away): 1.5, capped at v.
   EXPECT_NEAR(norm(f.commands[b].velocity), 1.0, 1e-12);
   EXPECT_EQ(f.swarm.state[a], AgentState::Wait);
-  EXPECT_EQ(f.commands[a].halt_on, 0u);
+  // A member closing up halts where a searcher that may join comes within s (both sides of
+  // a meeting halt); one standing still has nothing to halt.
   constexpr SignalMask kApproachMask = mask_of(static_cast<Signal>(AgentState::Approach));
+  EXPECT_EQ(f.commands[a].halt_on, kGoMask | kApproachMask);
   EXPECT_EQ(f.commands[a].blocked_by, kWaitMask | kLeaveMask | kGoMask | kApproachMask);
 }
 
@@ -330,10 +332,28 @@ TEST(Compaction, OnlyWaitingMembersPullAndTooCloseOnesPush) {
   const auto a = f.add(10, 10, AgentState::Wait);
   f.add(12, 10, AgentState::Wait);   // 0.5 closer than the spacing: pushes a to -x
   f.add(10, 13, AgentState::Leave);  // not waiting: no force
-  f.add(10, 7, AgentState::Go);      // searching: joins, but pulls only from the next step
+  f.add(10, 5, AgentState::Go);      // searching, beyond s: no force
   f.decide();
   EXPECT_NEAR(f.commands[a].velocity.x, -0.5, 1e-12);
   EXPECT_NEAR(f.commands[a].velocity.y, 0.0, 1e-12);
+}
+
+// A searcher joining within s of a member that would close up: the member stands for the
+// step, so that the newcomer, standing too, is still within s at the step's end (its force,
+// from the states before, does not count the newcomer yet). A member with no newcomer within
+// s closes up as usual.
+TEST(Compaction, AMemberStandsWhileASearcherJoinsBesideIt) {
+  ControllerFixture f(bayindir(true, false, 0.0));
+  f.spec.controller.compaction.spacing = 2.5;
+  const auto a = f.add(10, 10, AgentState::Wait);
+  f.add(12, 10, AgentState::Wait);  // pushes a to -x
+  const auto newcomer = f.add(10, 7, AgentState::Go);
+  const auto c = f.add(40, 10, AgentState::Wait);
+  f.add(42, 10, AgentState::Wait);  // pushes c to -x; nobody joins beside c
+  f.decide();
+  EXPECT_EQ(f.swarm.state[newcomer], AgentState::Wait);
+  EXPECT_EQ(f.commands[a].velocity, (Vec2{0.0, 0.0}));
+  EXPECT_NEAR(f.commands[c].velocity.x, -0.5, 1e-12);
 }
 
 TEST(Compaction, UnderJoinFalseOnlyThePartnerPulls) {
