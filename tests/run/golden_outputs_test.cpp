@@ -76,10 +76,11 @@ std::vector<GoldenWorld> golden_worlds() {
        0xa83b7e88b6dac23full},
       // Compaction on (the default): exact speed work on the guarded motion, the neighbour
       // search or the controller must leave packed aggregates bit for bit as they were.
-      {"worlds/examples/compact.yaml", {"run.duration=200"}, 0xc1752c86650e58f0ull},
+      // Recorded again when a meeting came to stop both sides (docs/controllers.md).
+      {"worlds/examples/compact.yaml", {"run.duration=200"}, 0x49ddc4c5667b7784ull},
       {"worlds/examples/compact.yaml",
        {"run.duration=100", "engine.type=box2d"},
-       0x609ab5b9c9bcf2daull},
+       0x6cf8ce91b4ca695eull},
       // Between walls bodies meet the walls as contacts, a path no paper world takes.
       {"worlds/examples/compact.yaml",
        {"run.duration=200", "arena.topology=walls", kStillWaiting},
@@ -131,27 +132,30 @@ std::uint64_t outputs_and_leaves_hash(const RunResult& result) {
 // p0 is raised so that leavers wake aggregates within the short runs. The Soysal hashes were
 // recorded again when an escape came to be judged within the approach radius (the distance at
 // which Soysal's controller steers back, docs/models-returns.md): their leave tallies moved,
-// their time series and partitions did not.
+// their time series and partitions did not. All but the creation-dissipation hash were
+// recorded again when a meeting came to stop both sides (docs/controllers.md): encounters
+// moved (Soysal's stalking searchers gone), NOA and growths did not (Welch, KS over a full
+// reproduce).
 std::vector<GoldenWorld> golden_compacted_paper_worlds() {
   return {
       {"worlds/paper/soysal-5-constant.yaml",
        {"run.duration=4000", "controller.p0=0.001"},
-       0x089c30f1e93e8882ull},
+       0x9770ebcd0a168710ull},
       {"worlds/paper/soysal-10-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0005"},
-       0xff94ca00cf0dda5aull},
+       0x5599b77e9f0a6623ull},
       {"worlds/paper/soysal-20-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0002"},
-       0x36e46d28387e4c8aull},
+       0xb040c5a1ab5eaae3ull},
       {"worlds/paper/soysal-5-inverse.yaml",
        {"run.duration=3000", "controller.p0=0.002"},
-       0xfa58bc8d9fcc3c6bull},
-      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0xb7bf9530b4a4525cull},
-      {"worlds/paper/creation-growing-80.yaml", {"run.duration=500"}, 0x09c18afa3d999be9ull},
+       0x09b8d815191e9e3eull},
+      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0x1082857868c362c4ull},
+      {"worlds/paper/creation-growing-80.yaml", {"run.duration=500"}, 0x05b3170e6dd5b333ull},
       {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0xd995811c9fe6c47bull},
       {"worlds/paper/full-0.0025.yaml",
        {"run.duration=300", "arena.topology=walls"},
-       0x0fba507bfb32f443ull},
+       0xe93079d8c845e081ull},
   };
 }
 
