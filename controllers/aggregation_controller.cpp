@@ -9,6 +9,17 @@
 #include "core/agents_in_state.hpp"
 
 namespace swarmagg {
+namespace {
+
+// The signals of searching agents (GO and APPROACH).
+constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
+                                  mask_of(static_cast<Signal>(AgentState::Approach));
+// settled_ of a searcher that stopped in this decision: it joined waiting agents or a pair
+// just formed (a growth), or it formed a pair with another searcher.
+constexpr std::uint8_t kJoined = 1;
+constexpr std::uint8_t kPaired = 2;
+
+}  // namespace
 
 bool AggregationController::searching(std::uint32_t agent) const {
   return previous_[agent] == AgentState::Go || previous_[agent] == AgentState::Approach;
@@ -172,7 +183,7 @@ void AggregationController::join_waiting(const ControllerInput& input, SwarmStat
       if (nb.distance > radius) break;
       if (join && previous[nb.id] == AgentState::Wait) {
         swarm.state[i] = AgentState::Wait;
-        settled_[i] = 1;
+        settled_[i] = kJoined;
         ++events.growths;
         count_growth_by_size(input.growths_by_size, input.aggregates.size_of_agent[nb.id]);
         break;
@@ -191,7 +202,7 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
   });
   for (const SearchPair& p : pairs_) {
     if (settled_[p.a] || settled_[p.b]) continue;
-    settled_[p.a] = settled_[p.b] = 2;  // 2: stopped by pairing (1: joined a waiting agent)
+    settled_[p.a] = settled_[p.b] = kPaired;
     swarm.state[p.a] = swarm.state[p.b] = AgentState::Wait;
     swarm.partner[p.a] = static_cast<std::int32_t>(p.b);
     swarm.partner[p.b] = static_cast<std::int32_t>(p.a);
@@ -202,7 +213,7 @@ void AggregationController::pair_searchers(const ControllerInput& input, SwarmSt
   for (const SearchPair& p : pairs_) {
     for (const std::uint32_t agent : {p.a, p.b}) {
       if (settled_[agent]) continue;
-      settled_[agent] = 1;
+      settled_[agent] = kJoined;
       swarm.state[agent] = AgentState::Wait;
       ++events.growths;
       count_growth_by_size(input.growths_by_size, 2);
@@ -248,8 +259,6 @@ void AggregationController::steer_searchers(const ControllerInput& input, SwarmS
 // (counting an encounter each time), or, having joined, find itself alone and search again.
 void AggregationController::close_up(const ControllerInput& input,
                                      std::span<MotionCommand> commands) const {
-  constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
-                                    mask_of(static_cast<Signal>(AgentState::Approach));
   const SignalMask closing_halt = rules_.join ? kSearching : 0;
   for (std::size_t k = 0; k < mover_count_; ++k) {
     const Mover& m = movers_[k];
@@ -263,7 +272,7 @@ void AggregationController::close_up(const ControllerInput& input,
 bool AggregationController::joined_beside(std::uint32_t agent, const ControllerInput& input) const {
   for (const Neighbour& nb : input.neighbours.of(agent)) {
     if (nb.distance > rules_.detection_radius) return false;
-    if (settled_[nb.id] == 1) return true;
+    if (settled_[nb.id] == kJoined) return true;
   }
   return false;
 }
@@ -282,8 +291,6 @@ std::optional<Vec2> AggregationController::escape_direction(std::uint32_t agent,
 // indices are unrelated, so a switch mispredicts about every other agent.
 void AggregationController::write_commands(const SwarmState& swarm,
                                            std::span<MotionCommand> commands) const {
-  constexpr SignalMask kSearching = mask_of(static_cast<Signal>(AgentState::Go)) |
-                                    mask_of(static_cast<Signal>(AgentState::Approach));
   constexpr SignalMask kWaiting = mask_of(static_cast<Signal>(AgentState::Wait));
   struct StateCommand {
     std::uint64_t moving;  // all ones when the state moves along its heading

@@ -125,7 +125,7 @@ class AggregationController final : public Controller {
   }
   SteadyDecision steady_;
   std::vector<AgentState> previous_;
-  std::vector<std::uint8_t> settled_;  // searchers that stopped during this decision
+  std::vector<std::uint8_t> settled_;  // searchers that stopped in this decision (kJoined, kPaired)
   std::vector<SearchPair> pairs_;
   std::vector<std::int32_t> leavers_left_;  // per aggregate: members not yet counted leaving
   // Waiting agents that go on waiting under a net spring force that may move them
