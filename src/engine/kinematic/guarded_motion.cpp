@@ -378,10 +378,13 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
   for (std::size_t k = 0; k < touched; ++k) normals.push_back(contacts_[k].second);
 }
 
-// The agent touches a body solid to it or a wall and presses into it. Sliding, it goes on
-// with the part of its commanded velocity that everything it touches now lets through; when
-// that is nothing, or what it already does (the contact presses into it, not it into the
-// contact), or it slid too often this step, it halts.
+// The agent touches a body solid to it or a wall, and one of them presses into the other.
+// Sliding, it goes on with the part of its commanded velocity that everything it touches now
+// lets through. When that is what it already does, the contact pressed into it, not it into
+// the contact: it goes on unchanged (the other body answers for its own press; halting here
+// let a jammed neighbour, pressing without moving, hold a body moving away for good). When
+// that is nothing, slower than limits_.min_slide_speed, or it slid too often this step, it
+// halts.
 //
 // An agent commanded to stand is never bent (it cannot halt, and free_motion of a zero
 // velocity is zero, which is what it does), so nothing here changes it: a waiting agent
@@ -402,10 +405,12 @@ void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
     const Vec2 now = velocity_after(agent);
     // Only the agent's own leg changes from here on: the neighbours stay as gathered.
     if (slide.x == now.x && slide.y == now.y) {
+      // Goes on as it was.
+    } else if (is_zero(slide) || norm2(slide) < limits_.min_slide_speed * limits_.min_slide_speed) {
       halt(agent, time, true);
     } else {
       change_leg(agent, time, slide, true);
-      if (!is_zero(slide)) ++slides_[agent];
+      ++slides_[agent];
     }
   }
   if (bent(agent)) walls_touched_[agent] |= walls;

@@ -5,10 +5,12 @@
 // halts at the instant an event its command halts on fires (halt_on). At a contact with a
 // body solid to it (blocked_by) or a wall it slides (ContactResponse::Slide): it goes on
 // with the part of its commanded velocity that all the bodies and walls it touches let
-// through (free_motion), at most kMaxSlides times a step, then halts; or it halts there
-// (ContactResponse::Stop). After each change its later events are recomputed from its new
-// trajectory. Every first contact within s is counted as an encounter. When no command
-// guards its move, nothing can halt and the encounters are simply counted.
+// through (free_motion), at most kMaxSlides times a step and no slower than
+// MotionLimits::min_slide_speed, then halts; or it halts there (ContactResponse::Stop). A
+// contact that presses into a body moving away from it changes nothing for that body. After each
+// change its later events are recomputed from its new trajectory. Every first contact within s is
+// counted as an encounter. When no command guards its move, nothing can halt and the encounters are
+// simply counted.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,6 +46,10 @@ struct MotionLimits {
   // others (point particles passing over everything) are reflected by the engine.
   bool walls = false;
   WallBounds bounds;
+  // A slide slower than this halts instead. A body pulled nearly head-on into a contact would
+  // otherwise slide ever slower towards where the pull lies along the normal, never quite
+  // coming to rest (a closing-up member does so for thousands of steps).
+  double min_slide_speed = 0.0;
 };
 
 // Bits of wall_contacts(): the walls an agent touched during the step.

@@ -26,6 +26,9 @@ bool zero_velocity(Vec2 v) {
   return (v.x == 0.0) & (v.y == 0.0);
 }
 
+// Slides slower than this fraction of the nominal speed halt (MotionLimits::min_slide_speed):
+// as Box2D lets bodies slower than its linear sleep tolerance (0.01) come to rest.
+constexpr double kMinSlideFraction = 0.01;
 // Agents per move task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerMoveTask = 65536;
 // The Verlet list's skin, in steps of two agents at the nominal speed closing in on each
@@ -61,14 +64,15 @@ class KinematicEngine final : public Engine {
   KinematicEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
       : arena_(spec.arena.geometry()),
         // Halting a hair inside s guarantees the halted pair perceives each other afterwards.
-        limits_{spec.robots.detection_radius * (1.0 - 1e-9),
-                2.0 * spec.robots.radius,
-                spec.engine.dt,
-                spec.engine.contact,
-                !arena_.torus(),
-                WallBounds{
-                    {spec.robots.radius, spec.robots.radius},
-                    {arena_.width() - spec.robots.radius, arena_.height() - spec.robots.radius}}},
+        limits_{
+            spec.robots.detection_radius * (1.0 - 1e-9),
+            2.0 * spec.robots.radius,
+            spec.engine.dt,
+            spec.engine.contact,
+            !arena_.torus(),
+            WallBounds{{spec.robots.radius, spec.robots.radius},
+                       {arena_.width() - spec.robots.radius, arena_.height() - spec.robots.radius}},
+            kMinSlideFraction * spec.robots.speed},
         body_radius_(spec.robots.radius),
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
