@@ -147,8 +147,9 @@ void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const 
   if (agent_count == agent_count_of_pairs_ && pairs.size() == pairs_.size() &&
       std::memcmp(pairs.data(), pairs_.data(), pairs.size_bytes()) == 0)
     return;
-  agent_count_of_pairs_ = agent_count;
   ++generation_;
+  if (agent_count == agent_count_of_pairs_ && remeasure(pairs)) return;
+  agent_count_of_pairs_ = agent_count;
   begin_.assign(agent_count + 1, 0);
   pairs_.resize(pairs.size());
   crowded_.resize(agent_count + 1);  // every agent once, plus the slot written and not counted
@@ -159,6 +160,45 @@ void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const 
   items_.resize(total);
   place_and_sort(pairs, begin_.data(), items_.data(),
                  std::span<const AgentId>(crowded_.data(), crowded_count));
+}
+
+// The same pairs in the same order, some of them measured anew (agents moved, none came into
+// or left another's sensing radius: a step in which a few agents move near packed
+// aggregates): each changed pair's two items are overwritten where they lie, and the lists
+// holding them sorted again. Lists are ordered totally (distance, then id), so they come out
+// as a full rebuild would make them. False, with nothing changed, when the pairs differ.
+bool NeighbourLists::remeasure(std::span<const ClosePair> pairs) {
+  const std::size_t n = pairs.size();
+  if (n != pairs_.size()) return false;
+  for (std::size_t k = 0; k < n; ++k) {
+    if ((pairs[k].i != pairs_[k].i) | (pairs[k].j != pairs_[k].j)) return false;
+  }
+  // The agents whose lists changed, each once (marked in resorted_, all clear between calls).
+  resorted_.resize(agent_count_of_pairs_, 0);
+  crowded_.resize(agent_count_of_pairs_ + 1);
+  std::size_t changed = 0;
+  auto overwrite = [&](AgentId agent, const Neighbour& item) {
+    for (Neighbour& nb :
+         std::span<Neighbour>(items_.data() + begin_[agent], items_.data() + begin_[agent + 1])) {
+      if (nb.id == item.id) nb = item;
+    }
+    crowded_[changed] = agent;
+    changed += resorted_[agent] == 0;
+    resorted_[agent] = 1;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const ClosePair& p = pairs[k];
+    if (std::memcmp(&p, &pairs_[k], sizeof(ClosePair)) == 0) continue;
+    pairs_[k] = p;
+    overwrite(p.i, {p.j, p.offset, p.distance});
+    overwrite(p.j, {p.i, -p.offset, p.distance});
+  }
+  for (std::size_t k = 0; k < changed; ++k) {
+    const AgentId a = crowded_[k];
+    resorted_[a] = 0;
+    sort_by_distance(items_.data() + begin_[a], items_.data() + begin_[a + 1]);
+  }
+  return true;
 }
 
 }  // namespace swarmagg

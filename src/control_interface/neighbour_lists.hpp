@@ -62,7 +62,11 @@ class NeighbourLists {
   AgentArray<std::uint32_t> begin_;
   AgentArray<Neighbour> items_;
   AgentArray<ClosePair> pairs_;
-  AgentArray<AgentId> crowded_;  // agents with two or more neighbours (to sort), and room
+  AgentArray<AgentId> crowded_;        // agents with two or more neighbours (to sort), and room
+  AgentArray<std::uint8_t> resorted_;  // remeasure's marks, all clear between calls
+
+  // assign_from_pairs for the same pairs with some measured anew (true), in place.
+  bool remeasure(std::span<const ClosePair> pairs);
 };
 
 }  // namespace swarmagg

@@ -29,7 +29,8 @@ enum class Draw : std::uint32_t {
 // done once, for the controllers that draw for every agent of a step.
 class StepRng {
  public:
-  constexpr std::uint64_t bits(std::uint64_t agent, Draw purpose, std::uint64_t extra = 0) const {
+  [[gnu::always_inline]] constexpr std::uint64_t bits(std::uint64_t agent, Draw purpose,
+                                                      std::uint64_t extra = 0) const {
     const std::uint64_t h = mix64(step_hash_ ^ (agent * 0xD1B54A32D192ED03ull));
     return mix64(h ^ (static_cast<std::uint64_t>(purpose) << 32) ^ extra);
   }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace swarmagg {
@@ -86,6 +87,49 @@ TEST(NeighbourLists, TheSamePairsKeepTheGenerationAndOthersChangeIt) {
   EXPECT_NE(lists.generation(), third);
   lists.assign_from_pairs(4, moved);  // after a reset, the same pairs are lists again
   EXPECT_EQ(lists.of(1).size(), 2u);
+}
+
+// The same pairs measured anew (a few agents moved, no pair came or went) are written into the
+// lists in place; the lists must be exactly those a rebuild from the new pairs makes, however
+// far the new distances reorder them (ties included), and the generation must change.
+TEST(NeighbourLists, PairsMeasuredAnewGiveTheListsARebuildGives) {
+  std::mt19937_64 gen(42);
+  std::uniform_int_distribution<int> few(0, 3);
+  constexpr AgentId kAgents = 12;
+  std::vector<ClosePair> pairs;
+  for (AgentId i = 0; i < kAgents; ++i) {
+    for (AgentId j = i + 1; j < kAgents; ++j) {
+      if ((i * 7 + j * 3) % 4 != 0) pairs.push_back({i, j, {double(j - i), 0.5}, double(j - i)});
+    }
+  }
+  NeighbourLists lists;
+  lists.assign_from_pairs(kAgents, pairs);
+  for (int round = 0; round < 200; ++round) {
+    const AgentId moved = static_cast<AgentId>(gen() % kAgents);
+    for (ClosePair& p : pairs) {
+      if (p.i != moved && p.j != moved) continue;
+      p.distance = 1.0 + few(gen);  // small integers: many ties, broken by id
+      p.offset = {p.distance, static_cast<double>(round)};
+    }
+    const std::uint64_t before = lists.generation();
+    lists.assign_from_pairs(kAgents, pairs);
+    EXPECT_NE(lists.generation(), before);
+    NeighbourLists rebuilt;
+    rebuilt.assign_from_pairs(kAgents, pairs);
+    for (AgentId a = 0; a < kAgents; ++a) {
+      const auto got = lists.of(a), want = rebuilt.of(a);
+      ASSERT_EQ(got.size(), want.size());
+      for (std::size_t k = 0; k < got.size(); ++k) {
+        ASSERT_EQ(got[k].id, want[k].id) << "round " << round << " agent " << a;
+        ASSERT_EQ(got[k].distance, want[k].distance);
+        ASSERT_EQ(got[k].offset, want[k].offset);
+      }
+    }
+    ASSERT_EQ(lists.pairs().size(), pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      ASSERT_EQ(lists.pairs()[k].distance, pairs[k].distance);
+    }
+  }
 }
 
 }  // namespace
