@@ -153,6 +153,7 @@ void NeighbourLists::assign_from_pairs(std::size_t agent_count, std::span<const 
   begin_.assign(agent_count + 1, 0);
   pairs_.resize(pairs.size());
   crowded_.resize(agent_count + 1);  // every agent once, plus the slot written and not counted
+  resorted_.resize(agent_count, 0);  // remeasure's, sized here so that it never allocates later
   const std::size_t crowded_count =
       count_pair_ends(pairs, begin_.data(), pairs_.data(), crowded_.data());
   const std::uint32_t total = inclusive_prefix_sum(begin_.data(), agent_count);
