@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -89,12 +89,15 @@ class DocumentReader {
       if (!entry.first.IsScalar()) throw InputError(at + ": a key must be a plain name");
       const std::string path =
           prefix.empty() ? entry.first.Scalar() : prefix + "." + entry.first.Scalar();
-      if (!seen_.insert(path).second) throw InputError(at + ": key '" + path + "' given twice");
+      if (!seen_.emplace(path, at).second) {
+        throw InputError(at + ": key '" + path + "' given twice");
+      }
       read_entry(path, entry.second, at);
     }
   }
 
-  const std::set<std::string>& seen() const { return seen_; }
+  // Every key read, with where it stood.
+  const std::map<std::string, std::string>& seen() const { return seen_; }
 
  private:
   void read_entry(const std::string& path, const YAML::Node& value, const std::string& at) {
@@ -113,7 +116,7 @@ class DocumentReader {
 
   WorldSpec& spec_;
   std::string source_;
-  std::set<std::string> seen_;
+  std::map<std::string, std::string> seen_;
 };
 
 std::string syntax_error(const std::string& source, const YAML::Mark& mark,
@@ -252,6 +255,44 @@ void check_placement(const WorldSpec& spec, bool count_given) {
   check_no_overlap(spec);
 }
 
+// Whether controller type `entry` reads `path`: as one of its own keys (several controllers
+// may register the same path) or as a shared controller.* key.
+bool reads(const ControllerCatalogEntry& entry, const std::string& path) {
+  const auto& own = entry.keys;
+  const auto& shared = entry.shared_keys;
+  return std::any_of(own.begin(), own.end(), [&](const WorldKey& k) { return k.path == path; }) ||
+         std::find(shared.begin(), shared.end(), path) != shared.end();
+}
+
+// " (read by controller type 'a', 'b')", or nothing when no type reads `path`.
+std::string readers_of(const std::string& path) {
+  std::string types;
+  for (const ControllerCatalogEntry& entry : controller_catalog()) {
+    if (reads(entry, path)) types += (types.empty() ? "'" : ", '") + entry.type + "'";
+  }
+  return types.empty() ? "" : " (read by controller type " + types + ")";
+}
+
+// A controller key the world file gives that its controller never reads would be dropped in
+// silence (the resolved world writes only what acts on the run): a Soysal key left in a file
+// switched to Bayindir, say. Keys set by overrides (--set, sweep points) are exempt, so that
+// one override can apply to worlds of several controllers (reproduce --set); so is a file
+// whose controller.type an override sets, as a sweep over controller types does.
+void check_controller_reads(const WorldSpec& spec, const std::map<std::string, std::string>& seen,
+                            const std::vector<WorldOverride>& overrides) {
+  for (const WorldOverride& override : overrides) {
+    if (override.key == "controller.type") return;
+  }
+  const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
+  for (const auto& [path, at] : seen) {
+    if (!path.starts_with("controller.") || path == "controller.type") continue;
+    if (find_world_key(path) == nullptr || reads(controller, path)) continue;
+    throw InputError(at + ": " + path + ": controller type '" + spec.controller.type +
+                     "' does not read this key" + readers_of(path) +
+                     "; remove it or change controller.type");
+  }
+}
+
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
                         const std::vector<WorldOverride>& overrides) {
   if (!document.IsDefined() || document.IsNull()) {
@@ -277,6 +318,7 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
   }
   check_placement(spec, count_given);
   check_world(spec);
+  check_controller_reads(spec, reader.seen(), overrides);
   return spec;
 }
 

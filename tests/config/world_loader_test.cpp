@@ -155,6 +155,26 @@ TEST(WorldLoaderErrors, UnknownKeysSuggestTheClosestKnownOne) {
   EXPECT_THAT(error_of("{}", {"robot.count=3"}), HasSubstr("did you mean 'robots.count'"));
 }
 
+// A controller key the file gives that its controller never reads would be dropped without a
+// word (a Soysal key left in a file switched to Bayindir): refused, naming who reads it. The
+// same key from --set applies to worlds of every controller (reproduce --set) and passes.
+TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
+  EXPECT_THAT(error_of("controller:\n  type: bayindir\n  approach_radius: 12\n"),
+              AllOf(HasSubstr("w.yaml:3:3"), HasSubstr("controller.approach_radius"),
+                    HasSubstr("controller type 'bayindir' does not read this key"),
+                    HasSubstr("read by controller type 'soysal'")));
+  EXPECT_THAT(error_of("controller: {type: soysal, approach_radius: 12, p_leave: 0.1}\n"),
+              HasSubstr("controller.p_leave: controller type 'soysal' does not read this key"));
+  EXPECT_EQ(error_of("controller: {type: soysal, approach_radius: 12}\n"), "no error");
+  EXPECT_EQ(error_of("controller: {type: bayindir}\n", {"controller.approach_radius=12"}),
+            "no error");
+  // A file whose controller.type an override sets (a sweep over controller types) may hold
+  // keys for each of them.
+  EXPECT_EQ(
+      error_of("controller: {type: bayindir, approach_radius: 12}\n", {"controller.type=soysal"}),
+      "no error");
+}
+
 TEST(WorldLoaderErrors, WrongTypesSayWhatWasExpected) {
   EXPECT_THAT(error_of("robots:\n  count: many\n"),
               AllOf(HasSubstr("w.yaml:2:10"), HasSubstr("robots.count: expected a whole number"),
