@@ -26,13 +26,16 @@ done
 
 cd "$tmp"
 export PATH=$tmp/prefix/bin:$PATH
-swarmagg --version | grep -q . || fail "swarmagg --version printed nothing"
+# Outputs are captured before they are searched: `grep -q` stops reading at the first match,
+# and under pipefail the writer's SIGPIPE would fail the check at random.
+version=$(swarmagg --version)
+[[ -n $version ]] || fail "swarmagg --version printed nothing"
 share=$tmp/prefix/share/swarmagg
 swarmagg run "$share/worlds/examples/demo.yaml" --replicates 1 --set run.duration=10 --no-model \
   --quiet --out run
 [[ -f run/world.resolved.yaml ]] || fail "the installed binary wrote no run"
-swarmagg sweep "$share/examples/sweeps/p-leave-vs-count.yaml" --list | grep -q pending ||
-  fail "the installed sweep does not load"
+listed=$(swarmagg sweep "$share/examples/sweeps/p-leave-vs-count.yaml" --list)
+[[ $listed == *pending* ]] || fail "the installed sweep does not load"
 if [[ -n $python ]]; then
   package=$tmp/prefix/$python_dir/swarmagg
   [[ -f $package/__init__.py ]] || fail "the Python package is not in $python_dir"
