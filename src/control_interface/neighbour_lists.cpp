@@ -174,9 +174,8 @@ bool NeighbourLists::remeasure(std::span<const ClosePair> pairs) {
   for (std::size_t k = 0; k < n; ++k) {
     if ((pairs[k].i != pairs_[k].i) | (pairs[k].j != pairs_[k].j)) return false;
   }
-  // The agents whose lists changed, each once (marked in resorted_, all clear between calls).
-  resorted_.resize(agent_count_of_pairs_, 0);
-  crowded_.resize(agent_count_of_pairs_ + 1);
+  // The agents whose lists changed, each once in crowded_ (marked in resorted_, all clear
+  // between calls; both sized by the rebuild that made these lists).
   std::size_t changed = 0;
   auto overwrite = [&](AgentId agent, const Neighbour& item) {
     for (Neighbour& nb :

@@ -403,12 +403,13 @@ void GuardedMotion::respond_to_contact(std::uint32_t agent, double time) {
     touched_bodies(agent, time, normals_);
     const Vec2 slide = free_motion(commanded, normals_);
     const Vec2 now = velocity_after(agent);
-    // Only the agent's own leg changes from here on: the neighbours stay as gathered.
-    if (slide.x == now.x && slide.y == now.y) {
-      // Goes on as it was.
-    } else if (is_zero(slide) || norm2(slide) < limits_.min_slide_speed * limits_.min_slide_speed) {
+    // Only the agent's own leg changes from here on: the neighbours stay as gathered. When
+    // the slide is what it already does, it goes on as it was.
+    const bool changes = slide.x != now.x || slide.y != now.y;
+    const double slowest = limits_.min_slide_speed;
+    if (changes && (is_zero(slide) || norm2(slide) < slowest * slowest)) {
       halt(agent, time, true);
-    } else {
+    } else if (changes) {
       change_leg(agent, time, slide, true);
       ++slides_[agent];
     }
