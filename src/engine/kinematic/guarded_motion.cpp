@@ -47,14 +47,16 @@ Vec2 offset_now(Vec2 start_offset, bool agent_is_j, Vec2 travelled, Vec2 other_t
 
 // Earliest event first; simultaneous events by their pair's agent ids (i, then j; a wall
 // event as the pair (agent, no one)), then by kind, so the order never depends on how the
-// heap or the pair list is arranged. Event times are never negative (nor -0.0): they start at
-// 0 and add non-negative spans. The bits of such a double order like its value, so time and
-// ids compare as one 128-bit number, without branches the predictor would have to guess.
+// heap or the pair list is arranged. Ordered by island, an island's events all come before
+// the next island's. Event times are never negative (nor -0.0): they start at 0 and add
+// non-negative spans. The bits of such a double order like its value, so time and ids compare
+// as one 128-bit number, without branches the predictor would have to guess.
 bool GuardedMotion::earlier(const Event& a, const Event& b) {
   using Key = unsigned __int128;
   const Key key_a = Key{std::bit_cast<std::uint64_t>(a.time)} << 64 | a.ids;
   const Key key_b = Key{std::bit_cast<std::uint64_t>(b.time)} << 64 | b.ids;
-  return (key_a < key_b) | ((key_a == key_b) & (a.kind < b.kind));
+  const bool in_time = (key_a < key_b) | ((key_a == key_b) & (a.kind < b.kind));
+  return (a.island < b.island) | ((a.island == b.island) & in_time);
 }
 
 void GuardedMotion::push_event(const Event& event) {
@@ -77,16 +79,49 @@ void GuardedMotion::sift_up(std::size_t hole, const Event& event) {
   heap_[hole] = event;
 }
 
+// Ordered by island, a counting sort by island (which keeps the order of the events within
+// one) comes first, and each island's events are sorted in turn.
+void GuardedMotion::sort_start_events() {
+  const std::size_t count = start_events_.size();
+  sorted_events_.resize(count);
+  if (!by_island_) {
+    sort_events_into(start_events_.data(), start_events_.data() + count, sorted_events_.data());
+    start_events_.swap(sorted_events_);
+    return;
+  }
+  island_begin_.assign(islands_ + 1, 0);
+  for (const Event& event : start_events_) ++island_begin_[event.island + 1];
+  for (std::uint32_t k = 0; k < islands_; ++k) island_begin_[k + 1] += island_begin_[k];
+  for (const Event& event : start_events_) sorted_events_[island_begin_[event.island]++] = event;
+  // island_begin_[k] is now where island k ends.
+  std::size_t begin = 0;
+  for (std::uint32_t k = 0; k < islands_; ++k) {
+    const std::size_t end = island_begin_[k];
+    sort_events_into(sorted_events_.data() + begin, sorted_events_.data() + end,
+                     start_events_.data() + begin);
+    begin = end;
+  }
+}
+
 // A counting sort by time slot (a slot per event on average: the slot is monotone in time, so
 // events in earlier slots come first), then each slot sorted by the full order: a few
 // passes over the events and small sorts, where one comparison sort of all would guess
 // wrong at about every other comparison. All the events at time 0 share the first slot,
 // which a comparison sort takes when it is large.
-void GuardedMotion::sort_start_events() {
-  const std::size_t count = start_events_.size();
+void GuardedMotion::sort_events_into(const Event* first, const Event* last, Event* out) {
+  const auto count = static_cast<std::size_t>(last - first);
   auto by_order = [](const Event& a, const Event& b) { return earlier(a, b); };
-  if (count < kSmallSort) {
-    std::sort(start_events_.begin(), start_events_.end(), by_order);
+  auto insertion_sort = [](Event* begin, Event* end) {
+    for (Event* m = begin + 1; m < end; ++m) {
+      const Event event = *m;
+      Event* hole = m;
+      for (; hole > begin && earlier(event, hole[-1]); --hole) *hole = hole[-1];
+      *hole = event;
+    }
+  };
+  if (count <= kSmallSort) {
+    std::copy(first, last, out);
+    insertion_sort(out, out + count);
     return;
   }
   const double per_time = static_cast<double>(count) / limits_.dt;
@@ -94,30 +129,66 @@ void GuardedMotion::sort_start_events() {
     return std::min(count - 1, static_cast<std::size_t>(event.time * per_time));
   };
   slot_begin_.assign(count + 1, 0);
-  for (const Event& event : start_events_) ++slot_begin_[slot(event) + 1];
+  for (const Event* event = first; event < last; ++event) ++slot_begin_[slot(*event) + 1];
   for (std::size_t k = 0; k < count; ++k) slot_begin_[k + 1] += slot_begin_[k];
-  sorted_events_.resize(count);
-  for (const Event& event : start_events_) sorted_events_[slot_begin_[slot(event)]++] = event;
+  for (const Event* event = first; event < last; ++event) out[slot_begin_[slot(*event)]++] = *event;
   // slot_begin_[k] is now where slot k ends.
   std::size_t begin = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t end = slot_begin_[k];
     if (end - begin > kSmallSort) {
-      std::sort(sorted_events_.begin() + static_cast<std::ptrdiff_t>(begin),
-                sorted_events_.begin() + static_cast<std::ptrdiff_t>(end), by_order);
+      std::sort(out + begin, out + end, by_order);
     } else {
-      for (std::size_t m = begin + 1; m < end; ++m) {
-        const Event event = sorted_events_[m];
-        std::size_t hole = m;
-        for (; hole > begin && earlier(event, sorted_events_[hole - 1]); --hole) {
-          sorted_events_[hole] = sorted_events_[hole - 1];
-        }
-        sorted_events_[hole] = event;
-      }
+      insertion_sort(out + begin, out + end);
     }
     begin = end;
   }
-  start_events_.swap(sorted_events_);
+}
+
+std::uint32_t GuardedMotion::find_root(std::uint32_t agent) {
+  while (island_parent_[agent] != agent) {
+    island_parent_[agent] = island_parent_[island_parent_[agent]];  // path halving
+    agent = island_parent_[agent];
+  }
+  return agent;
+}
+
+// Union-find over the pairs, each island's root its lowest member, then the islands numbered
+// in the order of their first pairs, and every paired agent given its island's number.
+void GuardedMotion::label_islands() {
+  for (const CandidatePair& p : pairs_) {
+    island_parent_[p.i] = p.i;
+    island_parent_[p.j] = p.j;
+  }
+  for (const CandidatePair& p : pairs_) {
+    const std::uint32_t a = find_root(p.i);
+    const std::uint32_t b = find_root(p.j);
+    if (a < b) island_parent_[b] = a;
+    if (b < a) island_parent_[a] = b;
+  }
+  islands_ = 0;
+  for (const CandidatePair& p : pairs_) {
+    const std::uint32_t root = find_root(p.i);
+    if (island_stamp_[root] != step_stamp_) {
+      island_stamp_[root] = step_stamp_;
+      island_of_[root] = islands_++;
+    }
+    const std::uint32_t island = island_of_[root];
+    island_of_[p.i] = island;
+    island_of_[p.j] = island;
+    island_stamp_[p.i] = step_stamp_;
+    island_stamp_[p.j] = step_stamp_;
+  }
+}
+
+// An agent in no pair is an island of its own (it can have wall events only).
+std::uint32_t GuardedMotion::island_of(std::uint32_t agent) {
+  if (!by_island_) return 0;
+  if (island_stamp_[agent] != step_stamp_) {
+    island_stamp_[agent] = step_stamp_;
+    island_of_[agent] = islands_++;
+  }
+  return island_of_[agent];
 }
 
 // Pops the earlier of the next start event and the heap's top. The heap is popped bottom-up:
@@ -197,8 +268,9 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
                                     double from_time) {
   const CandidatePair& pair = pairs_[index];
   const std::uint64_t ids = std::uint64_t{pair.i} << 32 | pair.j;
+  const std::uint32_t island = by_island_ ? island_of_[pair.i] : 0;
   auto push = [&](double time, Kind kind) {
-    push_event({time, ids, version_[pair.i], version_[pair.j], kind});
+    push_event({time, ids, version_[pair.i], version_[pair.j], island, kind});
   };
   if (auto t =
           first_contact_time(offset, relative, limits_.detection_radius, from_time, limits_.dt)) {
@@ -226,8 +298,8 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   axis(at.x, v.x, limits_.bounds.low.x, limits_.bounds.high.x);
   axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
   if (first > limits_.dt) return;
-  push_event(
-      {first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent], Kind::Wall});
+  push_event({first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent],
+              island_of(agent), Kind::Wall});
 }
 
 // A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
@@ -425,6 +497,10 @@ void GuardedMotion::reset(std::size_t agents) {
     slides_.assign(agents, 0);
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
+    island_parent_.assign(agents, 0u);
+    island_of_.assign(agents, 0u);
+    island_stamp_.assign(agents, 0u);
+    island_begin_.reserve(agents + 1);  // an island has at least one agent
     // Room for more neighbours than a packed body has, so that the buffers do not grow
     // during a run.
     neighbours_.resize(kNeighboursRoom);
@@ -434,6 +510,7 @@ void GuardedMotion::reset(std::size_t agents) {
   }
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
     std::fill(leg_stamp_.begin(), leg_stamp_.end(), 0u);
+    std::fill(island_stamp_.begin(), island_stamp_.end(), 0u);
     step_stamp_ = 0;
   }
   ++step_stamp_;
@@ -463,6 +540,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     slot_begin_.reserve(4 * pairs.size() + 1);
     heap_.reserve(4 * pairs.size());  // events scheduled after the start
   }
+  by_island_ = order_ == EventOrder::ByIsland ||
+               (order_ == EventOrder::Auto && commands.size() >= kIslandOrderFrom);
+  islands_ = 1;  // by time: all in island 0
+  if (by_island_) label_islands();
   starting_ = true;
   // The pairs are listed by place, their agents' data lie at random ids: they are requested
   // a few pairs ahead, so that the cache misses of several pairs overlap.
@@ -474,6 +555,9 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       __builtin_prefetch(&commands_[ahead.j]);
       __builtin_prefetch(&version_[ahead.i]);
       __builtin_prefetch(&version_[ahead.j]);
+      __builtin_prefetch(&signals_[ahead.i]);
+      __builtin_prefetch(&signals_[ahead.j]);
+      if (by_island_) __builtin_prefetch(&island_of_[ahead.i]);
     }
     schedule_pair_at_start(k);
   }

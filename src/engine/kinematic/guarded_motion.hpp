@@ -55,10 +55,28 @@ struct MotionLimits {
 // Bits of wall_contacts(): the walls an agent touched during the step.
 enum WallContact : std::uint8_t { WallX = 1, WallY = 2 };
 
+// The order in which a step's events are processed. Events of different islands (connected
+// components of the candidate pairs) never affect each other, so every order that keeps each
+// island's events in time order gives the same step, bit for bit.
+//  - ByTime: all events in one time order (cheapest bookkeeping);
+//  - ByIsland: island after island, in the order of their first pairs (pairs are listed by
+//    place), each in time order: consecutive events then touch nearby agents, whose data
+//    stay in cache, where one time order over a large swarm jumps across the arena at every
+//    event;
+//  - Auto: ByIsland from kIslandOrderFrom agents, where the per-agent arrays outgrow the cache.
+enum class EventOrder : std::uint8_t { Auto, ByTime, ByIsland };
+
 class GuardedMotion {
  public:
   // A body meets few contacts within one step: it slides at most this often, then halts.
   static constexpr int kMaxSlides = 4;
+  // Agents from which EventOrder::Auto orders by island: where the per-agent data the events
+  // read (legs, commands, versions, incidence: about 100 bytes an agent) outgrow a 32 MiB
+  // L3 cache. Below, labelling the islands costs more than it saves.
+  static constexpr std::size_t kIslandOrderFrom = std::size_t{1} << 18;
+
+  // For tests and benchmarks; the outputs are the same in every order.
+  void set_event_order(EventOrder order) { order_ = order; }
 
   // Resolves the step for agents that guard their moves (some command has halt_on or
   // blocked_by bits) and returns the number of encounters; displacement() then gives how
@@ -93,6 +111,7 @@ class GuardedMotion {
     std::uint64_t ids;  // (i << 32) | j; for a Wall event (agent << 32) | no one
     std::uint32_t version_i;
     std::uint32_t version_j;
+    std::uint32_t island;  // 0 for all unless ordered by island
     Kind kind;
     std::uint32_t i() const { return static_cast<std::uint32_t>(ids >> 32); }
     std::uint32_t j() const { return static_cast<std::uint32_t>(ids); }
@@ -117,6 +136,13 @@ class GuardedMotion {
   void sift_up(std::size_t hole, const Event& event);
   Event pop_event();
   void sort_start_events();
+  // Sorts the events [first, last) by earlier() into `out` (not overlapping them).
+  void sort_events_into(const Event* first, const Event* last, Event* out);
+  // Numbers the islands of the pairs in the order of their first pairs (island_of_).
+  void label_islands();
+  std::uint32_t find_root(std::uint32_t agent);
+  // The island of an agent in a pair or with a wall event (0 unless ordered by island).
+  std::uint32_t island_of(std::uint32_t agent);
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
   // relative velocity then.
@@ -165,6 +191,15 @@ class GuardedMotion {
   std::span<const Signal> signals_;
   std::span<const Vec2> positions_;
   MotionLimits limits_;
+  EventOrder order_ = EventOrder::Auto;
+  bool by_island_ = false;  // this step's order
+  // Islands of this step, valid where island_stamp_ == step_stamp_: island_parent_ is
+  // union-find's, island_of_ the island's number (of a root first, then of every agent).
+  AgentArray<std::uint32_t> island_parent_;
+  AgentArray<std::uint32_t> island_of_;
+  AgentArray<std::uint32_t> island_stamp_;
+  std::uint32_t islands_ = 0;
+  std::vector<std::uint32_t> island_begin_;
   bool starting_ = false;  // events go to start_events_, not to the heap
   std::vector<Event> start_events_;
   std::vector<Event> sorted_events_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace swarmagg {
@@ -55,51 +56,112 @@ TEST(GuardedMotion, AnAgentHaltedEarlyMissesWhatLayBeyondItsStop) {
   EXPECT_DOUBLE_EQ(motion.displacement(0).x, 2.0);
 }
 
-// Simultaneous events break ties on the pair's ids, so the result must not depend on the
-// order the pairs are listed in. Agents on a lattice with axis-aligned unit-speed moves meet
-// at exactly equal times all the time.
-TEST(GuardedMotion, ResultsDoNotDependOnTheOrderOfThePairs) {
-  std::mt19937_64 gen(42);
-  const int side = 12;
-  const double spacing = 5.0;
+// A lattice of agents with axis-aligned unit-speed moves, who meet at exactly equal times
+// all the time: random commands (some halting on waiting agents, some blocked by everyone),
+// and every pair within 9 units.
+struct Lattice {
   std::vector<Vec2> positions;
   std::vector<MotionCommand> commands;
   std::vector<Signal> signals;
+  std::vector<CandidatePair> pairs;
+};
+
+Lattice random_lattice(std::mt19937_64& gen, int side, double spacing) {
+  Lattice lattice;
   const Vec2 directions[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0, 0}};
   for (int y = 0; y < side; ++y) {
     for (int x = 0; x < side; ++x) {
-      positions.push_back({x * spacing, y * spacing});
+      lattice.positions.push_back({x * spacing, y * spacing});
       const Vec2 v = 2.0 * directions[gen() % 5];
       const Signal signal = static_cast<Signal>(gen() % 2);
-      commands.push_back(moving(v, gen() % 2 ? mask_of(kWait) : 0,
-                                gen() % 3 == 0 ? SignalMask(mask_of(kGo) | mask_of(kWait)) : 0));
-      signals.push_back(signal);
+      lattice.commands.push_back(
+          moving(v, gen() % 2 ? mask_of(kWait) : 0,
+                 gen() % 3 == 0 ? SignalMask(mask_of(kGo) | mask_of(kWait)) : 0));
+      lattice.signals.push_back(signal);
     }
   }
-  std::vector<CandidatePair> pairs;
-  for (std::uint32_t i = 0; i < positions.size(); ++i) {
-    for (std::uint32_t j = i + 1; j < positions.size(); ++j) {
-      const Vec2 d = positions[j] - positions[i];
-      if (norm2(d) <= 9.0 * 9.0) pairs.push_back({i, j, d});
+  for (std::uint32_t i = 0; i < lattice.positions.size(); ++i) {
+    for (std::uint32_t j = i + 1; j < lattice.positions.size(); ++j) {
+      const Vec2 d = lattice.positions[j] - lattice.positions[i];
+      if (norm2(d) <= 9.0 * 9.0) lattice.pairs.push_back({i, j, d});
     }
   }
+  return lattice;
+}
+
+std::vector<Vec2> displacements(const GuardedMotion& motion, std::size_t agents) {
+  std::vector<Vec2> d;
+  for (std::uint32_t a = 0; a < agents; ++a) d.push_back(motion.displacement(a));
+  return d;
+}
+
+// Simultaneous events break ties on the pair's ids, so the result must not depend on the
+// order the pairs are listed in.
+TEST(GuardedMotion, ResultsDoNotDependOnTheOrderOfThePairs) {
+  std::mt19937_64 gen(42);
+  Lattice lattice = random_lattice(gen, 12, 5.0);
+  const std::size_t agents = lattice.positions.size();
   GuardedMotion reference;
-  const std::uint64_t encounters = reference.resolve(pairs, commands, signals, kLimits);
-  auto displacements = [&](const GuardedMotion& m) {
-    std::vector<Vec2> d;
-    for (std::uint32_t a = 0; a < positions.size(); ++a) d.push_back(m.displacement(a));
-    return d;
-  };
-  const std::vector<Vec2> moved = displacements(reference);
+  const std::uint64_t encounters =
+      reference.resolve(lattice.pairs, lattice.commands, lattice.signals, kLimits);
+  const std::vector<Vec2> moved = displacements(reference, agents);
   EXPECT_GT(encounters, 0u);
   int changed = 0;  // halted or slid
-  for (std::size_t a = 0; a < moved.size(); ++a) changed += moved[a] != commands[a].velocity;
+  for (std::size_t a = 0; a < agents; ++a) changed += moved[a] != lattice.commands[a].velocity;
   EXPECT_GT(changed, 0);
   GuardedMotion motion;  // reused, as the engine does
   for (int shuffle = 0; shuffle < 5; ++shuffle) {
-    std::shuffle(pairs.begin(), pairs.end(), gen);
-    EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), encounters);
-    EXPECT_EQ(displacements(motion), moved);
+    std::shuffle(lattice.pairs.begin(), lattice.pairs.end(), gen);
+    EXPECT_EQ(motion.resolve(lattice.pairs, lattice.commands, lattice.signals, kLimits),
+              encounters);
+    EXPECT_EQ(displacements(motion, agents), moved);
+  }
+}
+
+// Islands (connected components of the pairs) never affect each other, so processing them one
+// after another gives what one time order gives: the same moves, walls touched, encounters,
+// and agents met and bent (as sets: those lists are in processing order). Between walls too,
+// where agents in no pair have wall events of their own.
+TEST(GuardedMotion, OrderingEventsByIslandChangesNothing) {
+  std::mt19937_64 gen(7);
+  // 4.5 apart with pairs within 9: a sparse lattice of many islands of a few agents each.
+  Lattice lattice = random_lattice(gen, 16, 4.5);
+  std::erase_if(lattice.pairs, [&](const CandidatePair&) { return gen() % 3 != 0; });
+  MotionLimits walled = kLimits;
+  walled.walls = true;
+  walled.bounds = {{0.0, 0.0}, {15 * 4.5, 15 * 4.5}};
+  const std::size_t agents = lattice.positions.size();
+  auto sorted = [](std::span<const std::uint32_t> ids) {
+    std::vector<std::uint32_t> v(ids.begin(), ids.end());
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (const MotionLimits& limits : {kLimits, walled}) {
+    GuardedMotion by_time;
+    by_time.set_event_order(EventOrder::ByTime);
+    GuardedMotion by_island;
+    by_island.set_event_order(EventOrder::ByIsland);
+    for (int step = 0; step < 3; ++step) {  // reused, as the engine does
+      const std::uint64_t encounters = by_time.resolve(lattice.pairs, lattice.commands,
+                                                       lattice.signals, limits, lattice.positions);
+      EXPECT_GT(encounters, 0u);
+      EXPECT_EQ(by_island.resolve(lattice.pairs, lattice.commands, lattice.signals, limits,
+                                  lattice.positions),
+                encounters);
+      EXPECT_EQ(displacements(by_island, agents), displacements(by_time, agents));
+      EXPECT_EQ(sorted(by_island.met_agents()), sorted(by_time.met_agents()));
+      EXPECT_EQ(sorted(by_island.bent_agents()), sorted(by_time.bent_agents()));
+      EXPECT_FALSE(by_time.bent_agents().empty());
+      int walls = 0;
+      for (std::uint32_t a = 0; a < agents; ++a) {
+        EXPECT_EQ(by_island.wall_contacts(a), by_time.wall_contacts(a)) << a;
+        walls += by_time.wall_contacts(a) != 0;
+      }
+      if (limits.walls) {
+        EXPECT_GT(walls, 0);
+      }
+      std::shuffle(lattice.pairs.begin(), lattice.pairs.end(), gen);
+    }
   }
 }
 
