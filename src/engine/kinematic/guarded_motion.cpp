@@ -391,13 +391,21 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity, 
   reschedule(agent, time, gathered);
 }
 
-// An agent halted once stands for the rest of the step; a halt at the step's end changes
-// nothing (and keeps the events due then).
+// The agent stands from `time` on, until a contact it answers lets it slide (see
+// halt_for_good); a halt at the step's end changes nothing (and keeps the events due then).
 void GuardedMotion::halt(std::uint32_t agent, double time, bool gathered) {
   if (time >= limits_.dt) return;
   const Vec2 v = velocity_after(agent);
   if (is_zero(v)) return;  // standing already
   change_leg(agent, time, Vec2{}, gathered);
+}
+
+// Perceiving an agent it halts on, the agent stands for the rest of the step: no slide is
+// left to it, so a body pressing into it later cannot start it again (as on the Box2D engine,
+// where a halted body takes no command until the next step).
+void GuardedMotion::halt_for_good(std::uint32_t agent, double time) {
+  halt(agent, time);
+  if (bent(agent)) slides_[agent] = kMaxSlides;
 }
 
 // The walls the agent touches at `time`, as WallContact bits, with their normals appended.
@@ -588,8 +596,8 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       met_agents_.push_back(j);
       const bool halt_i = halts_for(i, j);
       const bool halt_j = halts_for(j, i);
-      if (halt_i) halt(i, event.time);
-      if (halt_j) halt(j, event.time);
+      if (halt_i) halt_for_good(i, event.time);
+      if (halt_j) halt_for_good(j, event.time);
     } else {
       const bool blocked_i = blocks(i, j);
       const bool blocked_j = blocks(j, i);

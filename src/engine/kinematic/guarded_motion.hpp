@@ -1,16 +1,16 @@
 #pragma once
 // Resolves one kinematic step exactly. Agents move with constant commanded velocities; the
 // pair events of the step (centres reaching the detection radius s, bodies reaching contact
-// at 2r) and, between walls, bodies reaching a wall are processed in time order. An agent
-// halts at the instant an event its command halts on fires (halt_on). At a contact with a
-// body solid to it (blocked_by) or a wall it slides (ContactResponse::Slide): it goes on
-// with the part of its commanded velocity that all the bodies and walls it touches let
-// through (free_motion), at most kMaxSlides times a step and no slower than
-// MotionLimits::min_slide_speed, then halts; or it halts there (ContactResponse::Stop). A
-// contact that presses into a body moving away from it changes nothing for that body. After each
-// change its later events are recomputed from its new trajectory. Every first contact within s is
-// counted as an encounter. When no command guards its move, nothing can halt and the encounters are
-// simply counted.
+// at 2r) and, between walls, bodies reaching a wall are processed in time order (island by
+// island, see EventOrder). An agent halts at the instant an event its command halts on fires
+// (halt_on), for the rest of the step. At a contact with a body solid to it (blocked_by) or a
+// wall it slides (ContactResponse::Slide): it goes on with the part of its commanded velocity
+// that all the bodies and walls it touches let through (free_motion), at most kMaxSlides
+// times a step and no slower than MotionLimits::min_slide_speed, then halts; or it halts there
+// (ContactResponse::Stop). A contact that presses into a body moving away from it changes
+// nothing for that body. After each change its later events are recomputed from its new
+// trajectory. Every first contact within s is counted as an encounter. When no command guards
+// its move, nothing can halt and the encounters are simply counted.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -152,6 +152,7 @@ class GuardedMotion {
   void reschedule(std::uint32_t agent, double time, bool gathered);
   void change_leg(std::uint32_t agent, double time, Vec2 velocity, bool gathered);
   void halt(std::uint32_t agent, double time, bool gathered = false);
+  void halt_for_good(std::uint32_t agent, double time);
   void respond_to_contact(std::uint32_t agent, double time);
   std::uint8_t touched_walls(std::uint32_t agent, double time, std::vector<Vec2>& normals) const;
   // Of the neighbours gathered at `time`.

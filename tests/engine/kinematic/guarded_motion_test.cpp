@@ -56,6 +56,24 @@ TEST(GuardedMotion, AnAgentHaltedEarlyMissesWhatLayBeyondItsStop) {
   EXPECT_DOUBLE_EQ(motion.displacement(0).x, 2.0);
 }
 
+TEST(GuardedMotion, AnAgentHaltedByWhatItPerceivesStandsForTheRestOfTheStep) {
+  // 0 moves right at 10 u/tu, halts on waiting agents and is blocked by searching ones. It
+  // perceives the waiting 1 (10 ahead) at t = 0.6 and halts at x = 6. At t = 0.83 the
+  // searching 2, coming up from below, touches it from behind its path: a contact that lets
+  // 0's command through, which must not start it again.
+  const std::vector<CandidatePair> pairs{
+      {0, 1, {10.0, 0.0}}, {0, 2, {5.0, -10.0}}, {1, 2, {-5.0, -10.0}}};
+  const std::vector<MotionCommand> commands{
+      moving({10.0, 0.0}, mask_of(kWait), mask_of(kGo)), moving({}), moving({0.0, 10.0})};
+  const std::vector<Signal> signals{kGo, kWait, kGo};
+  GuardedMotion motion;
+  // 0 meets 1 and 2; 2 passes 1 at 5.
+  EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), 2u);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 6.0);
+  EXPECT_EQ(motion.displacement(0).y, 0.0);
+  EXPECT_EQ(motion.displacement(2), (Vec2{0.0, 10.0}));
+}
+
 // A lattice of agents with axis-aligned unit-speed moves, who meet at exactly equal times
 // all the time: random commands (some halting on waiting agents, some blocked by everyone),
 // and every pair within 9 units.
