@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "analysis/model_errors.hpp"
-#include "config/world_writer.hpp"
 #include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
 #include "run/measured_run.hpp"
@@ -15,12 +14,10 @@
 namespace swarmagg {
 namespace {
 
-std::string without_comment_lines(std::istream& in) {
-  std::string body, line;
-  while (std::getline(in, line)) {
-    if (!line.starts_with("#")) body += line + "\n";
-  }
-  return body;
+std::string text_of(std::istream& in) {
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // summary.json gains its model errors after world.resolved.yaml marked the folder complete
@@ -40,8 +37,10 @@ bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder)
       !std::filesystem::exists(folder / "rates.csv")) {
     return false;
   }
-  std::istringstream current(world_to_yaml(spec));
-  return without_comment_lines(resolved) == without_comment_lines(current) &&
+  // The whole text, comments included: its first line names the swarmagg version and commit
+  // that made the run, and a run made by another build of the same world need not give the
+  // same outputs (a fix in an engine moves them).
+  return text_of(resolved) == resolved_world_text(spec) &&
          holds_model_errors(folder / "summary.json");
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Runs a world into its folder unless the folder already holds a complete run of the same
-// resolved world, so re-plotting and re-reporting are instant. world.resolved.yaml is
-// written last by write_run_folder, so its presence marks a complete run; its comment
-// lines (version, git hash, seeds) are ignored, as the world body decides what was run.
+// resolved world by the same build, so re-plotting and re-reporting are instant.
+// world.resolved.yaml is written last by write_run_folder, so its presence marks a complete
+// run; its text must be the one this build writes for the world, comments included (the
+// swarmagg version and commit, the seeds): runs of an older build are made again.
 #include <filesystem>
 
 #include "config/world_spec.hpp"
@@ -11,7 +12,8 @@
 
 namespace swarmagg {
 
-// True when `folder` holds a complete run of exactly `spec`, with its model outputs.
+// True when `folder` holds a complete run of exactly `spec` by this build, with its model
+// outputs.
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder);
 
 // Runs the world and writes the run folder, its measured rates (rates.csv, rates.json,
