@@ -145,7 +145,14 @@ void GuardedMotion::sort_events_into(const Event* first, const Event* last, Even
   }
 }
 
+// Union-find, each island's root its lowest member. A parent is valid where stamped with this
+// step's stamp; an agent without one is a root of its own.
 std::uint32_t GuardedMotion::find_root(std::uint32_t agent) {
+  if (island_stamp_[agent] != step_stamp_) {
+    island_stamp_[agent] = step_stamp_;
+    island_parent_[agent] = agent;
+    return agent;
+  }
   while (island_parent_[agent] != agent) {
     island_parent_[agent] = island_parent_[island_parent_[agent]];  // path halving
     agent = island_parent_[agent];
@@ -153,42 +160,30 @@ std::uint32_t GuardedMotion::find_root(std::uint32_t agent) {
   return agent;
 }
 
-// Union-find over the pairs, each island's root its lowest member, then the islands numbered
-// in the order of their first pairs, and every paired agent given its island's number.
-void GuardedMotion::label_islands() {
-  for (const CandidatePair& p : pairs_) {
-    island_parent_[p.i] = p.i;
-    island_parent_[p.j] = p.j;
-  }
-  for (const CandidatePair& p : pairs_) {
-    const std::uint32_t a = find_root(p.i);
-    const std::uint32_t b = find_root(p.j);
-    if (a < b) island_parent_[b] = a;
-    if (b < a) island_parent_[a] = b;
-  }
-  islands_ = 0;
-  for (const CandidatePair& p : pairs_) {
-    const std::uint32_t root = find_root(p.i);
-    if (island_stamp_[root] != step_stamp_) {
-      island_stamp_[root] = step_stamp_;
-      island_of_[root] = islands_++;
-    }
-    const std::uint32_t island = island_of_[root];
-    island_of_[p.i] = island;
-    island_of_[p.j] = island;
-    island_stamp_[p.i] = step_stamp_;
-    island_stamp_[p.j] = step_stamp_;
-  }
+void GuardedMotion::unite(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t root_a = find_root(a);
+  const std::uint32_t root_b = find_root(b);
+  if (root_a < root_b) island_parent_[root_b] = root_a;
+  if (root_b < root_a) island_parent_[root_a] = root_b;
 }
 
-// An agent in no pair is an island of its own (it can have wall events only).
+// Islands are numbered as their first events come (the start events in the order of their
+// pairs, which are listed by place).
 std::uint32_t GuardedMotion::island_of(std::uint32_t agent) {
-  if (!by_island_) return 0;
-  if (island_stamp_[agent] != step_stamp_) {
-    island_stamp_[agent] = step_stamp_;
-    island_of_[agent] = islands_++;
+  const std::uint32_t root = find_root(agent);
+  if (number_stamp_[root] != step_stamp_) {
+    number_stamp_[root] = step_stamp_;
+    island_number_[root] = islands_++;
   }
-  return island_of_[agent];
+  return island_number_[root];
+}
+
+// An event's island is its moving agent's: of a pair, i unless i stands (then j moves, or
+// the pair would have no event); of a wall event, its agent's.
+std::uint32_t GuardedMotion::island_of_event(std::uint32_t i, std::uint32_t j) {
+  if (!by_island_) return 0;
+  const bool i_moves = j == kNoOne || !is_zero(commands_[i].velocity);
+  return island_of(i_moves ? i : j);
 }
 
 // Pops the earlier of the next start event and the heap's top. The heap is popped bottom-up:
@@ -255,9 +250,15 @@ bool GuardedMotion::meets_walls(std::uint32_t agent) const {
 
 // At the step's start every agent has its commanded velocity and no displacement yet, so
 // the pair's offset is the one it was found with.
+//
+// An agent commanded to stand never changes (it cannot halt or slide), so events reach from
+// one agent to another only through pairs of two moving agents: those make the islands.
 void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const CandidatePair& pair = pairs_[index];
-  const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
+  const Vec2 velocity_i = commands_[pair.i].velocity;
+  const Vec2 velocity_j = commands_[pair.j].velocity;
+  if (by_island_ && !is_zero(velocity_i) && !is_zero(velocity_j)) unite(pair.i, pair.j);
+  const Vec2 relative = velocity_j - velocity_i;
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (is_zero(relative)) return;
@@ -268,7 +269,8 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
                                     double from_time) {
   const CandidatePair& pair = pairs_[index];
   const std::uint64_t ids = std::uint64_t{pair.i} << 32 | pair.j;
-  const std::uint32_t island = by_island_ ? island_of_[pair.i] : 0;
+  // At the start the islands are still being found: start events get theirs afterwards.
+  const std::uint32_t island = starting_ ? 0 : island_of_event(pair.i, pair.j);
   auto push = [&](double time, Kind kind) {
     push_event({time, ids, version_[pair.i], version_[pair.j], island, kind});
   };
@@ -299,7 +301,7 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
   if (first > limits_.dt) return;
   push_event({first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent],
-              island_of(agent), Kind::Wall});
+              starting_ ? 0 : island_of_event(agent, kNoOne), Kind::Wall});
 }
 
 // A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
@@ -506,8 +508,9 @@ void GuardedMotion::reset(std::size_t agents) {
     walls_touched_.assign(agents, 0);
     version_.assign(agents, 0u);
     island_parent_.assign(agents, 0u);
-    island_of_.assign(agents, 0u);
     island_stamp_.assign(agents, 0u);
+    island_number_.assign(agents, 0u);
+    number_stamp_.assign(agents, 0u);
     island_begin_.reserve(agents + 1);  // an island has at least one agent
     // Room for more neighbours than a packed body has, so that the buffers do not grow
     // during a run.
@@ -519,6 +522,7 @@ void GuardedMotion::reset(std::size_t agents) {
   if (step_stamp_ == std::numeric_limits<std::uint32_t>::max()) {
     std::fill(leg_stamp_.begin(), leg_stamp_.end(), 0u);
     std::fill(island_stamp_.begin(), island_stamp_.end(), 0u);
+    std::fill(number_stamp_.begin(), number_stamp_.end(), 0u);
     step_stamp_ = 0;
   }
   ++step_stamp_;
@@ -550,8 +554,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   }
   by_island_ = order_ == EventOrder::ByIsland ||
                (order_ == EventOrder::Auto && commands.size() >= kIslandOrderFrom);
-  islands_ = 1;  // by time: all in island 0
-  if (by_island_) label_islands();
+  islands_ = by_island_ ? 0 : 1;  // by time: all in island 0
   starting_ = true;
   // The pairs are listed by place, their agents' data lie at random ids: they are requested
   // a few pairs ahead, so that the cache misses of several pairs overlap.
@@ -565,7 +568,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       __builtin_prefetch(&version_[ahead.j]);
       __builtin_prefetch(&signals_[ahead.i]);
       __builtin_prefetch(&signals_[ahead.j]);
-      if (by_island_) __builtin_prefetch(&island_of_[ahead.i]);
+      if (by_island_) {
+        __builtin_prefetch(&island_stamp_[ahead.i]);
+        __builtin_prefetch(&island_stamp_[ahead.j]);
+      }
     }
     schedule_pair_at_start(k);
   }
@@ -575,6 +581,9 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     }
   }
   starting_ = false;
+  if (by_island_) {
+    for (Event& event : start_events_) event.island = island_of_event(event.i(), event.j());
+  }
   sort_start_events();
 
   // An event is current while neither agent changed since it was scheduled; a change

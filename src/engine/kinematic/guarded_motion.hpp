@@ -55,14 +55,16 @@ struct MotionLimits {
 // Bits of wall_contacts(): the walls an agent touched during the step.
 enum WallContact : std::uint8_t { WallX = 1, WallY = 2 };
 
-// The order in which a step's events are processed. Events of different islands (connected
-// components of the candidate pairs) never affect each other, so every order that keeps each
-// island's events in time order gives the same step, bit for bit.
+// The order in which a step's events are processed. Events of different islands never affect
+// each other, so every order that keeps each island's events in time order gives the same
+// step, bit for bit. An island is a connected component of the candidate pairs of two moving
+// agents: an agent commanded to stand never changes, so it passes nothing on; an event
+// between a moving and a standing agent belongs to the moving one's island.
 //  - ByTime: all events in one time order (cheapest bookkeeping);
-//  - ByIsland: island after island, in the order of their first pairs (pairs are listed by
-//    place), each in time order: consecutive events then touch nearby agents, whose data
-//    stay in cache, where one time order over a large swarm jumps across the arena at every
-//    event;
+//  - ByIsland: island after island, in the order of their first events (those at the step's
+//    start, in the order of their pairs, which are listed by place), each in time order:
+//    consecutive events then touch nearby agents, whose data stay in cache, where one time
+//    order over a large swarm jumps across the arena at every event;
 //  - Auto: ByIsland from kIslandOrderFrom agents, where the per-agent arrays outgrow the cache.
 enum class EventOrder : std::uint8_t { Auto, ByTime, ByIsland };
 
@@ -138,11 +140,12 @@ class GuardedMotion {
   void sort_start_events();
   // Sorts the events [first, last) by earlier() into `out` (not overlapping them).
   void sort_events_into(const Event* first, const Event* last, Event* out);
-  // Numbers the islands of the pairs in the order of their first pairs (island_of_).
-  void label_islands();
   std::uint32_t find_root(std::uint32_t agent);
-  // The island of an agent in a pair or with a wall event (0 unless ordered by island).
+  void unite(std::uint32_t a, std::uint32_t b);
   std::uint32_t island_of(std::uint32_t agent);
+  // The island of the event of pair (i, j), or of i's wall event (j = no one); 0 unless
+  // ordered by island.
+  std::uint32_t island_of_event(std::uint32_t i, std::uint32_t j);
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
   // relative velocity then.
@@ -194,11 +197,12 @@ class GuardedMotion {
   MotionLimits limits_;
   EventOrder order_ = EventOrder::Auto;
   bool by_island_ = false;  // this step's order
-  // Islands of this step, valid where island_stamp_ == step_stamp_: island_parent_ is
-  // union-find's, island_of_ the island's number (of a root first, then of every agent).
+  // Islands of this step: union-find's parents, valid where island_stamp_ == step_stamp_,
+  // and the islands' numbers by root, valid where number_stamp_ == step_stamp_.
   AgentArray<std::uint32_t> island_parent_;
-  AgentArray<std::uint32_t> island_of_;
   AgentArray<std::uint32_t> island_stamp_;
+  AgentArray<std::uint32_t> island_number_;
+  AgentArray<std::uint32_t> number_stamp_;
   std::uint32_t islands_ = 0;
   std::vector<std::uint32_t> island_begin_;
   bool starting_ = false;  // events go to start_events_, not to the heap

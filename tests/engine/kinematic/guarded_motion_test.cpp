@@ -63,8 +63,8 @@ TEST(GuardedMotion, AnAgentHaltedByWhatItPerceivesStandsForTheRestOfTheStep) {
   // 0's command through, which must not start it again.
   const std::vector<CandidatePair> pairs{
       {0, 1, {10.0, 0.0}}, {0, 2, {5.0, -10.0}}, {1, 2, {-5.0, -10.0}}};
-  const std::vector<MotionCommand> commands{
-      moving({10.0, 0.0}, mask_of(kWait), mask_of(kGo)), moving({}), moving({0.0, 10.0})};
+  const std::vector<MotionCommand> commands{moving({10.0, 0.0}, mask_of(kWait), mask_of(kGo)),
+                                            moving({}), moving({0.0, 10.0})};
   const std::vector<Signal> signals{kGo, kWait, kGo};
   GuardedMotion motion;
   // 0 meets 1 and 2; 2 passes 1 at 5.
@@ -136,10 +136,11 @@ TEST(GuardedMotion, ResultsDoNotDependOnTheOrderOfThePairs) {
   }
 }
 
-// Islands (connected components of the pairs) never affect each other, so processing them one
-// after another gives what one time order gives: the same moves, walls touched, encounters,
-// and agents met and bent (as sets: those lists are in processing order). Between walls too,
-// where agents in no pair have wall events of their own.
+// Islands (connected components of the pairs of moving agents; a fifth of the lattice stands)
+// never affect each other, so processing them one after another gives what one time order
+// gives: the same moves, walls touched, encounters, and agents met and bent (as sets: those
+// lists are in processing order). Between walls too, where agents in no pair have wall events
+// of their own.
 TEST(GuardedMotion, OrderingEventsByIslandChangesNothing) {
   std::mt19937_64 gen(7);
   // 4.5 apart with pairs within 9: a sparse lattice of many islands of a few agents each.
