@@ -47,16 +47,15 @@ Vec2 offset_now(Vec2 start_offset, bool agent_is_j, Vec2 travelled, Vec2 other_t
 
 // Earliest event first; simultaneous events by their pair's agent ids (i, then j; a wall
 // event as the pair (agent, no one)), then by kind, so the order never depends on how the
-// heap or the pair list is arranged. Ordered by island, an island's events all come before
-// the next island's. Event times are never negative (nor -0.0): they start at 0 and add
-// non-negative spans. The bits of such a double order like its value, so time and ids compare
-// as one 128-bit number, without branches the predictor would have to guess.
+// heap or the pair list is arranged. Event times are never negative (nor -0.0): they start at
+// 0 and add non-negative spans. The bits of such a double order like its value, so time and
+// ids compare as one 128-bit number, without branches the predictor would have to guess.
+// (Islands need no comparison here: see pop_event.)
 bool GuardedMotion::earlier(const Event& a, const Event& b) {
   using Key = unsigned __int128;
   const Key key_a = Key{std::bit_cast<std::uint64_t>(a.time)} << 64 | a.ids;
   const Key key_b = Key{std::bit_cast<std::uint64_t>(b.time)} << 64 | b.ids;
-  const bool in_time = (key_a < key_b) | ((key_a == key_b) & (a.kind < b.kind));
-  return (a.island < b.island) | ((a.island == b.island) & in_time);
+  return (key_a < key_b) | ((key_a == key_b) & (a.kind < b.kind));
 }
 
 void GuardedMotion::push_event(const Event& event) {
@@ -80,7 +79,7 @@ void GuardedMotion::sift_up(std::size_t hole, const Event& event) {
 }
 
 // Ordered by island, a counting sort by island (which keeps the order of the events within
-// one) comes first, and each island's events are sorted in turn.
+// one) comes first, and each island's events are sorted by time in turn.
 void GuardedMotion::sort_start_events() {
   const std::size_t count = start_events_.size();
   sorted_events_.resize(count);
@@ -160,11 +159,14 @@ std::uint32_t GuardedMotion::find_root(std::uint32_t agent) {
   return agent;
 }
 
-void GuardedMotion::unite(std::uint32_t a, std::uint32_t b) {
-  const std::uint32_t root_a = find_root(a);
-  const std::uint32_t root_b = find_root(b);
-  if (root_a < root_b) island_parent_[root_b] = root_a;
-  if (root_b < root_a) island_parent_[root_a] = root_b;
+// An agent commanded to stand never changes (it cannot halt or slide), so events reach from
+// one agent to another only through pairs of two moving agents: those make the islands.
+void GuardedMotion::unite_if_both_move(const CandidatePair& pair) {
+  if (is_zero(commands_[pair.i].velocity) || is_zero(commands_[pair.j].velocity)) return;
+  const std::uint32_t root_i = find_root(pair.i);
+  const std::uint32_t root_j = find_root(pair.j);
+  if (root_i < root_j) island_parent_[root_j] = root_i;
+  if (root_j < root_i) island_parent_[root_i] = root_j;
 }
 
 // Islands are numbered as their first events come (the start events in the order of their
@@ -181,18 +183,20 @@ std::uint32_t GuardedMotion::island_of(std::uint32_t agent) {
 // An event's island is its moving agent's: of a pair, i unless i stands (then j moves, or
 // the pair would have no event); of a wall event, its agent's.
 std::uint32_t GuardedMotion::island_of_event(std::uint32_t i, std::uint32_t j) {
-  if (!by_island_) return 0;
   const bool i_moves = j == kNoOne || !is_zero(commands_[i].velocity);
   return island_of(i_moves ? i : j);
 }
 
-// Pops the earlier of the next start event and the heap's top. The heap is popped bottom-up:
-// the hole left by the top walks down to a leaf along the earlier child (one branch-free
-// comparison a level), and the last event is sifted up from there, which rarely takes more
-// than a level or two.
+// Pops the earlier of the next start event and the heap's top. Ordered by island, the start
+// events run island after island, and the heap holds only events of the island at hand (an
+// event's changes schedule events of its own island): while the next start event belongs to
+// a later island, the heap empties first. The heap is popped bottom-up: the hole left by the
+// top walks down to a leaf along the earlier child (one branch-free comparison a level), and
+// the last event is sifted up from there, which rarely takes more than a level or two.
 GuardedMotion::Event GuardedMotion::pop_event() {
   if (next_start_ < start_events_.size() &&
-      (heap_.empty() || !earlier(heap_.front(), start_events_[next_start_]))) {
+      (heap_.empty() || (start_events_[next_start_].island == heap_.front().island &&
+                         !earlier(heap_.front(), start_events_[next_start_])))) {
     // What checking and processing an event reads first, of both its agents, requested
     // a few events ahead (written out here: GCC drops calls to a function that only
     // prefetches, taking it for one without effects); the runs of incident ends, found
@@ -250,15 +254,9 @@ bool GuardedMotion::meets_walls(std::uint32_t agent) const {
 
 // At the step's start every agent has its commanded velocity and no displacement yet, so
 // the pair's offset is the one it was found with.
-//
-// An agent commanded to stand never changes (it cannot halt or slide), so events reach from
-// one agent to another only through pairs of two moving agents: those make the islands.
 void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   const CandidatePair& pair = pairs_[index];
-  const Vec2 velocity_i = commands_[pair.i].velocity;
-  const Vec2 velocity_j = commands_[pair.j].velocity;
-  if (by_island_ && !is_zero(velocity_i) && !is_zero(velocity_j)) unite(pair.i, pair.j);
-  const Vec2 relative = velocity_j - velocity_i;
+  const Vec2 relative = commands_[pair.j].velocity - commands_[pair.i].velocity;
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (is_zero(relative)) return;
@@ -270,7 +268,7 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
   const CandidatePair& pair = pairs_[index];
   const std::uint64_t ids = std::uint64_t{pair.i} << 32 | pair.j;
   // At the start the islands are still being found: start events get theirs afterwards.
-  const std::uint32_t island = starting_ ? 0 : island_of_event(pair.i, pair.j);
+  const std::uint32_t island = by_island_ && !starting_ ? island_of_event(pair.i, pair.j) : 0;
   auto push = [&](double time, Kind kind) {
     push_event({time, ids, version_[pair.i], version_[pair.j], island, kind});
   };
@@ -301,7 +299,7 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
   if (first > limits_.dt) return;
   push_event({first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent],
-              starting_ ? 0 : island_of_event(agent, kNoOne), Kind::Wall});
+              by_island_ && !starting_ ? island_of_event(agent, kNoOne) : 0, Kind::Wall});
 }
 
 // A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
@@ -566,13 +564,12 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       __builtin_prefetch(&commands_[ahead.j]);
       __builtin_prefetch(&version_[ahead.i]);
       __builtin_prefetch(&version_[ahead.j]);
-      __builtin_prefetch(&signals_[ahead.i]);
-      __builtin_prefetch(&signals_[ahead.j]);
       if (by_island_) {
         __builtin_prefetch(&island_stamp_[ahead.i]);
         __builtin_prefetch(&island_stamp_[ahead.j]);
       }
     }
+    if (by_island_) unite_if_both_move(pairs_[k]);
     schedule_pair_at_start(k);
   }
   if (limits_.walls) {

@@ -127,9 +127,10 @@ class GuardedMotion {
   };
 
   void reset(std::size_t agents);
-  // The events of the step, earliest first. Those scheduled at the step's start (most of
-  // them) are sorted once and read in order; those scheduled later go to a binary min-heap,
-  // and each pop takes the earlier of the two heads. A heap of all events would be walked
+  // The events of the step, earliest first (island after island when ordered by island).
+  // Those scheduled at the step's start (most of them) are sorted once and read in order;
+  // those scheduled later go to a binary min-heap, and each pop takes the earlier of the two
+  // heads. A heap of all events would be walked
   // from top to bottom at every pop, which at a million agents misses the cache at every
   // lower level. The order is total up to events of the same pair, kind and time, of which
   // at most one is current (see resolve), so which of those pops first changes nothing.
@@ -141,10 +142,10 @@ class GuardedMotion {
   // Sorts the events [first, last) by earlier() into `out` (not overlapping them).
   void sort_events_into(const Event* first, const Event* last, Event* out);
   std::uint32_t find_root(std::uint32_t agent);
-  void unite(std::uint32_t a, std::uint32_t b);
+  void unite_if_both_move(const CandidatePair& pair);
   std::uint32_t island_of(std::uint32_t agent);
-  // The island of the event of pair (i, j), or of i's wall event (j = no one); 0 unless
-  // ordered by island.
+  // Ordered by island: the island of the event of pair (i, j), or of i's wall event (j = no
+  // one).
   std::uint32_t island_of_event(std::uint32_t i, std::uint32_t j);
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
