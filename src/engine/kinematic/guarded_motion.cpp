@@ -111,6 +111,7 @@ void GuardedMotion::sort_events_into(const Event* first, const Event* last, Even
   const auto count = static_cast<std::size_t>(last - first);
   auto by_order = [](const Event& a, const Event& b) { return earlier(a, b); };
   auto insertion_sort = [](Event* begin, Event* end) {
+    if (end - begin < 2) return;  // begin + 1 would point past an empty run's end
     for (Event* m = begin + 1; m < end; ++m) {
       const Event event = *m;
       Event* hole = m;
@@ -463,8 +464,8 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
 // lets through. When that is what it already does, the contact pressed into it, not it into
 // the contact: it goes on unchanged (the other body answers for its own press; halting here
 // let a jammed neighbour, pressing without moving, hold a body moving away for good). When
-// that is nothing, slower than limits_.min_slide_speed, or it slid too often this step, it
-// halts.
+// that is nothing, slower than limits_.min_slide_speed, or it slid too often this step (or
+// halted for good: halt_for_good spends its slides), it halts.
 //
 // An agent commanded to stand is never bent (it cannot halt, and free_motion of a zero
 // velocity is zero, which is what it does), so nothing here changes it: a waiting agent

@@ -57,12 +57,14 @@ enum WallContact : std::uint8_t { WallX = 1, WallY = 2 };
 
 // The order in which a step's events are processed. Events of different islands never affect
 // each other, so every order that keeps each island's events in time order gives the same
-// step, bit for bit. An island is a connected component of the candidate pairs of two moving
-// agents: an agent commanded to stand never changes, so it passes nothing on; an event
+// step, bit for bit (only the lists bent_agents() and met_agents() come in another order;
+// their users take them as sets). An island is a connected component of the candidate pairs of two
+// moving agents: an agent commanded to stand never changes, so it passes nothing on; an event
 // between a moving and a standing agent belongs to the moving one's island.
 //  - ByTime: all events in one time order (cheapest bookkeeping);
 //  - ByIsland: island after island, in the order of their first events (those at the step's
-//    start, in the order of their pairs, which are listed by place), each in time order:
+//    start, in the order of their pairs, which are listed by place; islands of wall events
+//    alone come last), each in time order:
 //    consecutive events then touch nearby agents, whose data stay in cache, where one time
 //    order over a large swarm jumps across the arena at every event;
 //  - Auto: ByIsland from kIslandOrderFrom agents, where the per-agent arrays outgrow the cache.
@@ -77,7 +79,7 @@ class GuardedMotion {
   // L3 cache. Below, labelling the islands costs more than it saves.
   static constexpr std::size_t kIslandOrderFrom = std::size_t{1} << 18;
 
-  // For tests and benchmarks; the outputs are the same in every order.
+  // For tests and benchmarks; the step is the same in every order.
   void set_event_order(EventOrder order) { order_ = order; }
 
   // Resolves the step for agents that guard their moves (some command has halt_on or
