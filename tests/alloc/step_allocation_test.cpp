@@ -191,6 +191,16 @@ std::vector<Case> kinematic_cases() {
     c.measured = 100;
     cases.push_back(c);
   }
+  // From 2^18 agents the guarded motion orders its events by island (guarded_motion.hpp),
+  // with buffers of its own.
+  Case islands;
+  islands.name = "bayindir_270000_agents_2_threads";
+  islands.controller = "bayindir";
+  islands.agents = 270000;
+  islands.threads = 2;
+  islands.warm_up = 400;
+  islands.measured = 50;
+  cases.push_back(islands);
   return cases;
 }
 
