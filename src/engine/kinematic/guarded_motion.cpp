@@ -261,15 +261,13 @@ void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (is_zero(relative)) return;
-  schedule_events(index, pair.offset, relative, 0.0);
+  schedule_events(index, pair.offset, relative, 0.0, 0);
 }
 
 void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
-                                    double from_time) {
+                                    double from_time, std::uint32_t island) {
   const CandidatePair& pair = pairs_[index];
   const std::uint64_t ids = std::uint64_t{pair.i} << 32 | pair.j;
-  // At the start the islands are still being found: start events get theirs afterwards.
-  const std::uint32_t island = by_island_ && !starting_ ? island_of_event(pair.i, pair.j) : 0;
   auto push = [&](double time, Kind kind) {
     push_event({time, ids, version_[pair.i], version_[pair.j], island, kind});
   };
@@ -288,7 +286,7 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
 }
 
 // The first time from `from_time` at which the agent is at a wall moving into it.
-void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
+void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time, std::uint32_t island) {
   const Vec2 at = positions_[agent] + displacement_travelled(agent, from_time);
   const Vec2 v = velocity_after(agent);
   double first = std::numeric_limits<double>::infinity();
@@ -299,8 +297,8 @@ void GuardedMotion::schedule_wall(std::uint32_t agent, double from_time) {
   axis(at.x, v.x, limits_.bounds.low.x, limits_.bounds.high.x);
   axis(at.y, v.y, limits_.bounds.low.y, limits_.bounds.high.y);
   if (first > limits_.dt) return;
-  push_event({first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent],
-              by_island_ && !starting_ ? island_of_event(agent, kNoOne) : 0, Kind::Wall});
+  push_event({first, std::uint64_t{agent} << 32 | kNoOne, version_[agent], version_[agent], island,
+              Kind::Wall});
 }
 
 // A counting sort of the pair ends by agent: each agent's count lands in its own slot, the
@@ -363,9 +361,13 @@ void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
 // Schedules the agent's pairs anew from `time` on (its own velocity and displacement looked
 // up once); pairs that keep their distance have no events. `gathered`: neighbours_ hold the
 // agent's neighbours at `time` already.
+//
+// Ordered by island, all these events are the agent's island's: it moves (an agent commanded
+// to stand never changes), so each of its pairs is in its island or has it as its moving end.
 void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) {
   ++version_[agent];
-  if (meets_walls(agent)) schedule_wall(agent, time);
+  const std::uint32_t island = by_island_ ? island_of(agent) : 0;
+  if (meets_walls(agent)) schedule_wall(agent, time, island);
   const Vec2 velocity = velocity_after(agent);
   const Vec2 travelled = displacement_travelled(agent, time);
   if (!gathered) gather_neighbours(agent, time);
@@ -375,7 +377,7 @@ void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) 
     const Vec2 relative = choose(agent_is_j, velocity - n.velocity, n.velocity - velocity);
     if (is_zero(relative)) continue;
     const Vec2 offset = offset_now(pair.offset, agent_is_j, travelled, n.travelled);
-    schedule_events(n.end >> 1, offset, relative, time);
+    schedule_events(n.end >> 1, offset, relative, time, island);
   }
 }
 
@@ -575,7 +577,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   }
   if (limits_.walls) {
     for (std::uint32_t a = 0; a < commands.size(); ++a) {
-      if (meets_walls(a)) schedule_wall(a, 0.0);
+      if (meets_walls(a)) schedule_wall(a, 0.0, 0);
     }
   }
   starting_ = false;

@@ -151,9 +151,11 @@ class GuardedMotion {
   std::uint32_t island_of_event(std::uint32_t i, std::uint32_t j);
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
-  // relative velocity then.
-  void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time);
-  void schedule_wall(std::uint32_t agent, double from_time);
+  // relative velocity then, in `island` (at the step's start, when the islands are still
+  // being found, 0: the start events get theirs once all are scheduled).
+  void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time,
+                       std::uint32_t island);
+  void schedule_wall(std::uint32_t agent, double from_time, std::uint32_t island);
   void gather_neighbours(std::uint32_t agent, double time);
   void reschedule(std::uint32_t agent, double time, bool gathered);
   void change_leg(std::uint32_t agent, double time, Vec2 velocity, bool gathered);
