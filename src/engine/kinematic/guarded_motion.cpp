@@ -555,7 +555,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   }
   by_island_ = order_ == EventOrder::ByIsland ||
                (order_ == EventOrder::Auto && commands.size() >= kIslandOrderFrom);
-  islands_ = by_island_ ? 0 : 1;  // by time: all in island 0
+  islands_ = 0;
   starting_ = true;
   // The pairs are listed by place, their agents' data lie at random ids: they are requested
   // a few pairs ahead, so that the cache misses of several pairs overlap.

@@ -208,7 +208,7 @@ class GuardedMotion {
   AgentArray<std::uint32_t> island_stamp_;
   AgentArray<std::uint32_t> island_number_;
   AgentArray<std::uint32_t> number_stamp_;
-  std::uint32_t islands_ = 0;
+  std::uint32_t islands_ = 0;  // numbered so far (ordered by island)
   std::vector<std::uint32_t> island_begin_;
   bool starting_ = false;  // events go to start_events_, not to the heap
   std::vector<Event> start_events_;
