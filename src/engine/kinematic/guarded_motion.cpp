@@ -200,8 +200,10 @@ GuardedMotion::Event GuardedMotion::pop_event() {
                          !earlier(heap_.front(), start_events_[next_start_])))) {
     // What checking and processing an event reads first, of both its agents, requested
     // a few events ahead (written out here: GCC drops calls to a function that only
-    // prefetches, taking it for one without effects); the runs of incident ends, found
-    // from incidence_begin_ requested earlier, at half that distance.
+    // prefetches, taking it for one without effects), with what a change of leg writes (a
+    // store that misses holds up every later read of a stored value, spilled registers
+    // included: at 10^6 agents that stall was most of rescheduling); the runs of incident
+    // ends, found from incidence_begin_ requested earlier, at half that distance.
     if (next_start_ + kPrefetchAhead < start_events_.size()) {
       const Event& ahead = start_events_[next_start_ + kPrefetchAhead];
       for (const std::uint32_t agent : {ahead.i(), ahead.j()}) {
@@ -210,6 +212,9 @@ GuardedMotion::Event GuardedMotion::pop_event() {
         __builtin_prefetch(&commands_[agent]);
         __builtin_prefetch(&signals_[agent]);
         __builtin_prefetch(&leg_stamp_[agent]);
+        __builtin_prefetch(&leg_[agent], 1);
+        __builtin_prefetch(&slides_[agent], 1);
+        __builtin_prefetch(&walls_touched_[agent], 1);
         if (incidence_built_) __builtin_prefetch(&incidence_begin_[agent]);
       }
       if (incidence_built_) {
@@ -358,18 +363,22 @@ void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
   }
 }
 
-// Schedules the agent's pairs anew from `time` on (its own velocity and displacement looked
-// up once); pairs that keep their distance have no events. `gathered`: neighbours_ hold the
-// agent's neighbours at `time` already.
+// Schedules the agent's pairs anew from `time` on, when its new leg starts at `origin` with
+// `velocity` (passed in registers, not read back from leg_: a read of what was just stored
+// waits for every earlier store, and those of a newly bent agent miss the cache);
+// pairs that keep their distance have no events. `gathered`: neighbours_ hold the agent's
+// neighbours at `time` already.
 //
-// Ordered by island, all these events are the agent's island's: it moves (an agent commanded
-// to stand never changes), so each of its pairs is in its island or has it as its moving end.
-void GuardedMotion::reschedule(std::uint32_t agent, double time, bool gathered) {
+// Ordered by island, all these events are the island's of the event being processed: the
+// agent changes, so it moves (an agent commanded to stand never changes) and shares that
+// event's island, and each of its pairs is in its island or has it as its moving end. (Looking
+// the island up instead would miss the cache at every reschedule of a large swarm.)
+void GuardedMotion::reschedule(std::uint32_t agent, double time, Vec2 origin, Vec2 velocity,
+                               bool gathered) {
   ++version_[agent];
-  const std::uint32_t island = by_island_ ? island_of(agent) : 0;
+  const std::uint32_t island = event_island_;
   if (meets_walls(agent)) schedule_wall(agent, time, island);
-  const Vec2 velocity = velocity_after(agent);
-  const Vec2 travelled = displacement_travelled(agent, time);
+  const Vec2 travelled = travelled_on({time, origin, velocity}, time);
   if (!gathered) gather_neighbours(agent, time);
   for (const Neighbour& n : neighbours()) {
     const CandidatePair& pair = pairs_[n.end >> 1];
@@ -391,7 +400,7 @@ void GuardedMotion::change_leg(std::uint32_t agent, double time, Vec2 velocity, 
     bent_agents_.push_back(agent);
   }
   leg_[agent] = {time, origin, velocity};
-  reschedule(agent, time, gathered);
+  reschedule(agent, time, origin, velocity, gathered);
 }
 
 // The agent stands from `time` on, until a contact it answers lets it slide (see
@@ -592,6 +601,7 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   std::uint64_t encounters = 0;
   while (next_start_ < start_events_.size() || !heap_.empty()) {
     const Event event = pop_event();
+    event_island_ = event.island;
     const std::uint32_t i = event.i();
     if (event.kind == Kind::Wall) {
       if (event.version_i == version_[i]) respond_to_contact(i, event.time);

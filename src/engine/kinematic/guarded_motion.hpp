@@ -157,7 +157,7 @@ class GuardedMotion {
                        std::uint32_t island);
   void schedule_wall(std::uint32_t agent, double from_time, std::uint32_t island);
   void gather_neighbours(std::uint32_t agent, double time);
-  void reschedule(std::uint32_t agent, double time, bool gathered);
+  void reschedule(std::uint32_t agent, double time, Vec2 origin, Vec2 velocity, bool gathered);
   void change_leg(std::uint32_t agent, double time, Vec2 velocity, bool gathered);
   void halt(std::uint32_t agent, double time, bool gathered = false);
   void halt_for_good(std::uint32_t agent, double time);
@@ -209,6 +209,7 @@ class GuardedMotion {
   AgentArray<std::uint32_t> island_number_;
   AgentArray<std::uint32_t> number_stamp_;
   std::uint32_t islands_ = 0;  // numbered so far (ordered by island)
+  std::uint32_t event_island_ = 0;  // of the event being processed (0 unless by island)
   std::vector<std::uint32_t> island_begin_;
   bool starting_ = false;  // events go to start_events_, not to the heap
   std::vector<Event> start_events_;
