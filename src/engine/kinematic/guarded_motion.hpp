@@ -208,7 +208,7 @@ class GuardedMotion {
   AgentArray<std::uint32_t> island_stamp_;
   AgentArray<std::uint32_t> island_number_;
   AgentArray<std::uint32_t> number_stamp_;
-  std::uint32_t islands_ = 0;  // numbered so far (ordered by island)
+  std::uint32_t islands_ = 0;       // numbered so far (ordered by island)
   std::uint32_t event_island_ = 0;  // of the event being processed (0 unless by island)
   std::vector<std::uint32_t> island_begin_;
   bool starting_ = false;  // events go to start_events_, not to the heap
