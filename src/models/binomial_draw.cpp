@@ -4,20 +4,8 @@
 
 namespace swarmagg {
 
-namespace {
-
-// Inversion walks the CDF from 0, which takes about trials * probability iterations and
-// needs P(0) = (1 - q)^n to stay far from underflow; above this mean the trials are split
-// in two halves (the sum of independent binomials with the same q is binomial).
-constexpr double kLargestInvertedMean = 20.0;
-
-// P(0) = (1 - q)^n >= 1 - n q (Bernoulli's inequality), and exp(n log1p(-q)) is within a
-// few ulp of it, so a uniform below 1 - n q less this margin (far above rounding) is below
-// the computed P(0) too: no success, known without the exp and log1p that most draws of a
-// model's small per-step probabilities would otherwise cost.
-constexpr double kBelowFirstStepMargin = 1e-9;
-
-}  // namespace
+using binomial::kBelowFirstStepMargin;
+using binomial::kLargestInvertedMean;
 
 std::int64_t inverted_binomial(std::int64_t trials, double q, double u) {
   if (u < 1.0 - static_cast<double>(trials) * q - kBelowFirstStepMargin) return 0;
@@ -34,7 +22,7 @@ std::int64_t inverted_binomial(std::int64_t trials, double q, double u) {
   return successes;
 }
 
-std::int64_t binomial_draw(std::int64_t trials, double probability, UniformStream& uniforms) {
+std::int64_t binomial_draw_rest(std::int64_t trials, double probability, UniformStream& uniforms) {
   if (trials <= 0 || probability <= 0.0) return 0;
   if (probability >= 1.0) return trials;
   if (probability > 0.5) return trials - binomial_draw(trials, 1.0 - probability, uniforms);

@@ -123,3 +123,25 @@ TEST(BinomialDraw, NoSuccessShortcutHoldsAtItsEdge) {
 
 }  // namespace
 }  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// binomial_draw decides most draws on its short path and hands the rest to
+// binomial_draw_rest, which takes every case: both must draw the same counts from the same
+// uniforms, and use the same number of them (the next uniform of each stream agrees).
+TEST(BinomialDraw, ShortPathDrawsWhatTheGeneralPathDraws) {
+  const CounterRng rng = CounterRng::for_replicate(5, 2);
+  for (std::uint64_t step = 0; step < 20000; ++step) {
+    UniformStream parameters(rng, step, 1);
+    const auto trials = static_cast<std::int64_t>(200 * parameters.next()) - 5;
+    const double q = step % 3 == 0 ? parameters.next() : std::pow(10.0, -5.0 * parameters.next());
+    UniformStream short_path(rng, step, 0), general(rng, step, 0);
+    ASSERT_EQ(binomial_draw(trials, q, short_path), binomial_draw_rest(trials, q, general))
+        << trials << " trials, q " << q;
+    ASSERT_EQ(short_path.next(), general.next()) << trials << " trials, q " << q;
+  }
+}
+
+}  // namespace
+}  // namespace swarmagg
