@@ -181,13 +181,6 @@ std::uint32_t GuardedMotion::island_of(std::uint32_t agent) {
   return island_number_[root];
 }
 
-// An event's island is its moving agent's: of a pair, i unless i stands (then j moves, or
-// the pair would have no event); of a wall event, its agent's.
-std::uint32_t GuardedMotion::island_of_event(std::uint32_t i, std::uint32_t j) {
-  const bool i_moves = j == kNoOne || !is_zero(commands_[i].velocity);
-  return island_of(i_moves ? i : j);
-}
-
 // Pops the earlier of the next start event and the heap's top. Ordered by island, the start
 // events run island after island, and the heap holds only events of the island at hand (an
 // event's changes schedule events of its own island): while the next start event belongs to
@@ -266,7 +259,10 @@ void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   // A pair that keeps its distance can neither meet nor press into contact (the general
   // tests say the same, at a cost paid by every pair of a waiting aggregate).
   if (is_zero(relative)) return;
-  schedule_events(index, pair.offset, relative, 0.0, 0);
+  // Ordered by island, the event holds its moving agent until the islands are known (see
+  // resolve): i unless i stands (then j moves, or the pair would have no event).
+  const std::uint32_t mover = is_zero(commands_[pair.i].velocity) ? pair.j : pair.i;
+  schedule_events(index, pair.offset, relative, 0.0, by_island_ ? mover : 0);
 }
 
 void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
@@ -586,12 +582,22 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
   }
   if (limits_.walls) {
     for (std::uint32_t a = 0; a < commands.size(); ++a) {
-      if (meets_walls(a)) schedule_wall(a, 0.0, 0);
+      if (meets_walls(a)) schedule_wall(a, 0.0, by_island_ ? a : 0);
     }
   }
   starting_ = false;
+  // Each start event's island is its moving agent's (held in the field until now), looked up
+  // with the union-find's entries requested a few events ahead.
   if (by_island_) {
-    for (Event& event : start_events_) event.island = island_of_event(event.i(), event.j());
+    const std::size_t events = start_events_.size();
+    for (std::size_t k = 0; k < events; ++k) {
+      if (k + kPrefetchAhead < events) {
+        const std::uint32_t ahead = start_events_[k + kPrefetchAhead].island;
+        __builtin_prefetch(&island_stamp_[ahead]);
+        __builtin_prefetch(&island_parent_[ahead]);
+      }
+      start_events_[k].island = island_of(start_events_[k].island);
+    }
   }
   sort_start_events();
 

@@ -115,7 +115,7 @@ class GuardedMotion {
     std::uint64_t ids;  // (i << 32) | j; for a Wall event (agent << 32) | no one
     std::uint32_t version_i;
     std::uint32_t version_j;
-    std::uint32_t island;  // 0 for all unless ordered by island
+    std::uint32_t island;  // 0 for all unless ordered by island (see schedule_events)
     Kind kind;
     std::uint32_t i() const { return static_cast<std::uint32_t>(ids >> 32); }
     std::uint32_t j() const { return static_cast<std::uint32_t>(ids); }
@@ -146,13 +146,11 @@ class GuardedMotion {
   std::uint32_t find_root(std::uint32_t agent);
   void unite_if_both_move(const CandidatePair& pair);
   std::uint32_t island_of(std::uint32_t agent);
-  // Ordered by island: the island of the event of pair (i, j), or of i's wall event (j = no
-  // one).
-  std::uint32_t island_of_event(std::uint32_t i, std::uint32_t j);
   void schedule_pair_at_start(std::uint32_t pair);
   // Pushes the pair's perceive and contact events from `from_time` on, given its offset and
   // relative velocity then, in `island` (at the step's start, when the islands are still
-  // being found, 0: the start events get theirs once all are scheduled).
+  // being found, the event's moving agent: the start events get their islands once all are
+  // scheduled; 0 for all when ordered by time).
   void schedule_events(std::uint32_t pair, Vec2 offset, Vec2 relative, double from_time,
                        std::uint32_t island);
   void schedule_wall(std::uint32_t agent, double from_time, std::uint32_t island);
