@@ -34,6 +34,8 @@ constexpr std::size_t kAgentsPerMoveTask = 65536;
 // The Verlet list's skin, in steps of two agents at the nominal speed closing in on each
 // other: the list is searched anew about once every this many steps.
 constexpr double kSkinSteps = 8.0;
+// Passes over the bent agents (scattered ids) request their data this many agents ahead.
+constexpr std::size_t kBentAhead = 16;
 
 // Two running maxima (even and odd agents) keep two comparisons in flight; the maximum of
 // exact values does not depend on the order it is taken in.
@@ -271,11 +273,17 @@ class KinematicEngine final : public Engine {
 
   void remember_starts(std::span<const std::uint32_t> agents) {
     starts_.clear();
-    for (const std::uint32_t agent : agents) starts_.push_back({agent, positions_[agent]});
+    for (std::size_t k = 0; k < agents.size(); ++k) {
+      if (k + kBentAhead < agents.size()) __builtin_prefetch(&positions_[agents[k + kBentAhead]]);
+      starts_.push_back({agents[k], positions_[agents[k]]});
+    }
   }
 
   void move_bent_from_starts(const GuardedMotion& motion) {
-    for (const auto& [agent, start] : starts_) {
+    for (std::size_t k = 0; k < starts_.size(); ++k) {
+      if (k + kBentAhead < starts_.size())
+        motion.prefetch_displacement(starts_[k + kBentAhead].first);
+      const auto& [agent, start] = starts_[k];
       positions_[agent] = on_torus(start + motion.displacement(agent));
     }
   }
