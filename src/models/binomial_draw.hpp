@@ -36,7 +36,7 @@ inline constexpr double kBelowFirstStepMargin = 1e-9;
 
 // The draw of binomial_draw's inversion path for the uniform u in [0, 1): the smallest k
 // whose CDF exceeds u, for q <= 1/2 and a mean n q small enough that (1 - q)^n does not
-// underflow (binomial_draw splits larger ones).
+// underflow (binomial_draw_rest splits larger ones).
 std::int64_t inverted_binomial(std::int64_t trials, double q, double u);
 
 // binomial_draw for the cases the inline part leaves: no trials, probabilities out of
@@ -48,7 +48,7 @@ std::int64_t binomial_draw_rest(std::int64_t trials, double probability, Uniform
 // small probability and no success: that case takes a short path with nothing to save on
 // the stack, one uniform and one comparison (the same as inverted_binomial's first); the
 // others, which may recurse, go to binomial_draw_rest. The draws are those of
-// binomial_draw_rest alone (17 % less time for `swarmagg model` of a Bayindir world).
+// binomial_draw_rest alone (docs/performance.md, "Stores that hold up reads").
 inline std::int64_t binomial_draw(std::int64_t trials, double probability,
                                   UniformStream& uniforms) {
   const double mean = static_cast<double>(trials) * probability;

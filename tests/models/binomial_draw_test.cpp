@@ -121,12 +121,6 @@ TEST(BinomialDraw, NoSuccessShortcutHoldsAtItsEdge) {
   }
 }
 
-}  // namespace
-}  // namespace swarmagg
-
-namespace swarmagg {
-namespace {
-
 // binomial_draw decides most draws on its short path and hands the rest to
 // binomial_draw_rest, which takes every case: both must draw the same counts from the same
 // uniforms, and use the same number of them (the next uniform of each stream agrees).
@@ -140,6 +134,11 @@ TEST(BinomialDraw, ShortPathDrawsWhatTheGeneralPathDraws) {
     ASSERT_EQ(binomial_draw(trials, q, short_path), binomial_draw_rest(trials, q, general))
         << trials << " trials, q " << q;
     ASSERT_EQ(short_path.next(), general.next()) << trials << " trials, q " << q;
+  }
+  for (const double q : {std::nan(""), -0.0, 0.0, 0.5, 1.0, 2.0, 1e-300}) {
+    UniformStream short_path(rng, 0, 2), general(rng, 0, 2);
+    ASSERT_EQ(binomial_draw(7, q, short_path), binomial_draw_rest(7, q, general)) << q;
+    ASSERT_EQ(short_path.next(), general.next()) << q;
   }
 }
 

@@ -360,9 +360,10 @@ void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
 }
 
 // Schedules the agent's pairs anew from `time` on, when its new leg starts at `origin` with
-// `velocity` (passed in registers, not read back from leg_: a read of what was just stored
-// waits for every earlier store, and those of a newly bent agent miss the cache);
-// pairs that keep their distance have no events. `gathered`: neighbours_ hold the agent's
+// `velocity` (passed in registers, not read back from leg_: a read the store buffer cannot
+// hand over, as GCC's wider reload of a value it spilled in halves, waits for every earlier
+// store, and those of a newly bent agent miss the cache); pairs that keep their distance
+// have no events. `gathered`: neighbours_ hold the agent's
 // neighbours at `time` already.
 //
 // Ordered by island, all these events are the island's of the event being processed: the
