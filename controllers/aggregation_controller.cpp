@@ -95,8 +95,10 @@ void AggregationController::update_waiting_as(const ControllerInput& input, Swar
   const bool views_stand = views_stand_for(input, swarm);
   for (const std::uint32_t agent : waiters_) {
     const std::int32_t partner = swarm.partner[agent];
-    if (!views_stand) views_[agent] = look_around(agent, partner);
-    const WaitingView view = views_[agent];
+    // A view just looked at is used as computed, not read back from views_: that read would
+    // wait for the store, which in a large swarm misses the cache.
+    const WaitingView view = views_stand ? views_[agent] : look_around(agent, partner);
+    if (!views_stand) views_[agent] = view;
     // A pair dissolves when a partner stops waiting (docs/controllers.md): a waiting agent that
     // stays (isolated_wait: stay) must not keep the link, or the partner's next pair would be
     // linked to it too, making one aggregate of three under join: false.
