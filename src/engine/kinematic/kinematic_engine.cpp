@@ -207,7 +207,13 @@ class KinematicEngine final : public Engine {
   }
   std::size_t bent_that_stayed(std::span<const MotionCommand> commands) const {
     std::size_t stayed = 0;
-    for (const auto& [agent, start] : starts_) {
+    for (std::size_t k = 0; k < starts_.size(); ++k) {
+      if (k + kBentAhead < starts_.size()) {
+        const std::uint32_t ahead = starts_[k + kBentAhead].first;
+        __builtin_prefetch(&positions_[ahead]);
+        __builtin_prefetch(&commands[ahead]);
+      }
+      const auto& [agent, start] = starts_[k];
       stayed += static_cast<std::size_t>(same_bits(start, positions_[agent]) &
                                          !zero_velocity(commands[agent].velocity));
     }
