@@ -261,8 +261,9 @@ void GuardedMotion::schedule_pair_at_start(std::uint32_t index) {
   if (is_zero(relative)) return;
   // Ordered by island, the event holds its moving agent until the islands are known (see
   // resolve): i unless i stands (then j moves, or the pair would have no event).
-  const std::uint32_t mover = is_zero(commands_[pair.i].velocity) ? pair.j : pair.i;
-  schedule_events(index, pair.offset, relative, 0.0, by_island_ ? mover : 0);
+  const std::uint32_t island =
+      !by_island_ ? 0 : (is_zero(commands_[pair.i].velocity) ? pair.j : pair.i);
+  schedule_events(index, pair.offset, relative, 0.0, island);
 }
 
 void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relative,
@@ -363,8 +364,7 @@ void GuardedMotion::gather_neighbours(std::uint32_t agent, double time) {
 // `velocity` (passed in registers, not read back from leg_: a read the store buffer cannot
 // hand over, as GCC's wider reload of a value it spilled in halves, waits for every earlier
 // store, and those of a newly bent agent miss the cache); pairs that keep their distance
-// have no events. `gathered`: neighbours_ hold the agent's
-// neighbours at `time` already.
+// have no events. `gathered`: neighbours_ hold the agent's neighbours at `time` already.
 //
 // Ordered by island, all these events are the island's of the event being processed: the
 // agent changes, so it moves (an agent commanded to stand never changes) and shares that
