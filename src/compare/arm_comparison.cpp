@@ -15,7 +15,16 @@ ArmSummary summarize_arm(const ArmResult& arm) {
     if (last.time > 0.0)
       s.encounter_rates.push_back(static_cast<double>(last.events.encounters) / last.time);
   }
+  s.lineage = arm.lineage;
+  for (std::size_t k = 0; k < arm.lineage.size() && k < arm.run.replicates.size(); ++k) {
+    const double time = arm.run.replicates[k].rows.back().time;
+    const LineageCounts& l = arm.lineage[k];
+    if (time > 0.0)
+      s.net_merge_rates.push_back((static_cast<double>(l.merges) - static_cast<double>(l.splits)) /
+                                  time);
+  }
   s.noa = mean_interval(s.final_noa);
+  s.net_merge_rate = mean_interval(s.net_merge_rates);
   s.encounter_rate = mean_interval(s.encounter_rates);
   s.leave = pooled_leave(arm.run);
   return s;
@@ -31,6 +40,7 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   c.encounter_rate_difference = welch_interval(c.a.encounter_rates, c.b.encounter_rates);
   c.escape_fraction = two_proportion_test(c.a.leave.escapes.total(), c.a.leave.attempts.total(),
                                           c.b.leave.escapes.total(), c.b.leave.attempts.total());
+  c.net_merge_rate_difference = welch_interval(c.a.net_merge_rates, c.b.net_merge_rates);
   c.has_leaving =
       controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;
   return c;
@@ -49,8 +59,13 @@ bool Comparison::escape_fraction_differs() const {
   return has_leaving && escape_fraction.p_value < kSignificance;
 }
 
+bool Comparison::merge_rate_differs() const {
+  return net_merge_rate_difference.p_value < kSignificance;
+}
+
 bool Comparison::differs() const {
-  return noa_differs() || encounter_rate_differs() || escape_fraction_differs();
+  return noa_differs() || encounter_rate_differs() || escape_fraction_differs() ||
+         merge_rate_differs();
 }
 
 }  // namespace swarmagg

@@ -3,7 +3,8 @@
 // mean final NOA with its Welch interval, KS tests on the final NOA and on the pooled final
 // aggregate sizes, the encounter rates, and the LEAVE episodes pooled over the replicates
 // (attempts and escapes split by rim and inside, the rim rule of docs/models.md, and by aggregate
-// size).
+// size), and where the aggregates came from: births and deaths, which the models describe,
+// and merges and splits, which they leave out (observers/aggregate_lineage.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,6 +27,9 @@ struct ArmSummary {
   MeanInterval noa;
   MeanInterval encounter_rate;
   LeaveTally leave;
+  std::vector<LineageCounts> lineage;   // per replicate, the whole run
+  std::vector<double> net_merge_rates;  // per replicate, (merges - splits) per tu
+  MeanInterval net_merge_rate;
 };
 
 struct Comparison {
@@ -36,14 +40,17 @@ struct Comparison {
   KsResult ks_sizes;
   WelchResult encounter_rate_difference;  // b - a, per-replicate encounters per tu
   ProportionResult escape_fraction;       // LEAVE attempts that got out, pooled
+  WelchResult net_merge_rate_difference;  // b - a, per-replicate net merges per tu
   bool has_leaving = false;
   // One verdict per quantity, each significant at kSignificance: the final NOA (Welch on the
-  // mean, KS on the final NOA and on the final aggregate sizes), the encounter rate (Welch)
-  // and the escape fraction (two-proportion test; only when agents leave).
+  // mean, KS on the final NOA and on the final aggregate sizes), the encounter rate (Welch),
+  // the escape fraction (two-proportion test; only when agents leave) and the net merge rate
+  // (Welch).
   bool noa_differs() const;
   bool encounter_rate_differs() const;
   bool escape_fraction_differs() const;
-  bool differs() const;  // any of the three
+  bool merge_rate_differs() const;
+  bool differs() const;  // any of the four
 };
 
 ArmSummary summarize_arm(const ArmResult& arm);

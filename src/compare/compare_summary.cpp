@@ -41,6 +41,55 @@ nlohmann::json leave_json(const LeaveTally& l) {
           {"inside_fraction_out", fraction(l.escapes.inside, l.attempts.inside)}};
 }
 
+// "<what>: a <mean +- half width>, b <...> (Welch, p = ...)" for a quantity measured per
+// replicate, each side's mean and half width printed with `mean_and_half`.
+void welch_line(std::ostringstream& out, const char* what, const Comparison& c,
+                MeanInterval ArmSummary::*quantity, const WelchResult& w,
+                const char* mean_and_half) {
+  const MeanInterval& a = c.a.*quantity;
+  const MeanInterval& b = c.b.*quantity;
+  out << what << ": " << c.a.label << format_text(mean_and_half, a.mean, a.half_width) << ", "
+      << c.b.label << format_text(mean_and_half, b.mean, b.half_width)
+      << format_text(" (Welch, p = %.3g)\n", w.p_value);
+}
+
+// The replicates' mean of one lineage count.
+double mean_count(const std::vector<LineageCounts>& lineage, std::uint64_t LineageCounts::*count) {
+  double sum = 0.0;
+  for (const LineageCounts& l : lineage) sum += static_cast<double>(l.*count);
+  return lineage.empty() ? 0.0 : sum / static_cast<double>(lineage.size());
+}
+
+void lineage_line(std::ostringstream& out, const ArmSummary& arm) {
+  out << "  " << arm.label << ": births "
+      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::births)) << ", deaths "
+      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::deaths)) << ", merges "
+      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::merges)) << ", splits "
+      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::splits)) << "\n";
+}
+
+nlohmann::json lineage_json(const ArmSummary& arm) {
+  nlohmann::json counts = nlohmann::json::object();
+  for (const auto& [name, count] :
+       {std::pair{"births", &LineageCounts::births}, std::pair{"deaths", &LineageCounts::deaths},
+        std::pair{"merges", &LineageCounts::merges}, std::pair{"splits", &LineageCounts::splits}}) {
+    std::vector<std::uint64_t> values;
+    for (const LineageCounts& l : arm.lineage) values.push_back(l.*count);
+    counts[name] = values;
+  }
+  counts["net_merges_per_tu"] = arm.net_merge_rates;
+  counts["mean_net_merges_per_tu"] = arm.net_merge_rate.mean;
+  counts["net_merges_per_tu_ci95_half_width"] = arm.net_merge_rate.half_width;
+  return counts;
+}
+
+nlohmann::json welch_json(const WelchResult& w) {
+  return {{"b_minus_a", w.difference},
+          {"ci95", {w.low, w.high}},
+          {"welch_dof", w.dof},
+          {"p_value", w.p_value}};
+}
+
 nlohmann::json arm_json(const ArmSummary& arm) {
   return {{"label", arm.label},
           {"final_noa", arm.final_noa},
@@ -50,7 +99,8 @@ nlohmann::json arm_json(const ArmSummary& arm) {
           {"encounter_rates_per_tu", arm.encounter_rates},
           {"mean_encounter_rate_per_tu", arm.encounter_rate.mean},
           {"encounter_rate_ci95_half_width", arm.encounter_rate.half_width},
-          {"leave_attempts", leave_json(arm.leave)}};
+          {"leave_attempts", leave_json(arm.leave)},
+          {"lineage", lineage_json(arm)}};
 }
 
 nlohmann::json ks_json(const KsResult& ks) {
@@ -80,12 +130,8 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
       << verdict(c.ks_sizes.p_value) << "\n";
   out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
          "with ties)\n";
-  const WelchResult& e = c.encounter_rate_difference;
-  out << "encounters per tu: " << c.a.label
-      << format_text(" %.2f +- %.2f, ", c.a.encounter_rate.mean, c.a.encounter_rate.half_width)
-      << c.b.label
-      << format_text(" %.2f +- %.2f", c.b.encounter_rate.mean, c.b.encounter_rate.half_width)
-      << format_text(" (Welch, p = %.3g)\n", e.p_value);
+  welch_line(out, "encounters per tu", c, &ArmSummary::encounter_rate, c.encounter_rate_difference,
+             " %.2f +- %.2f");
   const ProportionResult& f = c.escape_fraction;
   if (c.has_leaving) {
     out << "LEAVE attempts that got out (" << kRimRuleText << "):\n";
@@ -94,6 +140,12 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
     out << "  escape fraction: " << c.a.label << format_text(" %.3f, ", f.fraction_a) << c.b.label
         << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
   }
+  out << "where the aggregates came from, mean per replicate over the run (final NOA = births - "
+         "deaths - merges + splits; the models have births and deaths only):\n";
+  lineage_line(out, c.a);
+  lineage_line(out, c.b);
+  welch_line(out, "  net merges (merges - splits) per tu", c, &ArmSummary::net_merge_rate,
+             c.net_merge_rate_difference, " %.4f +- %.4f");
   out << format_text("verdicts at the %.0f%% level (per test), one per quantity:\n",
                      100.0 * (1.0 - kSignificance));
   out << "  final NOA: " << judged(c.noa_differs())
@@ -104,6 +156,7 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
               ? judged(c.escape_fraction_differs()) + std::string(" (two-proportion z test)")
               : std::string("not judged (no agent leaves in this world)"))
       << "\n";
+  out << "  net merge rate: " << judged(c.merge_rate_differs()) << " (Welch)\n";
   return out.str();
 }
 
@@ -113,22 +166,15 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
       {"world", world_name},
       {"a", arm_json(c.a)},
       {"b", arm_json(c.b)},
-      {"final_noa_difference",
-       {{"b_minus_a", w.difference},
-        {"ci95", {w.low, w.high}},
-        {"welch_dof", w.dof},
-        {"p_value", w.p_value}}},
+      {"final_noa_difference", welch_json(w)},
       {"ks_final_noa", ks_json(c.ks_noa)},
       {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
       {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
       {"rim_rule", std::string(kRimRuleText) +
                        "; got out: perceives (within s) no still-waiting member of the "
                        "aggregate it left when its LEAVE timeout ends"},
-      {"encounter_rate_difference",
-       {{"b_minus_a", c.encounter_rate_difference.difference},
-        {"ci95", {c.encounter_rate_difference.low, c.encounter_rate_difference.high}},
-        {"welch_dof", c.encounter_rate_difference.dof},
-        {"p_value", c.encounter_rate_difference.p_value}}},
+      {"encounter_rate_difference", welch_json(c.encounter_rate_difference)},
+      {"net_merge_rate_difference", welch_json(c.net_merge_rate_difference)},
       {"escape_fraction",
        {{"a", c.escape_fraction.fraction_a},
         {"b", c.escape_fraction.fraction_b},
@@ -141,7 +187,8 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
         {"encounter_rate", c.encounter_rate_differs() ? "different" : "no significant difference"},
         {"escape_fraction", !c.has_leaving                ? "not judged"
                             : c.escape_fraction_differs() ? "different"
-                                                          : "no significant difference"}}},
+                                                          : "no significant difference"},
+        {"net_merge_rate", c.merge_rate_differs() ? "different" : "no significant difference"}}},
       {"differs", c.differs()}};
 }
 

@@ -1,10 +1,13 @@
 #pragma once
 // One side of a comparison: a world (usually the same world on one engine) run with the
 // run's replicates and seeds. Each replicate's outcome carries its LEAVE episodes and final
-// aggregate shapes (run/world_runner.hpp), which the comparison reads.
+// aggregate shapes (run/world_runner.hpp), which the comparison reads, and the arm counts
+// where each replicate's aggregates came from (observers/aggregate_lineage.hpp).
 #include <string>
+#include <vector>
 
 #include "config/world_spec.hpp"
+#include "observers/aggregate_lineage.hpp"
 #include "run/world_runner.hpp"
 
 namespace swarmagg {
@@ -13,6 +16,7 @@ struct ArmResult {
   std::string label;  // e.g. "kinematic"
   WorldSpec spec;
   RunResult run;
+  std::vector<LineageCounts> lineage;  // by replicate, over the whole run
 };
 
 ArmResult run_arm(const std::string& label, const WorldSpec& spec, bool progress = false);

@@ -97,5 +97,34 @@ TEST(ArmComparison, EncounterRatesArePerTimeUnit) {
   EXPECT_DOUBLE_EQ(s.encounter_rates[0], static_cast<double>(last.events.encounters) / 300.0);
 }
 
+// Every replicate's lineage, followed after every step, accounts for its final NOA; the net
+// merges are per tu; the text and JSON report them with their own verdict.
+TEST(ArmComparison, LineageAccountsForEachReplicatesFinalNoa) {
+  const ArmResult a = run_arm("a", small_world(0.005, 3));
+  const ArmSummary s = summarize_arm(a);
+  ASSERT_EQ(s.lineage.size(), 12u);
+  ASSERT_EQ(s.net_merge_rates.size(), 12u);
+  std::uint64_t merges = 0;
+  for (std::size_t k = 0; k < s.lineage.size(); ++k) {
+    const LineageCounts& l = s.lineage[k];
+    EXPECT_EQ(static_cast<double>(l.births) - static_cast<double>(l.deaths) -
+                  static_cast<double>(l.merges) + static_cast<double>(l.splits),
+              s.final_noa[k])
+        << "replicate " << k;
+    EXPECT_DOUBLE_EQ(s.net_merge_rates[k],
+                     (static_cast<double>(l.merges) - static_cast<double>(l.splits)) / 300.0);
+    merges += l.merges;
+  }
+  EXPECT_GT(merges, 0u);  // a dense world with joining: searchers bridge aggregates
+  const Comparison c = compare_arms(a, run_arm("b", small_world(0.005, 4)));
+  const std::string text = comparison_text("small", c);
+  EXPECT_NE(text.find("net merges (merges - splits) per tu: a "), std::string::npos) << text;
+  EXPECT_NE(text.find("  net merge rate: "), std::string::npos) << text;
+  const nlohmann::json json = comparison_json("small", c);
+  EXPECT_EQ(json["a"]["lineage"]["merges"].size(), 12u);
+  EXPECT_TRUE(json["verdicts"].contains("net_merge_rate"));
+  EXPECT_TRUE(json["net_merge_rate_difference"].contains("p_value"));
+}
+
 }  // namespace
 }  // namespace swarmagg

@@ -61,8 +61,8 @@ TEST(ComparePlots, HistogramCountsEachValueOfEachArm) {
 TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
   WorldSpec spec = tiny_world();
   spec.controller.p_leave = 0.001;
-  const ArmResult a{"a", spec, {}};
-  const ArmResult b{"b", spec, {}};
+  const ArmResult a{"a", spec, {}, {}};
+  const ArmResult b{"b", spec, {}, {}};
   Comparison c;
   c.a.label = "a";
   c.b.label = "b";
@@ -94,7 +94,7 @@ TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
   spec.controller.type = "soysal";
   spec.controller.p0 = 0.001;
   spec.model.periphery_cap = false;
-  const ArmResult a{"a", spec, {}};
+  const ArmResult a{"a", spec, {}, {}};
   Comparison c;
   c.a.label = c.b.label = "a";
   for (LeaveTally* t : {&c.a.leave, &c.b.leave}) t->resize(8);
@@ -106,7 +106,7 @@ TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
   };
   EXPECT_NEAR(periphery_law(), 3.2459 * 0.001 / spec.engine.dt, 1e-5);
   spec.model.periphery_cap = true;
-  const ArmResult capped{"a", spec, {}};
+  const ArmResult capped{"a", spec, {}, {}};
   const std::string csv = escape_rate_csv(capped, capped, c);
   EXPECT_THAT(csv, ::testing::EndsWith(",0.03,0.03\n"));
 }
