@@ -39,7 +39,7 @@ RateEstimate ClusteredMean::estimate() const {
   const double standard_error = std::sqrt(k / (k - 1.0) * scatter) / n;
   const double half_width = student_t_quantile(k - 1.0, 0.95) * standard_error;
   estimate.rate = mean;
-  estimate.low = mean - half_width;
+  estimate.low = std::max(0.0, mean - half_width);
   estimate.high = mean + half_width;
   return estimate;
 }

@@ -6,8 +6,10 @@
 // one cluster: the pooled mean sum x / N with the cluster-robust (ratio estimator) variance
 //   Var = k / (k - 1) * sum_j (S_j - mean n_j)^2 / N^2
 // over the k replicates with observations (n_j observations summing to S_j), and the
-// Student t quantile at k - 1 degrees. Everything is kept as sums, so tallies merge in any
-// grouping. Fewer than kMinimumEvents observations, or observations from fewer than two
+// Student t quantile at k - 1 degrees. The quantities averaged are never negative, so the
+// interval's lower end is cut at 0 (with two replicates the t quantile is 12.7, and the
+// symmetric interval of a rim count could reach below 0; the cut keeps its coverage).
+// Everything is kept as sums, so tallies merge in any grouping. Fewer than kMinimumEvents observations, or observations from fewer than two
 // replicates, give no mean (too few), as the rates do.
 #include <cstdint>
 

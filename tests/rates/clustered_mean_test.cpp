@@ -59,6 +59,21 @@ TEST(ClusteredMean, TooFewObservationsOrOneReplicateGiveNoMean) {
   EXPECT_EQ(empty.clusters(), 0u);
 }
 
+// Two replicates far apart: the t interval at 1 degree (12.706 standard errors) reaches below
+// 0, which no radius or rim count can; its lower end is 0.
+TEST(ClusteredMean, IntervalOfTwoScatteredReplicatesStopsAtZero) {
+  ClusteredMean mean;
+  mean.add_cluster(5, 5.0);    // mean 1
+  mean.add_cluster(5, 100.0);  // mean 20
+  const RateEstimate e = mean.estimate();
+  ASSERT_TRUE(e.rate);
+  EXPECT_DOUBLE_EQ(*e.rate, 10.5);
+  // Residual sums 5 - 52.5 and 100 - 52.5: squares 2 * 47.5^2; variance 2 * that / 100.
+  const double half = 12.706204736174707 * std::sqrt(2.0 * 2.0 * 47.5 * 47.5) / 10.0;
+  EXPECT_NEAR(*e.high, 10.5 + half, 1e-9);
+  EXPECT_EQ(*e.low, 0.0);
+}
+
 // Replicates whose observations share a replicate effect (the same aggregate seen at
 // successive recorded steps): 8 replicates of 25 observations, value = 5 + effect + noise.
 // The interval treats replicates as the units, so it covers the true mean 95% +- 2% of
