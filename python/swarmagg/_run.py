@@ -29,6 +29,13 @@ class Run:
 
     def __init__(self, output: _core.RunOutput):
         self._output = output
+        # summary.json's model errors and model.csv run the models: each text is made once.
+        self._texts: dict[str, str] = {}
+
+    def _text(self, name: str) -> str:
+        if name not in self._texts:
+            self._texts[name] = getattr(self._output, name)()
+        return self._texts[name]
 
     @property
     def world(self) -> World:
@@ -44,13 +51,13 @@ class Run:
     def summary(self) -> dict:
         """summary.json: final values over replicates, per replicate finals, events and
         final_state_hash."""
-        return document(self._output.summary_json())
+        return document(self._text("summary_json"))
 
     def model(self) -> pd.DataFrame:
         """model.csv: every model variant's predictions, tidy (model, variant, step, time,
         quantity, value); the `measured` variants too when run with rates=True. ValueError
         when no model describes the world."""
-        return frame(self._output.model_csv())
+        return frame(self._text("model_csv"))
 
     def partitions(self) -> pd.DataFrame:
         """partitions.csv (Soysal worlds): replicate, partition, time_fraction."""

@@ -43,6 +43,35 @@ def test_run_equals_the_cli_run(cli, demo, tmp_path, engine):
     assert len({rep["final_state_hash"] for rep in summary["replicates"]}) == 3
 
 
+class CountingOutput:
+    """A run's outputs that count the calls of each text."""
+
+    def __init__(self, output):
+        self._output = output
+        self.calls = {}
+
+    def __getattr__(self, name):
+        attribute = getattr(self._output, name)
+        if not callable(attribute):
+            return attribute
+
+        def counted(*args):
+            self.calls[name] = self.calls.get(name, 0) + 1
+            return attribute(*args)
+        return counted
+
+
+def test_summary_and_model_run_the_models_once(demo):
+    r = sa.run(sa.load_world(str(demo), set=SMALL), replicates=2, seed=5)
+    r._output = CountingOutput(r._output)
+    first = r.summary()
+    first["model_errors"] = "changed by the caller"
+    second = r.summary()
+    assert second["model_errors"] != "changed by the caller"
+    pd.testing.assert_frame_equal(r.model(), r.model())
+    assert r._output.calls == {"summary_json": 1, "model_csv": 1}
+
+
 @pytest.mark.parametrize("engine", ["kinematic", "box2d"])
 def test_a_simulation_stepped_by_hand_ends_in_the_runs_final_state(cli, demo, tmp_path, engine):
     world = sa.load_world(str(demo), set=SMALL)
