@@ -3,8 +3,6 @@
 // summary.json, model.csv, partitions.csv, rates.csv, rates.json), made by the same
 // functions, so a frame read from them equals the file.
 #include <pybind11/stl.h>
-#include <stdlib.h>
-
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -17,6 +15,7 @@
 #include "core/errors.hpp"
 #include "models/model_csv.hpp"
 #include "models/predictions.hpp"
+#include "output/scratch_folder.hpp"
 #include "output/timeseries_csv.hpp"
 #include "python/bindings.hpp"
 #include "python/interruptible.hpp"
@@ -32,26 +31,6 @@ namespace py = pybind11;
 
 namespace swarmagg::python {
 namespace {
-
-// A private folder under the system's temporary directory, removed with everything in it.
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    std::string name = (std::filesystem::temp_directory_path() / "swarmagg-py-XXXXXX").string();
-    if (mkdtemp(name.data()) == nullptr) throw std::runtime_error("cannot create " + name);
-    path_ = name;
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 class RunOutput {
  public:
@@ -98,7 +77,7 @@ class RunOutput {
   }
 
   nlohmann::json model_errors() const {
-    const ScratchFolder folder;
+    const ScratchFolder folder("swarmagg-py");
     write_run_folder(*spec_, run_.result, folder.path());
     try {
       const std::optional<MeasuredTerms> terms = run_terms();
