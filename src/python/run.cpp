@@ -3,6 +3,7 @@
 // summary.json, model.csv, partitions.csv, rates.csv, rates.json), made by the same
 // functions, so a frame read from them equals the file.
 #include <pybind11/stl.h>
+
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
