@@ -1,31 +1,34 @@
 #include "compare/arm_comparison.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "controllers/controller_registry.hpp"
 #include "run/aggregate_summary.hpp"
 
 namespace swarmagg {
 
 ArmSummary summarize_arm(const ArmResult& arm) {
+  if (arm.lineage.size() != arm.run.replicates.size())
+    throw std::logic_error("compare: the arm's lineage has " + std::to_string(arm.lineage.size()) +
+                           " replicates, its run " + std::to_string(arm.run.replicates.size()));
   ArmSummary s;
   s.label = arm.label;
-  for (const ReplicateOutcome& r : arm.run.replicates) {
+  s.lineage = arm.lineage;
+  for (std::size_t k = 0; k < arm.run.replicates.size(); ++k) {
+    const ReplicateOutcome& r = arm.run.replicates[k];
     const TimeseriesRow& last = r.rows.back();
     s.final_noa.push_back(last.noa);
     for (std::int32_t size : r.final_aggregate_sizes) s.final_sizes.push_back(size);
-    if (last.time > 0.0)
-      s.encounter_rates.push_back(static_cast<double>(last.events.encounters) / last.time);
-  }
-  s.lineage = arm.lineage;
-  for (std::size_t k = 0; k < arm.lineage.size() && k < arm.run.replicates.size(); ++k) {
-    const double time = arm.run.replicates[k].rows.back().time;
+    if (last.time <= 0.0) continue;
     const LineageCounts& l = arm.lineage[k];
-    if (time > 0.0)
-      s.net_merge_rates.push_back((static_cast<double>(l.merges) - static_cast<double>(l.splits)) /
-                                  time);
+    s.encounter_rates.push_back(static_cast<double>(last.events.encounters) / last.time);
+    s.net_merge_rates.push_back((static_cast<double>(l.merges) - static_cast<double>(l.splits)) /
+                                last.time);
   }
   s.noa = mean_interval(s.final_noa);
-  s.net_merge_rate = mean_interval(s.net_merge_rates);
   s.encounter_rate = mean_interval(s.encounter_rates);
+  s.net_merge_rate = mean_interval(s.net_merge_rates);
   s.leave = pooled_leave(arm.run);
   return s;
 }
@@ -59,13 +62,13 @@ bool Comparison::escape_fraction_differs() const {
   return has_leaving && escape_fraction.p_value < kSignificance;
 }
 
-bool Comparison::merge_rate_differs() const {
+bool Comparison::net_merge_rate_differs() const {
   return net_merge_rate_difference.p_value < kSignificance;
 }
 
 bool Comparison::differs() const {
   return noa_differs() || encounter_rate_differs() || escape_fraction_differs() ||
-         merge_rate_differs();
+         net_merge_rate_differs();
 }
 
 }  // namespace swarmagg

@@ -3,8 +3,8 @@
 // mean final NOA with its Welch interval, KS tests on the final NOA and on the pooled final
 // aggregate sizes, the encounter rates, and the LEAVE episodes pooled over the replicates
 // (attempts and escapes split by rim and inside, the rim rule of docs/models.md, and by aggregate
-// size), and where the aggregates came from: births and deaths, which the models describe,
-// and merges and splits, which they leave out (observers/aggregate_lineage.hpp).
+// size), and where the aggregates came from: births, deaths, and the merges and splits the
+// models leave out (observers/aggregate_lineage.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -49,7 +49,7 @@ struct Comparison {
   bool noa_differs() const;
   bool encounter_rate_differs() const;
   bool escape_fraction_differs() const;
-  bool merge_rate_differs() const;
+  bool net_merge_rate_differs() const;
   bool differs() const;  // any of the four
 };
 

@@ -62,10 +62,10 @@ double mean_count(const std::vector<LineageCounts>& lineage, std::uint64_t Linea
 
 void lineage_line(std::ostringstream& out, const ArmSummary& arm) {
   out << "  " << arm.label << ": births "
-      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::births)) << ", deaths "
-      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::deaths)) << ", merges "
-      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::merges)) << ", splits "
-      << format_text("%.1f", mean_count(arm.lineage, &LineageCounts::splits)) << "\n";
+      << format_text("%.2f", mean_count(arm.lineage, &LineageCounts::births)) << ", deaths "
+      << format_text("%.2f", mean_count(arm.lineage, &LineageCounts::deaths)) << ", merges "
+      << format_text("%.2f", mean_count(arm.lineage, &LineageCounts::merges)) << ", splits "
+      << format_text("%.2f", mean_count(arm.lineage, &LineageCounts::splits)) << "\n";
 }
 
 nlohmann::json lineage_json(const ArmSummary& arm) {
@@ -141,7 +141,7 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
         << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
   }
   out << "where the aggregates came from, mean per replicate over the run (final NOA = births - "
-         "deaths - merges + splits; the models have births and deaths only):\n";
+         "deaths - merges + splits; the models have no merges or splits):\n";
   lineage_line(out, c.a);
   lineage_line(out, c.b);
   welch_line(out, "  net merges (merges - splits) per tu", c, &ArmSummary::net_merge_rate,
@@ -156,7 +156,7 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
               ? judged(c.escape_fraction_differs()) + std::string(" (two-proportion z test)")
               : std::string("not judged (no agent leaves in this world)"))
       << "\n";
-  out << "  net merge rate: " << judged(c.merge_rate_differs()) << " (Welch)\n";
+  out << "  net merge rate: " << judged(c.net_merge_rate_differs()) << " (Welch)\n";
   return out.str();
 }
 
@@ -188,7 +188,7 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
         {"escape_fraction", !c.has_leaving                ? "not judged"
                             : c.escape_fraction_differs() ? "different"
                                                           : "no significant difference"},
-        {"net_merge_rate", c.merge_rate_differs() ? "different" : "no significant difference"}}},
+        {"net_merge_rate", judged(c.net_merge_rate_differs())}}},
       {"differs", c.differs()}};
 }
 

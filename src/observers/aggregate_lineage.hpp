@@ -6,9 +6,11 @@
 // aggregates before is k - 1 merges; one before whose members are in k aggregates now is
 // k - 1 splits. So, step by step and exactly,
 //   NOA now - NOA before = births - deaths - merges + splits.
-// The macroscopic models change the NOA only by creations and dissipations (births and
-// deaths); merges and splits are what they leave out: aggregates that grow into one another
-// (a joining agent bridging two, or bodies shoved together) and aggregates that break apart.
+// The macroscopic models change the NOA only by creations and dissipations. Births and deaths
+// are their counterparts seen in the labels, not the controller's event counts (those differ a
+// little: members leaving in one step, a chain falling apart into single agents). Merges and
+// splits are what the models leave out: aggregates that grow into one another (a joining agent
+// bridging two, bodies shoved together) and aggregates that break apart.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -9,8 +9,9 @@
 // Student t quantile at k - 1 degrees. The quantities averaged are never negative, so the
 // interval's lower end is cut at 0 (with two replicates the t quantile is 12.7, and the
 // symmetric interval of a rim count could reach below 0; the cut keeps its coverage).
-// Everything is kept as sums, so tallies merge in any grouping. Fewer than kMinimumEvents observations, or observations from fewer than two
-// replicates, give no mean (too few), as the rates do.
+// Everything is kept as sums, so tallies merge in any grouping. Fewer than kMinimumEvents
+// observations, or observations from fewer than two replicates, give no mean (too few), as the
+// rates do.
 #include <cstdint>
 
 #include "rates/poisson_interval.hpp"

@@ -5,9 +5,10 @@ outputs the pages quote.
 Usage: run_docs.py SWARMAGG SOURCE_DIR [PAGE ...]
 (pages default: README.md, docs/worlds.md, docs/tutorial/*.md)
 
-Each page runs in its own temporary folder holding `build/swarmagg` (the binary under test)
-and links to the repository's worlds/, examples/, controllers/ and scripts/, so the pages'
-commands run as written from a clone's root. Fenced blocks are read in page order:
+Each page runs in its own temporary folder holding `build/swarmagg` (the binary under test),
+`build/python` (the Python package beside it, when built) and links to the repository's
+worlds/, examples/, controllers/ and scripts/, so the pages' commands run as written from a
+clone's root. Fenced blocks are read in page order:
 
 - ```sh blocks run with bash (-e: every command must succeed); ```python blocks run with
   /usr/bin/python3. Other blocks (yaml, text, cpp, ...) are shown, not run.
@@ -94,6 +95,11 @@ def check_expected(block, printed):
 def prepare(folder, swarmagg, source_dir):
     (folder / "build").mkdir()
     os.symlink(os.path.abspath(swarmagg), folder / "build" / "swarmagg")
+    # The Python package is assembled beside the binary (build/python), for the pages' scripts
+    # that `import swarmagg` with PYTHONPATH=build/python.
+    package = Path(os.path.abspath(swarmagg)).parent / "python"
+    if package.is_dir():
+        os.symlink(package, folder / "build" / "python")
     for name in LINKED:
         os.symlink(source_dir / name, folder / name)
 
