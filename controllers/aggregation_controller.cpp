@@ -303,8 +303,8 @@ void AggregationController::write_commands(const SwarmState& swarm,
   const SignalMask search_block_of_waiting = rules_.join ? kSearching : 0;
   constexpr SignalMask kLeaving = mask_of(static_cast<Signal>(AgentState::Leave));
   // Moving waiting bodies (compaction) respect every body that is solid to them: they must
-  // not crush a leaver they enclose, nor a searcher about to join (a contact halts only the
-  // bodies it blocks, so both sides of a solid pair need the bit).
+  // not crush a leaver they enclose, nor a searcher about to join. (Either side's bit makes a
+  // pair solid; the waiting side names them as well, so that its mask reads as the rule.)
   const SignalMask wait_block =
       kWaiting | (rules_.compaction.enabled ? kLeaving | search_block_of_waiting : 0);
   constexpr std::uint64_t kMoves = ~std::uint64_t{0};

@@ -70,8 +70,8 @@ void CockroachController::write_commands(const SwarmState& swarm,
   constexpr SignalMask kWait = mask_of(signal_of(AgentState::Wait));
   constexpr SignalMask kLeave = mask_of(signal_of(AgentState::Leave));
   // Waiting bodies that close up (compaction) respect every body solid to them: they must
-  // not crush a leaver they enclose nor a searcher beside them (a contact halts only the
-  // bodies it blocks, so both sides of a solid pair need the bit).
+  // not crush a leaver they enclose nor a searcher beside them. (Either side's bit makes a
+  // pair solid; the waiting side names them as well, so that its mask reads as the rule.)
   const SignalMask wait_block = kWait | (parameters_.compaction.enabled ? kLeave | kGo : 0);
   for (std::size_t i = 0; i < swarm.size(); ++i) {
     const Vec2 moving = swarm.heading[i] * parameters_.speed;

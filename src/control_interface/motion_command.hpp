@@ -23,8 +23,9 @@ struct MotionCommand {
   // Guarded move: stop at the first moment within the step at which an agent displaying one
   // of these signals comes within the detection radius s.
   SignalMask halt_on = 0;
-  // Bodies displaying these signals are solid to this one (contact at distance 2r); all
-  // other bodies pass over it like the paper's point particles.
+  // Bodies displaying these signals are solid to this one (contact at distance 2r), and it to
+  // them: a pair is solid when either side's mask holds the other's signal. All other bodies
+  // pass over it like the paper's point particles.
   SignalMask blocked_by = 0;
   // Bodies displaying these signals push this one away within s (body engines; the
   // kinematic engine leaves avoidance to the commanded velocity).

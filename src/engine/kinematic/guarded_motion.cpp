@@ -239,8 +239,12 @@ GuardedMotion::Event GuardedMotion::pop_event() {
   return top;
 }
 
-bool GuardedMotion::blocks(std::uint32_t mover, std::uint32_t other) const {
-  return (commands_[mover].blocked_by & mask_of(signals_[other])) != 0;
+// A pair is solid when either side's blocked_by holds the other's signal, as Box2D's contact
+// filter decides: a body cannot be solid to another that passes over it. (The controllers set
+// both sides' bits, or the unblocked side stands; a user controller may set one side only.)
+bool GuardedMotion::solid(std::uint32_t a, std::uint32_t b) const {
+  return ((commands_[a].blocked_by & mask_of(signals_[b])) |
+          (commands_[b].blocked_by & mask_of(signals_[a]))) != 0;
 }
 
 bool GuardedMotion::halts_for(std::uint32_t mover, std::uint32_t other) const {
@@ -277,7 +281,7 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
           first_contact_time(offset, relative, limits_.detection_radius, from_time, limits_.dt)) {
     push(*t, Kind::Perceive);
   }
-  if (!blocks(pair.i, pair.j) && !blocks(pair.j, pair.i)) return;
+  if (!solid(pair.i, pair.j)) return;
   const double contact = limits_.contact_distance;
   if (norm2(offset) <= contact * contact) {
     // Already touching: a body may move away or sideways, never further in.
@@ -456,7 +460,7 @@ void GuardedMotion::touched_bodies(std::uint32_t agent, double time, std::vector
     const double distance = norm(towards);
     contacts_[touched] = {n.other, towards * (1.0 / distance)};
     const bool within = !(distance > touching) & !(distance <= 0.0);
-    touched += static_cast<std::size_t>(within & blocks(agent, n.other));
+    touched += static_cast<std::size_t>(within & solid(agent, n.other));
   }
   // A body touches a handful of others, with distinct ids: insertion sort.
   for (std::size_t k = 1; k < touched; ++k) {
@@ -625,10 +629,10 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
       if (halt_i) halt_for_good(i, event.time);
       if (halt_j) halt_for_good(j, event.time);
     } else {
-      const bool blocked_i = blocks(i, j);
-      const bool blocked_j = blocks(j, i);
-      if (blocked_i) respond_to_contact(i, event.time);
-      if (blocked_j) respond_to_contact(j, event.time);
+      if (solid(i, j)) {
+        respond_to_contact(i, event.time);
+        respond_to_contact(j, event.time);
+      }
     }
   }
   return encounters;

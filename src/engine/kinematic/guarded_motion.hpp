@@ -182,7 +182,7 @@ class GuardedMotion {
             incident_ends_.data() + incidence_begin_[agent + 1]};
   }
   bool bent(std::uint32_t agent) const { return leg_stamp_[agent] == step_stamp_; }
-  bool blocks(std::uint32_t mover, std::uint32_t other) const;
+  bool solid(std::uint32_t a, std::uint32_t b) const;
   bool halts_for(std::uint32_t mover, std::uint32_t other) const;
   bool meets_walls(std::uint32_t agent) const;
   // Written so that an agent that moved straight or halted once gets exactly the bits of

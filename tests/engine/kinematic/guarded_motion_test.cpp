@@ -60,7 +60,8 @@ TEST(GuardedMotion, AnAgentHaltedByWhatItPerceivesStandsForTheRestOfTheStep) {
   // 0 moves right at 10 u/tu, halts on waiting agents and is blocked by searching ones. It
   // perceives the waiting 1 (10 ahead) at t = 0.6 and halts at x = 6. At t = 0.83 the
   // searching 2, coming up from below, touches it from behind its path: a contact that lets
-  // 0's command through, which must not start it again.
+  // 0's command through, which must not start it again. The pair is solid (0's bit), so 2
+  // slides around 0's body.
   const std::vector<CandidatePair> pairs{
       {0, 1, {10.0, 0.0}}, {0, 2, {5.0, -10.0}}, {1, 2, {-5.0, -10.0}}};
   const std::vector<MotionCommand> commands{moving({10.0, 0.0}, mask_of(kWait), mask_of(kGo)),
@@ -71,7 +72,23 @@ TEST(GuardedMotion, AnAgentHaltedByWhatItPerceivesStandsForTheRestOfTheStep) {
   EXPECT_EQ(motion.resolve(pairs, commands, signals, kLimits), 2u);
   EXPECT_DOUBLE_EQ(motion.displacement(0).x, 6.0);
   EXPECT_EQ(motion.displacement(0).y, 0.0);
-  EXPECT_EQ(motion.displacement(2), (Vec2{0.0, 10.0}));
+  const Vec2 two_from_zero = Vec2{5.0, -10.0} + motion.displacement(2) - motion.displacement(0);
+  EXPECT_GE(norm(two_from_zero), 2.0 * (1.0 - 1e-9));
+  EXPECT_LT(motion.displacement(2).x, 0.0);  // slid to the left of 0
+}
+
+// Solidity belongs to the pair, as in Box2D's contact filter: a body whose own command names
+// no one is still stopped by a body whose blocked_by holds its signal.
+TEST(GuardedMotion, APairIsSolidWhicheverSideHoldsTheBit) {
+  const std::vector<CandidatePair> pairs{{0, 1, {5.0, 0.0}}};
+  const std::vector<Signal> signals{kGo, kWait};
+  GuardedMotion motion;
+  const std::vector<MotionCommand> other_side{moving({5.0, 0.0}), moving({}, 0, mask_of(kGo))};
+  motion.resolve(pairs, other_side, signals, kLimits);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 3.0);  // stopped at contact, distance 2
+  const std::vector<MotionCommand> neither{moving({5.0, 0.0}), moving({}, 0, mask_of(kWait))};
+  motion.resolve(pairs, neither, signals, kLimits);
+  EXPECT_DOUBLE_EQ(motion.displacement(0).x, 5.0);  // 1 is blocked by waiting agents only
 }
 
 // A lattice of agents with axis-aligned unit-speed moves, who meet at exactly equal times
