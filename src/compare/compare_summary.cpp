@@ -162,34 +162,32 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
 
 nlohmann::json comparison_json(const std::string& world_name, const Comparison& c) {
   const WelchResult& w = c.noa_difference;
-  return {
-      {"world", world_name},
-      {"a", arm_json(c.a)},
-      {"b", arm_json(c.b)},
-      {"final_noa_difference", welch_json(w)},
-      {"ks_final_noa", ks_json(c.ks_noa)},
-      {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
-      {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
-      {"rim_rule", std::string(kRimRuleText) +
-                       "; got out: perceives (within s) no still-waiting member of the "
-                       "aggregate it left when its LEAVE timeout ends"},
-      {"encounter_rate_difference", welch_json(c.encounter_rate_difference)},
-      {"net_merge_rate_difference", welch_json(c.net_merge_rate_difference)},
-      {"escape_fraction",
-       {{"a", c.escape_fraction.fraction_a},
-        {"b", c.escape_fraction.fraction_b},
-        {"z", c.escape_fraction.z},
-        {"p_value", c.escape_fraction.p_value}}},
-      {"has_leaving", c.has_leaving},
-      {"significance", kSignificance},
-      {"verdicts",
-       {{"final_noa", c.noa_differs() ? "different" : "no significant difference"},
-        {"encounter_rate", c.encounter_rate_differs() ? "different" : "no significant difference"},
-        {"escape_fraction", !c.has_leaving                ? "not judged"
-                            : c.escape_fraction_differs() ? "different"
-                                                          : "no significant difference"},
-        {"net_merge_rate", judged(c.net_merge_rate_differs())}}},
-      {"differs", c.differs()}};
+  return {{"world", world_name},
+          {"a", arm_json(c.a)},
+          {"b", arm_json(c.b)},
+          {"final_noa_difference", welch_json(w)},
+          {"ks_final_noa", ks_json(c.ks_noa)},
+          {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
+          {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
+          {"rim_rule", std::string(kRimRuleText) +
+                           "; got out: perceives (within s) no still-waiting member of the "
+                           "aggregate it left when its LEAVE timeout ends"},
+          {"encounter_rate_difference", welch_json(c.encounter_rate_difference)},
+          {"net_merge_rate_difference", welch_json(c.net_merge_rate_difference)},
+          {"escape_fraction",
+           {{"a", c.escape_fraction.fraction_a},
+            {"b", c.escape_fraction.fraction_b},
+            {"z", c.escape_fraction.z},
+            {"p_value", c.escape_fraction.p_value}}},
+          {"has_leaving", c.has_leaving},
+          {"significance", kSignificance},
+          {"verdicts",
+           {{"final_noa", judged(c.noa_differs())},
+            {"encounter_rate", judged(c.encounter_rate_differs())},
+            {"escape_fraction",
+             c.has_leaving ? judged(c.escape_fraction_differs()) : std::string("not judged")},
+            {"net_merge_rate", judged(c.net_merge_rate_differs())}}},
+          {"differs", c.differs()}};
 }
 
 }  // namespace swarmagg
