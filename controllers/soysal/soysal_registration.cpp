@@ -36,7 +36,7 @@ ControllerRegistration soysal_registration() {
              sensing_radius,
              check,
              aggregation_keys({"controller.p0", "controller.leave_law", "controller.leave_size",
-                               "controller.approach_radius"})};
+                               "controller.approach_radius", "controller.tumble"})};
   r.make = [](const WorldSpec& spec) -> std::unique_ptr<Controller> {
     return std::make_unique<AggregationController>(soysal_rules(spec));
   };

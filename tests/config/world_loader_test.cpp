@@ -166,6 +166,7 @@ TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
   EXPECT_THAT(error_of("controller: {type: soysal, approach_radius: 12, p_leave: 0.1}\n"),
               HasSubstr("controller.p_leave: controller type 'soysal' does not read this key"));
   EXPECT_EQ(error_of("controller: {type: soysal, approach_radius: 12}\n"), "no error");
+  EXPECT_EQ(error_of("controller: {type: soysal, tumble: 0.001}\n"), "no error");
   EXPECT_EQ(error_of("controller: {type: bayindir}\n", {"controller.approach_radius=12"}),
             "no error");
   // A file whose controller.type an override sets (a sweep over controller types) may hold
