@@ -6,18 +6,32 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <stdexcept>
 #include <string>
+#include <system_error>
 
 namespace swarmagg {
 namespace {
 
-[[noreturn]] void fail(const std::string& what, const std::filesystem::path& path) {
-  throw std::runtime_error(what + " " + path.string() + ": " + std::strerror(errno));
+[[noreturn]] void fail(const std::string& what, const std::filesystem::path& path,
+                       int error = errno) {
+  throw std::system_error(error, std::generic_category(), what + " " + path.string());
 }
 
 }  // namespace
+
+void discard_temporary(const std::filesystem::path& temporary) {
+  std::error_code ignored;
+  std::filesystem::remove(temporary, ignored);
+}
+
+void rename_or_discard(const std::filesystem::path& temporary,
+                       const std::filesystem::path& target) {
+  std::error_code error;
+  std::filesystem::rename(temporary, target, error);
+  if (!error) return;
+  discard_temporary(temporary);
+  throw std::system_error(error, "cannot write " + target.string());
+}
 
 std::filesystem::path temporary_beside(const std::filesystem::path& target) {
   static std::atomic<unsigned> counter{0};
@@ -30,9 +44,13 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
   const int fd = ::open(temporary.c_str(), O_RDONLY);
   if (fd < 0) fail("cannot open", temporary);
   const bool synced = ::fsync(fd) == 0;
+  const int sync_error = errno;
   ::close(fd);
-  if (!synced) fail("cannot sync", temporary);
-  std::filesystem::rename(temporary, target);
+  if (!synced) {
+    discard_temporary(temporary);
+    fail("cannot sync", temporary, sync_error);
+  }
+  rename_or_discard(temporary, target);
 }
 
 void write_file_atomic(const std::filesystem::path& target, std::string_view content) {
@@ -42,11 +60,13 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
   if (file == nullptr) fail("cannot create", temporary);
   const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
   const bool flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+  const int write_error = errno;
   if (std::fclose(file) != 0 || !written || !flushed) {
-    std::filesystem::remove(temporary);
-    fail("cannot write", temporary);
+    const int error = written && flushed ? errno : write_error;
+    discard_temporary(temporary);
+    fail("cannot write", temporary, error);
   }
-  std::filesystem::rename(temporary, target);
+  rename_or_discard(temporary, target);
 }
 
 }  // namespace swarmagg

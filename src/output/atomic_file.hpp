@@ -14,4 +14,12 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
 std::filesystem::path temporary_beside(const std::filesystem::path& target);
 void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target);
 
+// Renames the complete `temporary` over `target` (no sync: for outputs cheap to make again,
+// such as frames). When the system refuses (a folder of that name, say), the temporary is
+// removed and std::system_error names `target`: a failed output leaves nothing behind.
+void rename_or_discard(const std::filesystem::path& temporary,
+                       const std::filesystem::path& target);
+// Removes a temporary that will not become its output, whatever removing it says.
+void discard_temporary(const std::filesystem::path& temporary);
+
 }  // namespace swarmagg

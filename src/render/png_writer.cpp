@@ -1,10 +1,8 @@
 #include "render/png_writer.hpp"
 
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
@@ -13,6 +11,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 
 namespace swarmagg {
 namespace {
@@ -71,13 +70,6 @@ bool encode(std::FILE* file, int width, int height, const std::uint8_t* rgba, in
   return true;
 }
 
-std::filesystem::path temporary_beside(const std::filesystem::path& target) {
-  static std::atomic<unsigned> counter{0};
-  return target.parent_path() /
-         ("." + target.filename().string() + "." + std::to_string(::getpid()) + "." +
-          std::to_string(counter.fetch_add(1)) + ".tmp");
-}
-
 }  // namespace
 
 void write_png(const std::filesystem::path& target, int width, int height,
@@ -107,12 +99,11 @@ void write_png(const std::filesystem::path& target, int width, int height,
   const int saved_errno = errno;
   const bool closed = std::fclose(file) == 0;
   if (!encoded || !flushed || !closed) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
+    discard_temporary(temporary);
     throw std::runtime_error("cannot write " + target.string() + ": " +
                              (encoded ? std::strerror(saved_errno) : sink.message));
   }
-  std::filesystem::rename(temporary, target);
+  rename_or_discard(temporary, target);
 }
 
 }  // namespace swarmagg

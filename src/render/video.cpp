@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 
 extern char** environ;
 
@@ -193,12 +194,11 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
 
   const SpawnResult result = run(program, args);
   if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
+    discard_temporary(temporary);
     throw std::runtime_error("ffmpeg failed (" + describe_status(result.status) + ") making " +
                              output.string() + ": " + result.errors);
   }
-  std::filesystem::rename(temporary, output);
+  rename_or_discard(temporary, output);
 }
 
 }  // namespace swarmagg
