@@ -55,8 +55,8 @@ class Run:
 
     def model(self) -> pd.DataFrame:
         """model.csv: every model variant's predictions, tidy (model, variant, step, time,
-        quantity, value); the `measured` variants too when run with rates=True. ValueError
-        when no model describes the world."""
+        quantity, value); the `measured` variants too when run with rates=True. No rows (the
+        header only, as the CLI's model.csv) when no model describes the world."""
         return frame(self._text("model_csv"))
 
     def partitions(self) -> pd.DataFrame:

@@ -31,8 +31,15 @@ class Sweep:
         return pd.read_csv(self.out / "sweep_summary.csv")
 
     def partitions(self) -> pd.DataFrame:
-        """sweep_partitions.csv (Soysal worlds)."""
-        return pd.read_csv(self.out / "sweep_partitions.csv")
+        """sweep_partitions.csv (Soysal worlds); ValueError when the sweep's worlds record no
+        partitions."""
+        path = self.out / "sweep_partitions.csv"
+        if not path.exists():
+            raise ValueError(
+                f"partitions: {path} does not exist; the sweep's controller records no "
+                "partitions (Soysal worlds do)"
+            )
+        return pd.read_csv(path)
 
     def manifest(self) -> dict:
         """sweep.json: the sweep as run (base world, parameters, replicates, seed)."""

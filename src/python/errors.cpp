@@ -1,5 +1,7 @@
 #include "python/errors.hpp"
 
+#include <system_error>
+
 #include "python/bindings.hpp"
 #include "run/interrupt.hpp"
 
@@ -23,6 +25,14 @@ void bind_errors(py::module_& module) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const Interrupted&) {
       PyErr_SetNone(PyExc_KeyboardInterrupt);
+    } catch (const std::system_error& e) {
+      // OSError(errno, message) picks the subclass a Python caller expects (IsADirectoryError,
+      // PermissionError, FileNotFoundError, ...).
+      const int number = e.code().category() == std::generic_category() ||
+                                 e.code().category() == std::system_category()
+                             ? e.code().value()
+                             : 0;
+      PyErr_SetObject(PyExc_OSError, py::make_tuple(number, e.what()).ptr());
     }
   });
 }

@@ -2,7 +2,8 @@
 // How the library's errors reach Python. An InputError raised while reading a world or
 // sweep file (or applying `set`) becomes swarmagg.WorldError, a ValueError carrying the
 // CLI's message (file, line, key, expectation); any other InputError, a bad argument, is a
-// plain ValueError; an interrupted run is KeyboardInterrupt.
+// plain ValueError; an interrupted run is KeyboardInterrupt; a file the system would not
+// write or read (std::system_error, std::filesystem errors too) is the matching OSError.
 #include <functional>
 
 #include "core/errors.hpp"

@@ -3,11 +3,9 @@
 #include <chrono>
 #include <csignal>
 
-#include "run/interrupt.hpp"
-
 namespace swarmagg::python::detail {
 
-bool wait_or_interrupt(const std::future<void>& done) {
+bool wait_or_interrupt(const std::future<void>& done, std::atomic<int>& stop) {
   using namespace std::chrono_literals;
   while (true) {
     {
@@ -16,12 +14,11 @@ bool wait_or_interrupt(const std::future<void>& done) {
     }
     if (PyErr_CheckSignals() != 0) break;
   }
-  set_interrupt_signal(SIGINT);
+  stop.store(SIGINT);
   {
     pybind11::gil_scoped_release no_gil;
     done.wait();
   }
-  set_interrupt_signal(0);
   return false;
 }
 

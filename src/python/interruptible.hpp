@@ -2,22 +2,27 @@
 // Long calls (run, rates, sweep, a model) run without the GIL and stop soon after Ctrl-C.
 // The work runs on a worker thread, in the library's own thread pool below it; the calling
 // thread waits without the GIL and, every 50 ms, lets Python handle its signals. When a
-// handler raises (Ctrl-C: KeyboardInterrupt), the library's interrupt flag
-// (run/interrupt.hpp) asks the work to stop at its next check, which the library's runs
-// pass at least every 1024 steps; whatever the work writes, it writes atomically, so an
-// interrupted call leaves nothing half-written. Python's own handlers stay in place.
+// handler raises (Ctrl-C: KeyboardInterrupt), the call's own stop request (an InterruptScope
+// of run/interrupt.hpp, open on its worker and pool) asks the work to stop at its next check,
+// which the library's runs pass at least every 1024 steps; calls in other Python threads go
+// on. Whatever the work writes, it writes atomically, so an interrupted call leaves nothing
+// half-written. Python's own handlers stay in place.
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <future>
 #include <thread>
 #include <utility>
+
+#include "run/interrupt.hpp"
 
 namespace swarmagg::python {
 
 namespace detail {
 // Waits for `done` without the GIL; false when a Python signal handler raised meanwhile
-// (the work was then asked to stop and has finished, and the Python error is set).
-bool wait_or_interrupt(const std::future<void>& done);
+// (the work was then asked to stop through `stop` and has finished, and the Python error is
+// set).
+bool wait_or_interrupt(const std::future<void>& done, std::atomic<int>& stop);
 }  // namespace detail
 
 template <typename Work>
@@ -27,11 +32,13 @@ auto call_interruptibly(Work work) -> decltype(work()) {
   std::future<Result> result = task.get_future();
   std::promise<void> finished;
   std::future<void> done = finished.get_future();
-  std::thread worker([&task, &finished] {
+  std::atomic<int> stop{0};
+  std::thread worker([&task, &finished, &stop] {
+    const InterruptScope scope(&stop);
     task();
     finished.set_value();
   });
-  const bool completed = detail::wait_or_interrupt(done);
+  const bool completed = detail::wait_or_interrupt(done, stop);
   worker.join();
   if (!completed) throw pybind11::error_already_set();
   return result.get();

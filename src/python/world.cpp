@@ -3,6 +3,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
+#include <string>
+
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
 #include "python/bindings.hpp"
@@ -11,24 +14,56 @@
 namespace py = pybind11;
 
 namespace swarmagg::python {
+
+YAML::Node yaml_integer(py::handle value, const std::string& name) {
+  const py::int_ integer = py::reinterpret_borrow<py::int_>(value);
+  int overflow = 0;
+  const long long signed_value = PyLong_AsLongLongAndOverflow(integer.ptr(), &overflow);
+  if (overflow == 0) return YAML::Node(signed_value);
+  if (overflow > 0) {
+    const unsigned long long unsigned_value = PyLong_AsUnsignedLongLong(integer.ptr());
+    if (!PyErr_Occurred()) return YAML::Node(unsigned_value);
+    PyErr_Clear();
+  }
+  throw InputError(name + ": " + py::str(value).cast<std::string>() +
+                   " does not fit in 64 bits");
+}
+
 namespace {
 
+// Deeper lists are refused rather than followed (a list holding itself would never end); a
+// world file is refused past 499 levels too.
+constexpr int kDeepestSetValue = 499;
+
+// A Python float as YAML text that reads back as the same double and never as an integer, so
+// that 80.0 is refused where a whole number is expected, as `80.0` in a world file is.
+YAML::Node yaml_float(double value) {
+  YAML::Node node(value);
+  std::string text = node.Scalar();
+  if (std::isfinite(value) && text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return YAML::Node(text);
+}
+
 // A Python value as the YAML value of a world key: bool, int, float, str, None and lists of
-// them (numpy scalars through .item()). Typed, never re-read as text, as the CLI's typed
-// options are.
-YAML::Node yaml_value(py::handle value, const std::string& key) {
+// them (numpy scalars through .item()). A str is what a quoted scalar of a world file would
+// be; an int beyond 64 bits is refused here, naming the key.
+YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
+  if (depth > kDeepestSetValue) {
+    throw InputError("set['" + key + "']: nested more than " + std::to_string(kDeepestSetValue) +
+                     " levels deep");
+  }
   if (value.is_none()) return YAML::Node(YAML::NodeType::Null);
   if (py::isinstance<py::bool_>(value)) return YAML::Node(value.cast<bool>());
-  if (py::isinstance<py::int_>(value)) return YAML::Node(value.cast<long long>());
-  if (py::isinstance<py::float_>(value)) return YAML::Node(value.cast<double>());
+  if (py::isinstance<py::int_>(value)) return yaml_integer(value, "set['" + key + "']");
+  if (py::isinstance<py::float_>(value)) return yaml_float(value.cast<double>());
   if (py::isinstance<py::str>(value)) return YAML::Node(value.cast<std::string>());
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     YAML::Node list(YAML::NodeType::Sequence);
-    for (py::handle item : value) list.push_back(yaml_value(item, key));
+    for (py::handle item : value) list.push_back(yaml_value(item, key, depth + 1));
     return list;
   }
   if (py::hasattr(value, "dtype") && py::hasattr(value, "item"))
-    return yaml_value(value.attr("item")(), key);
+    return yaml_value(value.attr("item")(), key, depth);
   throw py::type_error("set['" + key + "']: expected a bool, int, float, str, None or a list " +
                        "of them, got " +
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -65,7 +100,7 @@ std::vector<WorldOverride> set_overrides(const py::dict& set) {
 }
 
 World load(const std::filesystem::path& path, const py::dict& set) {
-  const std::vector<WorldOverride> overrides = set_overrides(set);
+  const std::vector<WorldOverride> overrides = reading_file([&] { return set_overrides(set); });
   return {std::make_shared<const WorldSpec>(
               reading_file([&] { return load_world_with(path.string(), overrides); })),
           set_texts(set)};

@@ -22,11 +22,19 @@ struct World {
   std::vector<std::string> changes;
 };
 
+// A Python int as a YAML integer: any value from -2^63 to 2^64 - 1 (a seed may use all 64
+// bits); InputError naming `name` beyond.
+YAML::Node yaml_integer(pybind11::handle value, const std::string& name);
+
 // The override of world key `key` by the Python argument `name`, when it was given.
 template <typename T>
 void add_argument(std::vector<WorldOverride>& overrides, const char* key,
                   const std::optional<T>& value, const char* name) {
   if (value) overrides.push_back(typed_override(key, *value, name));
+}
+inline void add_argument(std::vector<WorldOverride>& overrides, const char* key,
+                         const std::optional<pybind11::int_>& value, const char* name) {
+  if (value) overrides.emplace_back(key, yaml_integer(*value, name), name);
 }
 
 // `world` with `overrides` applied and checked again; InputError (ValueError) when a value

@@ -7,6 +7,7 @@ namespace swarmagg {
 namespace {
 
 std::atomic<int> received{0};
+thread_local const std::atomic<int>* scoped_request = nullptr;
 
 extern "C" void on_signal(int signal_number) {
   received.store(signal_number);
@@ -23,7 +24,8 @@ void install_interrupt_handlers() {
 }
 
 int interrupt_signal() {
-  return received.load(std::memory_order_relaxed);
+  if (const int s = received.load(std::memory_order_relaxed)) return s;
+  return scoped_request != nullptr ? scoped_request->load(std::memory_order_relaxed) : 0;
 }
 
 void throw_if_interrupted() {
@@ -32,6 +34,18 @@ void throw_if_interrupted() {
 
 void set_interrupt_signal(int signal_number) {
   received.store(signal_number);
+}
+
+InterruptScope::InterruptScope(const std::atomic<int>* request) : outer_(scoped_request) {
+  scoped_request = request;
+}
+
+InterruptScope::~InterruptScope() {
+  scoped_request = outer_;
+}
+
+const std::atomic<int>* InterruptScope::current() {
+  return scoped_request;
 }
 
 }  // namespace swarmagg

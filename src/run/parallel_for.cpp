@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include "run/interrupt.hpp"
+
 namespace swarmagg {
 
 void parallel_for(std::size_t count, int threads, const std::function<void(std::size_t)>& task,
@@ -25,7 +27,9 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
     if (!failure) failure = std::move(error);
     next = count;  // hand out no more tasks
   };
+  const std::atomic<int>* stop_request = InterruptScope::current();
   auto work = [&] {
+    const InterruptScope scope(stop_request);
     for (std::size_t i = next++; i < count; i = next++) {
       try {
         task(i);

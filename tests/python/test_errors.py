@@ -67,3 +67,51 @@ def test_rates_of_a_run_without_them_is_a_value_error(demo):
         run.rates()
     with pytest.raises(ValueError, match="partitions"):
         run.partitions()
+
+
+def test_set_values_nested_too_deep_or_holding_themselves_are_world_errors(demo):
+    deep = []
+    inner = deep
+    for _ in range(20000):
+        inner.append([])
+        inner = inner[0]
+    with pytest.raises(sa.WorldError, match=r"robots\.placement.*nested more than 499"):
+        sa.load_world(str(demo), set={"robots.placement": deep})
+    itself = []
+    itself.append(itself)
+    with pytest.raises(sa.WorldError, match="nested more than"):
+        sa.load_world(str(demo), set={"robots.placement": itself})
+
+
+def test_set_values_are_read_as_a_world_file_writes_them(demo):
+    # A float is never a whole number, as 80.0 in a file is not; a str is a quoted scalar.
+    with pytest.raises(sa.WorldError, match=r"robots\.count.*80\.0"):
+        sa.load_world(str(demo), set={"robots.count": 80.0})
+    assert sa.load_world(str(demo), set={"robots.count": "80"}).agents == 80
+    assert sa.load_world(str(demo), set={"run.duration": 2.0}).steps == 20
+    with pytest.raises(sa.WorldError, match=r"robots\.count.*does not fit in 64 bits"):
+        sa.load_world(str(demo), set={"robots.count": 2**70})
+
+
+def test_seeds_take_all_64_bits(demo, cli, tmp_path):
+    largest = 2**64 - 1
+    world = sa.load_world(str(demo), set={"run.duration": 1, "run.seed": largest})
+    assert world.seed == largest
+    run = sa.run(world, replicates=1, seed=largest)
+    assert "run.seed=18446744073709551615" in run.summary()["overrides"]
+    cli("run", demo, "--set", "run.duration=1", "--replicates", "1", "--seed", str(largest),
+        "--out", tmp_path / "cli", "--no-plots", "--no-model", "--quiet")
+    hashes = (tmp_path / "cli" / "summary.json").read_text()
+    assert run.summary()["replicates"][0]["final_state_hash"] in hashes
+    assert sa.Simulation(world, seed=largest).state_hash()
+    for too_large in (sa.run, sa.Simulation):
+        with pytest.raises(ValueError, match="seed.*does not fit in 64 bits"):
+            too_large(world, seed=2**64)
+
+
+def test_a_file_the_system_refuses_is_an_os_error_and_leaves_nothing(demo, tmp_path):
+    folder = tmp_path / "frame.png"
+    folder.mkdir()
+    with pytest.raises(IsADirectoryError, match="frame.png"):
+        sa.Simulation(sa.load_world(str(demo))).render_png(folder)
+    assert [p.name for p in tmp_path.iterdir()] == ["frame.png"]  # no temporary left

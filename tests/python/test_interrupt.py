@@ -70,3 +70,31 @@ def test_ctrl_c_stops_a_sweep_and_leaves_only_complete_runs(demo, tmp_path):
     assert all((p / "world.resolved.yaml").is_file() for p in runs)
     assert not [p for p in out.rglob("*") if p.name.endswith(".tmp")]
     assert not (out / "sweep_timeseries.csv").exists()
+
+
+def test_ctrl_c_stops_only_the_call_it_interrupted(demo):
+    # A run another Python thread has in flight goes on and returns its results.
+    ended = interrupt_child(f"""
+        import threading
+        import swarmagg as sa
+        result = {{}}
+        def other_run():
+            try:
+                run = sa.run(sa.load_world({str(demo)!r}, set={{"run.duration": 3e5}}),
+                             replicates=1, threads=1)
+                result["other"] = len(run.timeseries())
+            except BaseException as error:
+                result["other"] = type(error).__name__
+        other = threading.Thread(target=other_run)
+        other.start()
+        print("calling", flush=True)
+        try:
+            sa.run(sa.load_world({str(demo)!r}, set={FOREVER!r}), replicates=1, threads=1)
+        except KeyboardInterrupt:
+            print("interrupted", "while the other ran" if other.is_alive() else "too late",
+                  flush=True)
+        other.join()
+        print(result["other"], flush=True)
+    """)
+    assert ended.returncode == 0, ended.stderr
+    assert ended.stdout.splitlines() == ["interrupted while the other ran", "300001"]
