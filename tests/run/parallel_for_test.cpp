@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <csignal>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include "run/interrupt.hpp"
 
 namespace swarmagg {
 namespace {
@@ -58,6 +61,25 @@ TEST(ParallelFor, CallsTheWaitingCallbackOnTheCallingThreadUntilDone) {
   EXPECT_TRUE(done.load());
   EXPECT_GE(waits.load(), 1);
   EXPECT_TRUE(on_caller.load());
+}
+
+// A call's stop request (the Python module's Ctrl-C) reaches the workers of its pool, and no
+// thread outside the call.
+TEST(ParallelFor, CarriesTheCallersStopRequestToItsWorkersOnly) {
+  std::atomic<int> request{SIGINT};
+  std::vector<int> seen(8, -1);
+  int outside = -1;
+  {
+    const InterruptScope scope(&request);
+    parallel_for(seen.size(), 3, [&](std::size_t i) { seen[i] = interrupt_signal(); });
+    std::thread([&] { outside = interrupt_signal(); }).join();
+    EXPECT_EQ(interrupt_signal(), SIGINT);
+  }
+  for (const int signal : seen) EXPECT_EQ(signal, SIGINT);
+  EXPECT_EQ(outside, 0);
+  EXPECT_EQ(interrupt_signal(), 0);  // the scope is closed
+  parallel_for(seen.size(), 3, [&](std::size_t i) { seen[i] = interrupt_signal(); });
+  for (const int signal : seen) EXPECT_EQ(signal, 0);
 }
 
 }  // namespace
