@@ -585,6 +585,16 @@ WorldKey flag_key(std::string path, bool fallback, std::string controller) {
       [](const bool& on) { return YAML::Node(on ? "true" : "false"); }, std::move(controller));
 }
 
+namespace {
+
+// One item of a list as a message shows it: its text, or what it is instead of a number.
+std::string shown_item(const YAML::Node& item) {
+  if (item.IsScalar()) return "'" + item.Scalar() + "'";
+  return item.IsSequence() ? "a list" : item.IsMap() ? "a mapping" : "empty";
+}
+
+}  // namespace
+
 WorldKey number_list_key(std::string path, std::vector<double> fallback, double low, double high,
                          std::string controller) {
   const std::string expected = "a list of one or more numbers from " + format_number(low) + " to " +
@@ -596,8 +606,19 @@ WorldKey number_list_key(std::string path, std::vector<double> fallback, double 
         if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
         std::vector<double> values;
         for (const YAML::Node& item : node) {
-          const double v = read_real(item, expected);
-          if (!(v >= low && v <= high)) throw KeyValueError{expected};
+          // The item at fault is named: "got a list" alone reads as if lists were refused.
+          auto wrong_item = [&] {
+            return KeyValueError{expected, "a list whose item " +
+                                               std::to_string(values.size() + 1) + " is " +
+                                               shown_item(item)};
+          };
+          double v = 0.0;
+          try {
+            v = read_real(item, expected);
+          } catch (const KeyValueError&) {
+            throw wrong_item();
+          }
+          if (!(v >= low && v <= high)) throw wrong_item();
           values.push_back(v);
         }
         return values;

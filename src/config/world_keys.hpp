@@ -5,6 +5,7 @@
 // `validate`, the resolved-world writer and the reference page all go through this one table.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "config/world_spec.hpp"
@@ -19,8 +20,13 @@ class Node;
 namespace swarmagg {
 
 // Thrown by a key's reader when a value does not fit; the loader adds file, line and key.
+// `got` says what was wrong where the value as shown would not (one item of a list); empty,
+// the loader shows the value.
 struct KeyValueError {
+  explicit KeyValueError(std::string expected_value, std::string instead = {})
+      : expected(std::move(expected_value)), got(std::move(instead)) {}
   std::string expected;
+  std::string got;
 };
 
 struct WorldKey {

@@ -72,7 +72,7 @@ void apply_value(WorldSpec& spec, const WorldKey& key, const YAML::Node& value,
     key.read(spec, value);
   } catch (const KeyValueError& e) {
     throw InputError(at + ": " + key.path + ": expected " + e.expected + ", got " +
-                     shown_value(value));
+                     (e.got.empty() ? shown_value(value) : e.got));
   } catch (const YAML::Exception& e) {
     throw InputError(at + ": " + key.path + ": expected " + key.expected + ", got " +
                      shown_value(value));

@@ -169,6 +169,11 @@ TEST(CockroachController, ListsMustHoldProbabilities) {
               ::testing::HasSubstr("controller.leave_probability: " + expected));
   EXPECT_THAT(message("stop_probability", "0.5"), ::testing::HasSubstr(expected));
   EXPECT_THAT(message("stop_probability", "[-0.1]"), ::testing::HasSubstr(expected));
+  // The item at fault is named, not just "a list".
+  EXPECT_THAT(message("stop_probability", "[0.5, 1.5]"),
+              ::testing::HasSubstr("got a list whose item 2 is '1.5'"));
+  EXPECT_THAT(message("stop_probability", "[0.5, [1]]"),
+              ::testing::HasSubstr("got a list whose item 2 is a list"));
 }
 
 TEST(CockroachController, ItsKeysAreWrittenBackOnlyForItsWorlds) {
