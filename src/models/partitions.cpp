@@ -1,6 +1,7 @@
 #include "models/partitions.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace swarmagg {
 
@@ -24,6 +25,9 @@ void extend_partitions(int remaining, int largest_part, Partition& prefix,
 }  // namespace
 
 long long partition_count(int n) {
+  constexpr long long kMost = std::numeric_limits<long long>::max();
+  constexpr int kLargestCounted = 405;  // p(406) > kMost; p grows with n
+  if (n > kLargestCounted) return kMost;
   // ways[k]: partitions of k into parts no larger than the part sizes added so far.
   std::vector<long long> ways(std::max(n, 0) + 1, 0);
   ways[0] = 1;

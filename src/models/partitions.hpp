@@ -8,7 +8,8 @@ namespace swarmagg {
 
 using Partition = std::vector<int>;  // parts, decreasing
 
-// How many partitions n has, p(n), without listing them (Euler's recurrence by parts).
+// How many partitions n has, p(n), without listing them (Euler's recurrence by parts); the
+// largest long long when p(n) exceeds it (from n = 406 on), never a wrapped count.
 long long partition_count(int n);
 
 // All partitions of n in reverse lexicographic order: (n), (n-1, 1), ..., (1, ..., 1).

@@ -128,9 +128,10 @@ VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant varia
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
                                     const std::string& variant, const std::vector<double>& start) {
   const int agents = world.robots.count;
-  if (partition_count(agents) > kLargestPartitionChain) {
+  if (const long long states = partition_count(agents); states > kLargestPartitionChain) {
+    const bool beyond = states == std::numeric_limits<long long>::max();
     throw InputError("model: the partition model of " + std::to_string(agents) + " agents has " +
-                     std::to_string(partition_count(agents)) + " states; at most " +
+                     (beyond ? "more than " : "") + std::to_string(states) + " states; at most " +
                      std::to_string(kLargestPartitionChain) + " (N <= 30) are supported");
   }
   const PartitionChain chain = build_partition_chain(rates);

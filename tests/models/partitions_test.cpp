@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <set>
 
@@ -16,6 +17,17 @@ TEST(Partitions, CountsMatchThePartitionNumbers) {
     EXPECT_EQ(integer_partitions(n).size(), count) << "N = " << n;
     EXPECT_EQ(partition_count(n), static_cast<long long>(count)) << "N = " << n;
   }
+}
+
+// p(405) still fits a long long; from 406 on the count saturates instead of wrapping (a
+// wrapped count once passed the model's size check and listed states until memory ran out).
+TEST(Partitions, CountsBeyondALongLongSaturate) {
+  EXPECT_EQ(partition_count(100), 190569292LL);
+  EXPECT_LT(partition_count(405), std::numeric_limits<long long>::max());
+  EXPECT_GT(partition_count(405), partition_count(404));
+  EXPECT_EQ(partition_count(405), 9147679068859117602LL);  // p(405), OEIS A000041
+  for (const int n : {406, 420, 1000, 1000000})
+    EXPECT_EQ(partition_count(n), std::numeric_limits<long long>::max()) << "N = " << n;
 }
 
 TEST(Partitions, EachIsADistinctDecreasingPartitionOfN) {
