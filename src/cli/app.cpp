@@ -37,7 +37,11 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   try {
-    return action ? action() : 0;
+    const int code = action ? action() : 0;
+    // A signal that came during work that does not look for one (the models, gnuplot) still
+    // ends the command as interrupted, not as a success.
+    throw_if_interrupted();
+    return code;
   } catch (const Interrupted& e) {
     std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
     return e.exit_code();

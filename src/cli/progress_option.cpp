@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "run/interrupt.hpp"
+
 namespace swarmagg::cli {
 
 void ProgressOption::add_to(CLI::App& command) {
@@ -18,6 +20,7 @@ bool ProgressOption::shown(bool quiet) const {
 }
 
 void ProgressOption::phase(bool quiet, const std::string& what, const std::string& doing) const {
+  throw_if_interrupted();  // Ctrl-C after the simulation stops before the next phase
   if (shown(quiet)) std::cerr << what << ": " << doing << "...\n" << std::flush;
 }
 

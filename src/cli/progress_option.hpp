@@ -16,7 +16,8 @@ struct ProgressOption {
 
   void add_to(CLI::App& command);
   bool shown(bool quiet) const;
-  // "<what>: <doing>..." on stderr when progress is shown.
+  // "<what>: <doing>..." on stderr when progress is shown; first throws Interrupted when a
+  // signal arrived, so that no phase starts after Ctrl-C.
   void phase(bool quiet, const std::string& what, const std::string& doing) const;
 };
 

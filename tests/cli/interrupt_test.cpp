@@ -87,8 +87,26 @@ class Child {
 
   void send(int signal_number) const { kill(pid_, signal_number); }
 
+  // Reads the output until it holds `text` (kept for wait()); false at the limit or the end.
+  bool wait_for_text(const std::string& text, std::chrono::seconds limit) {
+    const auto deadline = Clock::now() + limit;
+    pollfd pipe_end{reader_, POLLIN, 0};
+    char buffer[4096];
+    while (early_output_.find(text) == std::string::npos) {
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) return false;
+      if (poll(&pipe_end, 1, static_cast<int>(left.count())) <= 0) continue;
+      const ssize_t got = read(reader_, buffer, sizeof buffer);
+      if (got <= 0) return false;
+      early_output_.append(buffer, static_cast<std::size_t>(got));
+    }
+    return true;
+  }
+
   Outcome wait(std::chrono::seconds limit) {
     Outcome outcome;
+    outcome.output = early_output_;
     const auto deadline = Clock::now() + limit;
     pollfd pipe_end{reader_, POLLIN, 0};
     char buffer[4096];
@@ -117,6 +135,7 @@ class Child {
   pid_t pid_ = -1;
   int reader_ = -1;
   bool reaped_ = false;
+  std::string early_output_;  // read by wait_for_text
 };
 
 fs::path fresh_dir(const std::string& name) {
@@ -216,6 +235,24 @@ TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
   const fs::path out = fresh_dir("at-once");
   expect_interrupted(interrupt(long_run(out), SIGINT, std::chrono::milliseconds(0)), 130);
   EXPECT_FALSE(fs::exists(out / "timeseries.csv"));
+  fs::remove_all(out);
+}
+
+// Ctrl-C after the simulation, while the models are computed (which do not look for it):
+// no later phase starts, and the run exits as interrupted, not as a success.
+TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
+  const fs::path out = fresh_dir("model-phase");
+  Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
+               "run.duration=5000", "--set", "model.stochastic_replicates=200", "--progress",
+               "always", "--out", out.string()});
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_text("computing the model predictions", std::chrono::seconds(60)));
+  child.send(SIGINT);
+  const Outcome o = child.wait(std::chrono::seconds(120));
+  expect_interrupted(o, 130);
+  EXPECT_THAT(o.output, ::testing::Not(HasSubstr("drawing the plots")));
+  EXPECT_TRUE(fs::exists(out / "world.resolved.yaml")) << "the simulation's outputs stay";
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   fs::remove_all(out);
 }
 
