@@ -50,6 +50,9 @@ const RealBounds kPositive{0.0, false, std::numeric_limits<double>::infinity(),
                            "a positive number"};
 const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(), "a number >= 0"};
 const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
+// Box2D computes in float: a value beyond float's range becomes infinite there and fails
+// Box2D's own checks (an abort), so it is refused here.
+const RealBounds kBox2dNonNegative{0.0, true, 1e30, "a number from 0 to 1e30"};
 
 double read_bounded_real(const YAML::Node& node, const RealBounds& bounds) {
   const double v = read_real(node, bounds.expected);
@@ -397,12 +400,12 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(described(
       real_key(
           "engine.box2d.repulsion_gain",
-          [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kNonNegative),
+          [](WorldSpec& w) -> double& { return w.engine.box2d.repulsion_gain; }, kBox2dNonNegative),
       "box2d: strength of the push waiting bodies give leaving ones"));
   keys.push_back(described(
       real_key(
           "engine.box2d.linear_damping",
-          [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kNonNegative),
+          [](WorldSpec& w) -> double& { return w.engine.box2d.linear_damping; }, kBox2dNonNegative),
       "box2d: linear damping of every body"));
   keys.push_back(described(
       integer_key<int>(

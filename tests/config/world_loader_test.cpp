@@ -196,6 +196,9 @@ TEST(WorldLoaderErrors, ImpossibleValuesAreRefused) {
   EXPECT_THAT(error_of("arena: {width: 20, height: 20}\nrobots: {count: 1000}\n"),
               HasSubstr("robots.count: 1000 agents"));
   EXPECT_THAT(error_of("controller: {p_leave: 1.5}\n"), HasSubstr("a probability between 0 and 1"));
+  // Box2D's float would make it infinite and abort on its own check.
+  EXPECT_THAT(error_of("engine: {box2d: {linear_damping: 1e39}}\n"),
+              HasSubstr("engine.box2d.linear_damping: expected a number from 0 to 1e30"));
   EXPECT_THAT(error_of("arena: {width: .nan}\n"),
               HasSubstr("arena.width: expected a positive number"));
   EXPECT_THAT(error_of("arena: {width: 1e999}\n"),
