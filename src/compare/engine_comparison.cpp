@@ -10,19 +10,24 @@
 namespace swarmagg {
 namespace {
 
-// Through the key table, so the engine switch is checked like `--set engine.type=...`.
+// Through the key table and the world's checks, so the engine switch is checked like
+// `--set engine.type=...` (a kinematic-only setting such as engine.contact: stop is refused).
 WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
   WorldSpec copy = spec;
   apply_override(copy, typed_override("engine.type", engine, "compare"));
+  check_world(copy);
   return copy;
 }
 
 }  // namespace
 
 EngineComparison compare_engines(const WorldSpec& spec, bool progress) {
+  // Both arms' worlds first: one the other engine cannot run is refused before any run.
+  const WorldSpec on_kinematic = on_engine(spec, "kinematic");
+  const WorldSpec on_box2d = on_engine(spec, "box2d");
   EngineComparison result;
-  result.kinematic = run_arm("kinematic", on_engine(spec, "kinematic"), progress);
-  result.box2d = run_arm("box2d", on_engine(spec, "box2d"), progress);
+  result.kinematic = run_arm("kinematic", on_kinematic, progress);
+  result.box2d = run_arm("box2d", on_box2d, progress);
   result.stats = compare_arms(result.kinematic, result.box2d);
   return result;
 }

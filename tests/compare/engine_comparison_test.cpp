@@ -8,6 +8,7 @@
 
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
+#include "core/errors.hpp"
 #include "plot/gnuplot.hpp"
 #include "testing/scratch_dir.hpp"
 
@@ -35,6 +36,15 @@ TEST(EngineComparison, RunsBothEnginesWithTheSameSeeds) {
   }
   EXPECT_EQ(result.stats.a.label, "kinematic");
   EXPECT_EQ(result.stats.b.label, "box2d");
+}
+
+// A setting only the kinematic engine offers is refused before either arm runs, not after
+// the kinematic one (whose folder would then hold a world Box2D cannot load back).
+TEST(EngineComparison, RefusesAWorldTheBox2dEngineCannotRunBeforeRunning) {
+  WorldSpec world = tiny_world();
+  world.engine.contact = ContactResponse::Stop;
+  EXPECT_THAT([&] { compare_engines(world); },
+              ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("engine.contact")));
 }
 
 TEST(EngineComparison, WritesTheFolder) {
