@@ -31,7 +31,7 @@ std::vector<std::string> WorldOptions::changes() const {
   std::vector<std::string> result = overrides;
   if (engine) result.push_back("engine.type=" + *engine);
   if (replicates) result.push_back("run.replicates=" + std::to_string(*replicates));
-  if (seed) result.push_back("run.seed=" + std::to_string(*seed));
+  if (seed) result.push_back("run.seed=" + *seed);
   return result;
 }
 

@@ -20,7 +20,8 @@ struct WorldOptions {
   std::vector<WorldOverride> typed_overrides;  // from typed options, applied after --set
   std::optional<std::string> engine;
   std::optional<int> replicates;
-  std::optional<std::uint64_t> seed;
+  // As typed: run.seed's own reader checks it (CLI11 would wrap -1 and clamp 2^64 silently).
+  std::optional<std::string> seed;
   std::optional<int> threads;
 
   // Adds WORLD and --set; with `run_options`, also --engine/--replicates/--seed/--threads.

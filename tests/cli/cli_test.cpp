@@ -62,6 +62,20 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_EQ(swarmagg("frobnicate").exit_code, 2);
 }
 
+// --seed is checked as run.seed is: every 64-bit value and nothing else (it was wrapped from
+// -1 and clamped from 2^64 to 2^64 - 1 without a word).
+TEST(Cli, SeedsOutside64BitsAreRefused) {
+  for (const char* seed : {"-1", "18446744073709551616", "1e3"}) {
+    const Outcome o = swarmagg(std::string("validate worlds/examples/demo.yaml --seed ") + seed);
+    EXPECT_EQ(o.exit_code, 2) << seed;
+    EXPECT_THAT(o.output, HasSubstr("--seed: run.seed")) << seed;
+  }
+  const Outcome largest =
+      swarmagg("validate worlds/examples/demo.yaml --seed 18446744073709551615");
+  EXPECT_EQ(largest.exit_code, 0) << largest.output;
+  EXPECT_THAT(largest.output, HasSubstr("seed: 18446744073709551615"));
+}
+
 TEST(Cli, RunWritesTheOutputFolder) {
   const auto out = temp_dir("run");
   const Outcome o = swarmagg(
