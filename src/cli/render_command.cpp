@@ -52,7 +52,10 @@ int render_command(const RenderCommandOptions& options) {
                                            ? std::filesystem::path(options.run_dir) / "frames"
                                            : std::filesystem::path(options.out);
   check_output_folder(folder, options.out.empty() ? "the frame folder" : "--out");
-  if (!options.video.empty()) check_output_file(options.video, "--video");
+  if (!options.video.empty()) {
+    check_output_file(options.video, "--video");
+    check_video_request(options.video, VideoOptions{.fps = options.fps});
+  }
   install_interrupt_handlers();
   FrameRecorder recorder(spec, folder);
   TrajectoryRow row;

@@ -125,7 +125,10 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
   }
-  if (!options.video.empty()) check_output_file(options.video, "--video");
+  if (!options.video.empty()) {
+    check_output_file(options.video, "--video");
+    check_video_request(options.video, VideoOptions{.fps = options.fps});
+  }
 }
 
 int run_command(const RunCommandOptions& options) {

@@ -132,8 +132,8 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
   assemble_video(frames_dir, output, options);
 }
 
-void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
-                    const VideoOptions& options) {
+std::filesystem::path check_video_request(const std::filesystem::path& output,
+                                          const VideoOptions& options) {
   if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 1000.0) {
     throw InputError("video frame rate " + fps_text(options.fps) +
                      ": expected a number of frames per second in (0, 1000]");
@@ -142,23 +142,27 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
     throw InputError("video quality (crf) " + std::to_string(options.crf) +
                      ": expected 0 (best) to 51 (worst)");
   }
-  const std::string extension = lower(output.extension().string());
-  if (extension.empty() || output.stem().empty()) {
+  if (output.extension().empty() || output.stem().empty()) {
     throw InputError("video output '" + output.string() +
                      "' needs a file name with an extension, e.g. swarm.mp4");
   }
+  const std::filesystem::path program = find_program(options.ffmpeg);
+  if (program.empty()) {
+    throw std::runtime_error("cannot assemble a video: '" + options.ffmpeg +
+                             "' is not installed (or not on PATH). Install it with `sudo "
+                             "apt-get install ffmpeg` (Debian/Ubuntu)");
+  }
+  return program;
+}
+
+void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
+                    const VideoOptions& options) {
+  const std::filesystem::path program = check_video_request(output, options);
   if (!std::filesystem::exists(frames_dir / "frame_000000.png")) {
     throw InputError("no frames to assemble in " + frames_dir.string() +
                      " (expected frame_000000.png, frame_000001.png, ...)");
   }
-  const std::filesystem::path program = find_program(options.ffmpeg);
-  if (program.empty()) {
-    throw std::runtime_error(
-        "cannot assemble a video: '" + options.ffmpeg +
-        "' is not installed (or not on PATH). Install it with `sudo apt-get install ffmpeg` "
-        "(Debian/Ubuntu); the PNG frames are kept in " +
-        frames_dir.string());
-  }
+  const std::string extension = lower(output.extension().string());
 
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
   const auto temporary =

@@ -62,6 +62,23 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_EQ(swarmagg("frobnicate").exit_code, 2);
 }
 
+// A video the run could not make is refused before the simulation, not after it.
+TEST(Cli, ABadVideoRequestIsRefusedBeforeTheRun) {
+  const std::filesystem::path dir = temp_dir("video");
+  const std::string out = (dir / "run").string();
+  const std::string run =
+      "run worlds/paper/full-0.0025.yaml --set run.duration=1000000 --render-every 100 --out " +
+      out;
+  const Outcome fps = swarmagg(run + " --video " + out + ".mp4 --fps 0");
+  EXPECT_EQ(fps.exit_code, 2) << fps.output;
+  EXPECT_THAT(fps.output, HasSubstr("video frame rate 0"));
+  const Outcome name = swarmagg(run + " --video " + out + "-without-extension");
+  EXPECT_EQ(name.exit_code, 2) << name.output;
+  EXPECT_THAT(name.output, HasSubstr("needs a file name with an extension"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::filesystem::remove_all(dir);
+}
+
 // --seed is checked as run.seed is: every 64-bit value and nothing else (it was wrapped from
 // -1 and clamped from 2^64 to 2^64 - 1 without a word).
 TEST(Cli, SeedsOutside64BitsAreRefused) {
