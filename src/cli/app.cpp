@@ -3,12 +3,14 @@
 
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "output/hdf5_file.hpp"
 #include "run/interrupt.hpp"
 #include "swarmagg_version.hpp"
 
 namespace swarmagg::cli {
 
 int main(int argc, char** argv) {
+  h5::skip_hdf5_exit_cleanup();
   // Named here, not from argv[0], so the help reads the same however swarmagg was started.
   CLI::App app{"swarmagg: self-organized aggregation in 2D robot swarms", "swarmagg"};
   app.require_subcommand(1);

@@ -9,8 +9,9 @@ namespace {
 using Lock = std::lock_guard<std::recursive_mutex>;
 
 // HDF5 prints its error stack to stderr by default; errors here become exceptions instead.
+// HDF5 keeps its error printing per thread: each thread that calls it is silenced once.
 void silence_hdf5_errors() {
-  static const bool silenced = [] {
+  thread_local const bool silenced = [] {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return true;
   }();
@@ -59,6 +60,10 @@ std::recursive_mutex& hdf5_lock() {
   return lock;
 }
 
+void skip_hdf5_exit_cleanup() {
+  H5dont_atexit();
+}
+
 Handle::Handle(hid_t id, const std::string& what) : id_(id) {
   if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
 }
@@ -66,6 +71,7 @@ Handle::Handle(hid_t id, const std::string& what) : id_(id) {
 Handle::~Handle() {
   if (id_ < 0) return;
   Lock lock(hdf5_lock());
+  silence_hdf5_errors();
   H5Idec_ref(id_);  // closes any kind of object; errors cannot be reported from here
 }
 
@@ -80,6 +86,7 @@ Handle& Handle::operator=(Handle&& other) noexcept {
 void Handle::close() {
   if (id_ < 0) return;
   Lock lock(hdf5_lock());
+  silence_hdf5_errors();
   const hid_t id = std::exchange(id_, -1);
   const bool is_file = H5Iget_type(id) == H5I_FILE;
   check(is_file ? H5Fclose(id) : H5Idec_ref(id), "close an object (disk full?)");
@@ -128,7 +135,9 @@ Handle open_file_read(const std::string& path) {
 
 Handle create_group(const Handle& parent, const std::string& name) {
   Lock lock(hdf5_lock());
-  return Handle(H5Gcreate2(parent.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Handle properties(H5Pcreate(H5P_GROUP_CREATE), "make group properties");
+  check(H5Pset_obj_track_times(properties.id(), false), "untime group " + name);
+  return Handle(H5Gcreate2(parent.id(), name.c_str(), H5P_DEFAULT, properties.id(), H5P_DEFAULT),
                 "create group " + name);
 }
 
@@ -212,6 +221,8 @@ Handle create_dataset(const Handle& parent, const std::string& name, hid_t type,
   // runs it would miss in raw doubles.
   check(H5Pset_shuffle(properties.id()), "shuffle " + name);
   check(H5Pset_deflate(properties.id(), static_cast<unsigned>(deflate_level)), "deflate " + name);
+  // No modification times: the same run writes the same bytes.
+  check(H5Pset_obj_track_times(properties.id(), false), "untime dataset " + name);
   return Handle(H5Dcreate2(parent.id(), name.c_str(), type, space.id(), H5P_DEFAULT,
                            properties.id(), H5P_DEFAULT),
                 "create dataset " + name);

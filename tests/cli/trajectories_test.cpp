@@ -4,10 +4,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "analysis/csv_table.hpp"
 #include "cli/cli_testing.hpp"
@@ -142,6 +144,28 @@ TEST(Trajectories, ARunWithoutTrajectoriesRemovesAnEarlierFile) {
   ASSERT_TRUE(fs::exists(out / "trajectories.h5"));
   ASSERT_EQ(swarmagg("run " + kWorld + " --force --out " + out.string()).exit_code, 0);
   EXPECT_FALSE(fs::exists(out / "trajectories.h5")) << "would not belong to the new run";
+  fs::remove_all(out);
+}
+
+// The same run on one thread writes the same bytes (HDF5 would stamp each object with its
+// creation time). With replicates in parallel the data are the same but their chunks lie in
+// the order the replicates wrote them.
+TEST(Trajectories, TheSameRunOnOneThreadWritesTheSameFile) {
+  const fs::path out = fresh_dir("same-bytes");
+  std::string files[2];
+  for (int k = 0; k < 2; ++k) {
+    const fs::path folder = out / std::to_string(k);
+    const Outcome o = swarmagg(
+        "run worlds/examples/demo.yaml --replicates 2 --threads 1 --set run.duration=150 "
+        "--trajectories 10 --no-model --no-plots --quiet --out " +
+        folder.string());
+    ASSERT_EQ(o.exit_code, 0) << o.output;
+    files[k] = read_all(folder / "trajectories.h5");
+    // HDF5's times have a resolution of a second: the second file is written in another.
+    if (k == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  }
+  EXPECT_FALSE(files[0].empty());
+  EXPECT_TRUE(files[0] == files[1]) << "the two files differ";
   fs::remove_all(out);
 }
 
