@@ -153,6 +153,7 @@ int run_command(const RunCommandOptions& options) {
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
   const MeasuredRun run = run_world_measuring(spec, run_options, options.rates);
   const RunResult& result = run.result;
+  if (options.force) clear_earlier_run(out);
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
   if (trajectories) {

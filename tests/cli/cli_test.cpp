@@ -62,6 +62,28 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_EQ(swarmagg("frobnicate").exit_code, 2);
 }
 
+// --force replaces the earlier run whole: its model, rates and plots do not stay beside a run
+// that writes none of them (its plots drew the old model against the new run).
+TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
+  const std::filesystem::path out = temp_dir("force");
+  const std::string run =
+      "run worlds/examples/demo.yaml --set run.duration=30 --replicates 2 "
+      "--quiet --no-plots --out " +
+      out.string();
+  ASSERT_EQ(swarmagg(run + " --rates").exit_code, 0);
+  for (const char* name : {"model.csv", "rates.csv", "rates-escape.gp", "model-timeseries"})
+    ASSERT_TRUE(std::filesystem::exists(out / name)) << name;
+  std::ofstream(out / "notes.txt") << "mine\n";
+  const Outcome again = swarmagg(run + " --force --no-model --set robots.count=10");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  for (const char* name : {"model.csv", "rates.csv", "rates.json", "rates-escape.gp",
+                           "rates-escape.csv", "model-timeseries"})
+    EXPECT_FALSE(std::filesystem::exists(out / name)) << name;
+  for (const char* name : {"world.resolved.yaml", "timeseries.csv", "summary.json", "notes.txt"})
+    EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
+  std::filesystem::remove_all(out);
+}
+
 // A video the run could not make is refused before the simulation, not after it.
 TEST(Cli, ABadVideoRequestIsRefusedBeforeTheRun) {
   const std::filesystem::path dir = temp_dir("video");
