@@ -29,4 +29,18 @@ std::optional<PngSize> png_size(const std::filesystem::path& file) {
   return PngSize{big_endian(header.data() + 16), big_endian(header.data() + 20)};
 }
 
+bool png_complete(const std::filesystem::path& file) {
+  // The IEND chunk: length 0, its type, and the CRC of the type.
+  constexpr std::array<unsigned char, 12> kEnd{0,   0,   0,    0,    'I',  'E',
+                                               'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  if (!png_size(file)) return false;
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in || in.tellg() < static_cast<std::streamoff>(kSignature.size() + kEnd.size()))
+    return false;
+  std::array<unsigned char, 12> end{};
+  in.seekg(-static_cast<std::streamoff>(end.size()), std::ios::end);
+  if (!in.read(reinterpret_cast<char*>(end.data()), end.size())) return false;
+  return end == kEnd;
+}
+
 }  // namespace swarmagg

@@ -14,4 +14,8 @@ struct PngSize {
 // The size, or nothing when the file is missing or does not start like a PNG.
 std::optional<PngSize> png_size(const std::filesystem::path& file);
 
+// Whether the file is a whole PNG: a PNG's start, and its last chunk the empty IEND (a file
+// cut short by a full disk lacks it).
+bool png_complete(const std::filesystem::path& file);
+
 }  // namespace swarmagg

@@ -52,6 +52,22 @@ TEST(PngPlot, PngSizeRejectsFilesThatAreNotPngs) {
   EXPECT_FALSE(png_size(folder / "missing.png").has_value());
 }
 
+// A PNG cut short (a full disk) is told from a whole one by its missing IEND chunk.
+TEST(PngPlot, PngCompleteTellsAWholeFileFromATruncatedOne) {
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const auto folder = fresh_folder("complete");
+  std::ofstream(folder / "data.csv") << "x,y\n1,2\n2,4\n";
+  run_gnuplot(folder / "whole.gp", png_preamble(PlotSize{200, 100}, "whole.png", "whole") +
+                                       "plot 'data.csv' skip 1 using 1:2 with lines\n");
+  EXPECT_TRUE(png_complete(folder / "whole.png"));
+  const auto size = std::filesystem::file_size(folder / "whole.png");
+  std::filesystem::copy_file(folder / "whole.png", folder / "cut.png");
+  std::filesystem::resize_file(folder / "cut.png", size - 20);
+  EXPECT_TRUE(png_size(folder / "cut.png").has_value());  // its start is a PNG's
+  EXPECT_FALSE(png_complete(folder / "cut.png"));
+  EXPECT_FALSE(png_complete(folder / "missing.png"));
+}
+
 TEST(PngPlot, GnuplotErrorsCarryGnuplotsMessage) {
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
   const auto folder = fresh_folder("error");
