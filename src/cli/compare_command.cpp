@@ -46,7 +46,7 @@ void add_compare_command(CLI::App& app, Action& action) {
   options->world.add_to(*command, false);  // no --engine: compare runs both
   command->add_option("--replicates", options->world.replicates,
                       "Replicates per engine (run.replicates)");
-  command->add_option("--seed", options->world.seed, "World seed (run.seed)");
+  command->add_option("--seed", options->world.seed, "World seed (run.seed)")->type_name("UINT");
   command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
   command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");

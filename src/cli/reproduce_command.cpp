@@ -53,9 +53,11 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   command
       ->add_option("--engine", r.engine, "Engine for every world: kinematic or box2d (engine.type)")
       ->check(CLI::IsMember({"kinematic", "box2d"}));
-  command->add_option("--threads", r.threads,
-                      "Threads in all (0 = all cores): runs go side by side, one thread each, "
-                      "as long as there are more runs than threads");
+  command
+      ->add_option("--threads", r.threads,
+                   "Threads in all (0 = all cores): runs go side by side, one thread each, "
+                   "as long as there are more runs than threads")
+      ->check(CLI::Range(0, 1024));
   command->add_option("--only", r.only,
                       "Only the worlds whose name contains this text (repeatable)");
   command->add_option("--set", r.overrides,
@@ -67,8 +69,11 @@ void add_reproduce_command(CLI::App& app, Action& action) {
       ->check(CLI::PositiveNumber);
   command->add_option("--worlds", options->worlds,
                       "Folder of the paper worlds (default worlds/paper)");
-  command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)");
-  command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)");
+  // Checked before the runs: gnuplot would fail on them only at the end.
+  command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)")
+      ->check(CLI::Range(200, 8000));
+  command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)")
+      ->check(CLI::Range(150, 8000));
   command->add_flag("--run-plots", r.run_plots,
                     "Also draw each run's rate plots (rates-<term>.png); without it their "
                     "gnuplot scripts and CSVs are written, and 'gnuplot rates-<term>.gp' in the "

@@ -93,7 +93,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
       ->required();
   command->add_option("--out", options->out, "Output folder (default runs/<sweep name>)");
   command->add_option("--threads", options->threads, "Runs in parallel (0 = all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1024));  // as run.threads
   command->add_option("--shard", options->shard,
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");

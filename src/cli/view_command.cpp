@@ -55,7 +55,7 @@ void add_view_command(CLI::App& app, Action& action) {
   options->world.add_to(*command, false);
   command->add_option("--engine", options->world.engine,
                       "Engine: kinematic or box2d (engine.type)");
-  command->add_option("--seed", options->world.seed, "World seed (run.seed)");
+  command->add_option("--seed", options->world.seed, "World seed (run.seed)")->type_name("UINT");
   command->add_option("--replicate", options->replicate,
                       "Which replicate to run (its generator is the one `run` gives it)");
   command->add_option(

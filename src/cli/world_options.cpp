@@ -13,7 +13,7 @@ void WorldOptions::add_to(CLI::App& command, bool run_options) {
   if (!run_options) return;
   command.add_option("--engine", engine, "Engine: kinematic or box2d (engine.type)");
   command.add_option("--replicates", replicates, "Number of replicates (run.replicates)");
-  command.add_option("--seed", seed, "World seed (run.seed)");
+  command.add_option("--seed", seed, "World seed (run.seed)")->type_name("UINT");
   command.add_option("--threads", threads, "Threads (run.threads; 0 = all cores)");
 }
 
