@@ -5,8 +5,8 @@
 #
 #   examples/slurm/submit.sh SWEEP.yaml [SHARDS] [SBATCH_OPTION ...]
 #
-# Results go to $RESULTS (default results/<sweep name>): shard-<i>/ per task, logs/, and the
-# merged sweep_timeseries.csv, sweep_summary.csv and sweep.json. Options after SHARDS go to
+# Results go to $RESULTS (default results/<sweep file name without .yaml>): shard-<i>/ per
+# task, logs/, and the merged sweep_timeseries.csv, sweep_summary.csv and sweep.json. Options after SHARDS go to
 # both sbatch calls and override the #SBATCH lines (e.g. --cpus-per-task=4 --partition=short).
 # Running it again with the same SHARDS resumes: completed runs are skipped. If a task fails
 # or is cancelled, the merge is cancelled too (nothing waits forever); submit again.

@@ -56,7 +56,9 @@ class Run:
     def model(self) -> pd.DataFrame:
         """model.csv: every model variant's predictions, tidy (model, variant, step, time,
         quantity, value); the `measured` variants too when run with rates=True. No rows (the
-        header only, as the CLI's model.csv) when no model describes the world."""
+        header only, as the CLI's model.csv) when no model describes the world; ValueError
+        when the world's model cannot be computed (a partition model of more than 30
+        agents)."""
         return frame(self._text("model_csv"))
 
     def partitions(self) -> pd.DataFrame:

@@ -51,6 +51,11 @@ int main(int argc, char** argv) {
     std::cerr << "swarmagg: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
+    // Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's.
+    if (const int signal_number = interrupt_signal()) {
+      std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
+      return Interrupted(signal_number).exit_code();
+    }
     std::cerr << "swarmagg: error: " << e.what() << "\n";
     return 1;
   }

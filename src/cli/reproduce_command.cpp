@@ -69,11 +69,12 @@ void add_reproduce_command(CLI::App& app, Action& action) {
       ->check(CLI::PositiveNumber);
   command->add_option("--worlds", options->worlds,
                       "Folder of the paper worlds (default worlds/paper)");
-  // Checked before the runs: gnuplot would fail on them only at the end.
+  // Checked before the runs, not by gnuplot after them: at least a pixel, at most what a
+  // cairo surface holds.
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)")
-      ->check(CLI::Range(200, 8000));
+      ->check(CLI::Range(1, 32767));
   command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)")
-      ->check(CLI::Range(150, 8000));
+      ->check(CLI::Range(1, 32767));
   command->add_flag("--run-plots", r.run_plots,
                     "Also draw each run's rate plots (rates-<term>.png); without it their "
                     "gnuplot scripts and CSVs are written, and 'gnuplot rates-<term>.gp' in the "

@@ -19,6 +19,7 @@
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
 #include "render/video.hpp"
+#include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
@@ -153,7 +154,10 @@ int run_command(const RunCommandOptions& options) {
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
   const MeasuredRun run = run_world_measuring(spec, run_options, options.rates);
   const RunResult& result = run.result;
-  if (options.force) clear_earlier_run(out);
+  if (options.force) {
+    for (const std::string& failure : clear_earlier_run(out))
+      std::cerr << "warning: cannot remove the earlier run's " << failure << "\n";
+  }
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
   if (trajectories) {

@@ -12,9 +12,10 @@
 namespace swarmagg {
 namespace {
 
-[[noreturn]] void fail(const std::string& what, const std::filesystem::path& path,
+// Errors name the output, not its temporary (which is gone by then).
+[[noreturn]] void fail(const std::string& what, const std::filesystem::path& target,
                        int error = errno) {
-  throw std::system_error(error, std::generic_category(), what + " " + path.string());
+  throw std::system_error(error, std::generic_category(), what + " " + target.string());
 }
 
 }  // namespace
@@ -42,13 +43,13 @@ std::filesystem::path temporary_beside(const std::filesystem::path& target) {
 
 void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target) {
   const int fd = ::open(temporary.c_str(), O_RDONLY);
-  if (fd < 0) fail("cannot open", temporary);
+  if (fd < 0) fail("cannot write", target);
   const bool synced = ::fsync(fd) == 0;
   const int sync_error = errno;
   ::close(fd);
   if (!synced) {
     discard_temporary(temporary);
-    fail("cannot sync", temporary, sync_error);
+    fail("cannot write", target, sync_error);
   }
   rename_or_discard(temporary, target);
 }
@@ -57,14 +58,14 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
   const auto temporary = temporary_beside(target);
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) fail("cannot create", temporary);
+  if (file == nullptr) fail("cannot write", target);
   const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
   const bool flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
   const int write_error = errno;
   if (std::fclose(file) != 0 || !written || !flushed) {
     const int error = written && flushed ? errno : write_error;
     discard_temporary(temporary);
-    fail("cannot write", temporary, error);
+    fail("cannot write", target, error);
   }
   rename_or_discard(temporary, target);
 }

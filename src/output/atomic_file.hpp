@@ -17,8 +17,7 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
 // Renames the complete `temporary` over `target` (no sync: for outputs cheap to make again,
 // such as frames). When the system refuses (a folder of that name, say), the temporary is
 // removed and std::system_error names `target`: a failed output leaves nothing behind.
-void rename_or_discard(const std::filesystem::path& temporary,
-                       const std::filesystem::path& target);
+void rename_or_discard(const std::filesystem::path& temporary, const std::filesystem::path& target);
 // Removes a temporary that will not become its output, whatever removing it says.
 void discard_temporary(const std::filesystem::path& temporary);
 

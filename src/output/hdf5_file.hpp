@@ -19,12 +19,13 @@ namespace swarmagg::h5 {
 
 std::recursive_mutex& hdf5_lock();
 
-// An hid_t that closes itself (H5Fclose, H5Gclose, ... chosen by the id's type).
-// A program that writes HDF5 files calls this first: HDF5's own clean-up at exit closes again
-// the objects whose close failed (a full disk) and crashes doing so; every file is closed
-// here explicitly, so the clean-up has nothing to do in a program that went well.
+// The CLI calls this first: HDF5's own clean-up at exit closes again the objects whose close
+// failed (a full disk) and crashes doing so; every file is closed here explicitly, so the
+// clean-up has nothing to do in a program that went well. (Not in the Python module, whose
+// process may share the library with h5py.)
 void skip_hdf5_exit_cleanup();
 
+// An hid_t that closes itself (H5Fclose, H5Gclose, ... chosen by the id's type).
 class Handle {
  public:
   Handle() = default;

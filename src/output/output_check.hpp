@@ -1,8 +1,8 @@
 #pragma once
 // Output paths are checked before any work: a run of a day must not end by finding that
 // its folder cannot be written. Each check creates what is missing, writes and removes a
-// probe file (and the folders it made), and throws InputError naming the option, the path and the reason in plain
-// words (exit 2), never a raw filesystem message.
+// probe file (and the folders it made), and throws InputError naming the option, the path and the
+// reason in plain words (exit 2), never a raw filesystem message.
 #include <filesystem>
 #include <string>
 

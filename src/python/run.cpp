@@ -96,7 +96,7 @@ class RunOutput {
 };
 
 RunOutput run(const World& world, std::optional<long long> replicates,
-              std::optional<py::int_> seed, std::optional<long long> threads,
+              std::optional<py::object> seed, std::optional<long long> threads,
               std::optional<std::string> engine, bool rates) {
   std::vector<WorldOverride> overrides;
   add_argument(overrides, "engine.type", engine, "engine");
@@ -110,7 +110,7 @@ RunOutput run(const World& world, std::optional<long long> replicates,
   World named = ran;
   if (engine) named.changes.push_back("engine.type=" + *engine);
   if (replicates) named.changes.push_back("run.replicates=" + std::to_string(*replicates));
-  if (seed) named.changes.push_back("run.seed=" + py::str(*seed).cast<std::string>());
+  if (seed) named.changes.push_back("run.seed=" + yaml_index(*seed, "seed").Scalar());
   return RunOutput(std::move(named), std::move(result));
 }
 

@@ -36,7 +36,7 @@ using Size = std::optional<std::pair<int, int>>;
 
 class Simulation {
  public:
-  Simulation(const World& world, std::optional<py::int_> seed, int replicate,
+  Simulation(const World& world, std::optional<py::object> seed, int replicate,
              std::optional<std::string> engine)
       : world_(world_for(world, seed, engine)) {
     if (replicate < 0)
@@ -105,7 +105,7 @@ class Simulation {
   const World& world() const { return world_; }
 
  private:
-  static World world_for(const World& world, std::optional<py::int_> seed,
+  static World world_for(const World& world, std::optional<py::object> seed,
                          std::optional<std::string> engine) {
     std::vector<WorldOverride> overrides;
     add_argument(overrides, "engine.type", engine, "engine");
@@ -148,7 +148,7 @@ void bind_simulation(py::module_& module) {
       "One replicate of `world`, stepped by hand: the replicate `swarmagg run` runs with the "
       "same seed and index. The state attributes are read-only numpy views of the "
       "simulation's own arrays, valid until the next step() (take .copy() to keep one).")
-      .def(py::init<const World&, std::optional<py::int_>, int, std::optional<std::string>>(),
+      .def(py::init<const World&, std::optional<py::object>, int, std::optional<std::string>>(),
            py::arg("world"), py::arg("seed") = py::none(), py::arg("replicate") = 0,
            py::arg("engine") = py::none())
       .def("step", &Simulation::step, py::arg("steps") = 1,

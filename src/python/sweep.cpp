@@ -19,8 +19,8 @@ namespace swarmagg::python {
 namespace {
 
 py::dict sweep(const std::string& path, std::optional<std::string> out, int threads) {
-  if (threads < 0)
-    throw InputError("threads: expected 0 (all cores) or more, got " + std::to_string(threads));
+  if (threads < 0 || threads > 1024)  // as run.threads and the CLI's sweep --threads
+    throw InputError("threads: expected 0 (all cores) to 1024, got " + std::to_string(threads));
   const SweepPlan plan = reading_file([&] { return load_sweep(path); });
   SweepOptions options;
   options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;

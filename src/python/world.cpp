@@ -25,8 +25,16 @@ YAML::Node yaml_integer(py::handle value, const std::string& name) {
     if (!PyErr_Occurred()) return YAML::Node(unsigned_value);
     PyErr_Clear();
   }
-  throw InputError(name + ": " + py::str(value).cast<std::string>() +
-                   " does not fit in 64 bits");
+  throw InputError(name + ": " + py::str(value).cast<std::string>() + " does not fit in 64 bits");
+}
+
+YAML::Node yaml_index(py::handle value, const std::string& name) {
+  if (py::isinstance<py::bool_>(value))
+    throw py::type_error(name + ": expected an integer, got a bool");
+  // Any integer Python can use as an index (numpy's too); a float is a TypeError.
+  PyObject* index = PyNumber_Index(value.ptr());
+  if (index == nullptr) throw py::error_already_set();
+  return yaml_integer(py::reinterpret_steal<py::object>(index), name);
 }
 
 namespace {
@@ -63,7 +71,7 @@ YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
     return list;
   }
   if (py::hasattr(value, "dtype") && py::hasattr(value, "item"))
-    return yaml_value(value.attr("item")(), key, depth);
+    return yaml_value(value.attr("item")(), key, depth + 1);  // an array may hold itself
   throw py::type_error("set['" + key + "']: expected a bool, int, float, str, None or a list " +
                        "of them, got " +
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());

@@ -32,9 +32,13 @@ void add_argument(std::vector<WorldOverride>& overrides, const char* key,
                   const std::optional<T>& value, const char* name) {
   if (value) overrides.push_back(typed_override(key, *value, name));
 }
+// A Python integer argument (an int, or any integer with __index__ such as numpy's; a bool
+// or a float is a TypeError) as a YAML integer, by yaml_integer.
+YAML::Node yaml_index(pybind11::handle value, const std::string& name);
+
 inline void add_argument(std::vector<WorldOverride>& overrides, const char* key,
-                         const std::optional<pybind11::int_>& value, const char* name) {
-  if (value) overrides.emplace_back(key, yaml_integer(*value, name), name);
+                         const std::optional<pybind11::object>& value, const char* name) {
+  if (value) overrides.emplace_back(key, yaml_index(*value, name), name);
 }
 
 // `world` with `overrides` applied and checked again; InputError (ValueError) when a value

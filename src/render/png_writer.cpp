@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
@@ -87,9 +88,8 @@ void write_png(const std::filesystem::path& target, int width, int height,
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
   const auto temporary = temporary_beside(target);
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) {
-    throw std::runtime_error("cannot create " + temporary.string() + ": " + std::strerror(errno));
-  }
+  if (file == nullptr)
+    throw std::system_error(errno, std::generic_category(), "cannot write " + target.string());
   ErrorSink sink;
   const bool encoded =
       encode(file, width, height, rgba.data(), compression_level, opaque(rgba), sink);
@@ -100,8 +100,9 @@ void write_png(const std::filesystem::path& target, int width, int height,
   const bool closed = std::fclose(file) == 0;
   if (!encoded || !flushed || !closed) {
     discard_temporary(temporary);
-    throw std::runtime_error("cannot write " + target.string() + ": " +
-                             (encoded ? std::strerror(saved_errno) : sink.message));
+    if (!encoded) throw std::runtime_error("cannot write " + target.string() + ": " + sink.message);
+    throw std::system_error(flushed ? errno : saved_errno, std::generic_category(),
+                            "cannot write " + target.string());
   }
   rename_or_discard(temporary, target);
 }

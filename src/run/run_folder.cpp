@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
 
 #include "config/world_keys.hpp"
 #include "config/world_writer.hpp"
@@ -134,29 +132,6 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
 
 std::filesystem::path default_run_folder(const WorldSpec& spec) {
   return std::filesystem::path("runs") / spec.name;
-}
-
-void clear_earlier_run(const std::filesystem::path& out) {
-  std::error_code error;
-  if (!std::filesystem::is_directory(out, error)) return;
-  std::filesystem::remove(out / "world.resolved.yaml");
-  for (const char* name :
-       {"timeseries.csv", "summary.json", "partitions.csv", "model.csv", "rates.csv", "rates.json",
-        "noa.png", "states.png", "sizes.png", "partitions.png"}) {
-    std::filesystem::remove(out / name);
-  }
-  for (const char* folder : {"model-timeseries", "plots"})
-    std::filesystem::remove_all(out / folder);
-  // The rate plots: rates-<term>.png, with their .gp and .csv.
-  std::vector<std::filesystem::path> rate_plots;
-  for (const auto& entry : std::filesystem::directory_iterator(out)) {
-    const std::string name = entry.path().filename().string();
-    const std::string extension = entry.path().extension().string();
-    if (name.starts_with("rates-") &&
-        (extension == ".png" || extension == ".gp" || extension == ".csv"))
-      rate_plots.push_back(entry.path());
-  }
-  for (const auto& path : rate_plots) std::filesystem::remove(path);
 }
 
 }  // namespace swarmagg

@@ -27,11 +27,4 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
 // runs/<world name> unless --out says otherwise.
 std::filesystem::path default_run_folder(const WorldSpec& spec);
 
-// Removes what an earlier run left in `out` (`run --force`), world.resolved.yaml first so the
-// folder reads incomplete meanwhile: its model.csv, rates, partitions and plots would
-// otherwise stay beside a run that writes none of them (`--no-model`, no `--rates`, another
-// controller), and the new plots would draw the old model. trajectories.h5 and the frames
-// are their writers' to replace. Other files in the folder are left alone.
-void clear_earlier_run(const std::filesystem::path& out);
-
 }  // namespace swarmagg

@@ -74,12 +74,14 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
   for (const char* name : {"model.csv", "rates.csv", "rates-escape.gp", "model-timeseries"})
     ASSERT_TRUE(std::filesystem::exists(out / name)) << name;
   std::ofstream(out / "notes.txt") << "mine\n";
+  std::ofstream(out / "rates-notes.csv") << "mine\n";  // not one of the run's rate terms
   const Outcome again = swarmagg(run + " --force --no-model --set robots.count=10");
   ASSERT_EQ(again.exit_code, 0) << again.output;
   for (const char* name : {"model.csv", "rates.csv", "rates.json", "rates-escape.gp",
                            "rates-escape.csv", "model-timeseries"})
     EXPECT_FALSE(std::filesystem::exists(out / name)) << name;
-  for (const char* name : {"world.resolved.yaml", "timeseries.csv", "summary.json", "notes.txt"})
+  for (const char* name :
+       {"world.resolved.yaml", "timeseries.csv", "summary.json", "notes.txt", "rates-notes.csv"})
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
   std::filesystem::remove_all(out);
 }
@@ -89,8 +91,7 @@ TEST(Cli, ABadVideoRequestIsRefusedBeforeTheRun) {
   const std::filesystem::path dir = temp_dir("video");
   const std::string out = (dir / "run").string();
   const std::string run =
-      "run worlds/paper/full-0.0025.yaml --set run.duration=1000000 --render-every 100 --out " +
-      out;
+      "run worlds/paper/full-0.0025.yaml --set run.duration=50 --render-every 100 --out " + out;
   const Outcome fps = swarmagg(run + " --video " + out + ".mp4 --fps 0");
   EXPECT_EQ(fps.exit_code, 2) << fps.output;
   EXPECT_THAT(fps.output, HasSubstr("video frame rate 0"));

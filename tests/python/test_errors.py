@@ -1,5 +1,6 @@
 """Errors arrive as exceptions: WorldError with the CLI's message, ValueError for arguments."""
 
+import numpy as np
 import pytest
 
 import swarmagg as sa
@@ -81,6 +82,10 @@ def test_set_values_nested_too_deep_or_holding_themselves_are_world_errors(demo)
     itself.append(itself)
     with pytest.raises(sa.WorldError, match="nested more than"):
         sa.load_world(str(demo), set={"robots.placement": itself})
+    array_holding_itself = np.empty((), object)
+    array_holding_itself[()] = array_holding_itself
+    with pytest.raises(sa.WorldError, match="nested more than"):
+        sa.load_world(str(demo), set={"arena.width": array_holding_itself})
 
 
 def test_set_values_are_read_as_a_world_file_writes_them(demo):
@@ -104,6 +109,11 @@ def test_seeds_take_all_64_bits(demo, cli, tmp_path):
     hashes = (tmp_path / "cli" / "summary.json").read_text()
     assert run.summary()["replicates"][0]["final_state_hash"] in hashes
     assert sa.Simulation(world, seed=largest).state_hash()
+    # Any integer with __index__ (numpy's) is a seed; a bool or a float is not.
+    assert "run.seed=3" in sa.run(world, replicates=1, seed=np.int64(3)).summary()["overrides"]
+    for not_a_seed in (True, 1.5):
+        with pytest.raises(TypeError):
+            sa.run(world, seed=not_a_seed)
     for too_large in (sa.run, sa.Simulation):
         with pytest.raises(ValueError, match="seed.*does not fit in 64 bits"):
             too_large(world, seed=2**64)

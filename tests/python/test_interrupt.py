@@ -80,7 +80,7 @@ def test_ctrl_c_stops_only_the_call_it_interrupted(demo):
         result = {{}}
         def other_run():
             try:
-                run = sa.run(sa.load_world({str(demo)!r}, set={{"run.duration": 3e5}}),
+                run = sa.run(sa.load_world({str(demo)!r}, set={{"run.duration": 1.5e5}}),
                              replicates=1, threads=1)
                 result["other"] = len(run.timeseries())
             except BaseException as error:
@@ -97,4 +97,4 @@ def test_ctrl_c_stops_only_the_call_it_interrupted(demo):
         print(result["other"], flush=True)
     """)
     assert ended.returncode == 0, ended.stderr
-    assert ended.stdout.splitlines() == ["interrupted while the other ran", "300001"]
+    assert ended.stdout.splitlines() == ["interrupted while the other ran", "150001"]

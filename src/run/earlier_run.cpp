@@ -1,0 +1,48 @@
+#include "run/earlier_run.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <system_error>
+
+namespace swarmagg {
+namespace {
+
+// The terms in the first column of a rates.csv, each once.
+std::vector<std::string> rate_terms(const std::filesystem::path& rates_csv) {
+  std::vector<std::string> terms;
+  std::ifstream in(rates_csv);
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    const std::string term = line.substr(0, line.find(','));
+    if (!term.empty() && std::find(terms.begin(), terms.end(), term) == terms.end())
+      terms.push_back(term);
+  }
+  return terms;
+}
+
+}  // namespace
+
+std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
+  std::vector<std::string> failures;
+  auto remove = [&](const std::filesystem::path& path) {
+    std::error_code error;
+    std::filesystem::remove_all(path, error);
+    if (error) failures.push_back(path.string() + ": " + error.message());
+  };
+  std::error_code missing;
+  if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing)) return failures;
+  remove(out / "world.resolved.yaml");
+  for (const std::string& term : rate_terms(out / "rates.csv")) {
+    for (const char* extension : {".png", ".gp", ".csv"})
+      remove(out / ("rates-" + term + extension));
+  }
+  for (const char* name :
+       {"timeseries.csv", "summary.json", "partitions.csv", "model.csv", "rates.csv", "rates.json",
+        "noa.png", "states.png", "sizes.png", "partitions.png", "model-timeseries", "plots"}) {
+    remove(out / name);
+  }
+  return failures;
+}
+
+}  // namespace swarmagg

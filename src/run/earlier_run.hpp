@@ -1,0 +1,22 @@
+#pragma once
+// What `run --force` does to the run already in its folder: once the new simulation has
+// finished (Ctrl-C before then leaves the earlier run whole), the earlier run's outputs go,
+// so that none of them stays beside a run that writes no such file (its model.csv beside a
+// `--no-model` run, whose plots would draw the old model; its rates beside a run without
+// `--rates`). world.resolved.yaml goes first, so the folder reads incomplete meanwhile.
+//
+// Removed: the run's own files by name, its rates-<term> files for the terms its rates.csv
+// lists, and its own folders plots/ and model-timeseries/ whole. Other files in the folder
+// (yours) stay; trajectories.h5 and frames/ are their writers' to replace. A folder without
+// world.resolved.yaml holds no complete run: nothing is removed.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace swarmagg {
+
+// Returns what could not be removed ("path: reason"), for the caller to warn about: the new
+// run's outputs are written anyway.
+std::vector<std::string> clear_earlier_run(const std::filesystem::path& out);
+
+}  // namespace swarmagg
