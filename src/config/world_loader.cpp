@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -199,6 +201,9 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source) {
 }
 
 std::string read_file(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(path + ": is a folder; expected a world file (YAML)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the world file (does it exist?)");
   std::ostringstream text;

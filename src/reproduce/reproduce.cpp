@@ -13,6 +13,7 @@
 #include "config/world_loader.hpp"
 #include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
+#include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/partition_plot.hpp"
 #include "rates/rates_csv.hpp"
@@ -28,6 +29,16 @@
 
 namespace swarmagg {
 namespace {
+
+// The message for --only patterns that no paper world's name contains, naming the worlds.
+std::string no_world_selected(const std::vector<std::string>& patterns) {
+  std::string asked, worlds;
+  for (const std::string& p : patterns) asked += (asked.empty() ? "'" : ", '") + p + "'";
+  for (const PaperFigure& figure : paper_figures()) {
+    for (const std::string& world : figure.worlds) worlds += (worlds.empty() ? "" : ", ") + world;
+  }
+  return "--only: no paper world's name contains " + asked + "; the worlds are " + worlds;
+}
 
 constexpr const char* kPlotFolder = "plots";  // under --out, beside REPORT.md
 
@@ -311,6 +322,8 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
   const std::vector<PaperFigure> figures = select_worlds(paper_figures(), options.only);
   const std::vector<TimeoutRun> timeouts =
       timeout_series_selected(options) ? timeout_runs() : std::vector<TimeoutRun>{};
+  // An empty report would read as a reproduction in which nothing was checked.
+  if (figures.empty() && timeouts.empty()) throw InputError(no_world_selected(options.only));
   const std::vector<ReproduceJob> jobs = reproduce_jobs(options, figures, timeouts);
   const ThreadSplit split = split_threads(options.threads, jobs.size());
   RunOptions run_options;

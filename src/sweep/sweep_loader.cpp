@@ -151,7 +151,8 @@ class SweepReader {
     const std::string at = where(source_, node);
     if (!node.IsMap() || node.size() == 0) {
       throw InputError(at + ": parameters: expected a mapping of world key paths to lists of " +
-                       "values, e.g. {robots.count: [50, 100]}, got " + shown(node));
+                       "values, e.g. {robots.count: [50, 100]}, got " +
+                       (node.IsMap() ? std::string("an empty mapping") : shown(node)));
     }
     std::vector<SweepParameter> parameters;
     for (const auto& entry : node) {

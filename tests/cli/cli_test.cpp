@@ -60,6 +60,14 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_THAT(bad.output, HasSubstr("robots.radius"));
   EXPECT_EQ(swarmagg("run").exit_code, 2);
   EXPECT_EQ(swarmagg("frobnicate").exit_code, 2);
+  const Outcome folder = swarmagg("validate worlds");
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_THAT(folder.output, HasSubstr("worlds: is a folder; expected a world file"));
+  // A reproduction of no world would be an empty report that reads as a success.
+  const Outcome none = swarmagg("reproduce --quick --only no-such-world --out " +
+                                temp_dir("reproduce-none").string());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.output, HasSubstr("--only: no paper world's name contains 'no-such-world'"));
 }
 
 // --force replaces the earlier run whole: its model, rates and plots do not stay beside a run

@@ -111,7 +111,9 @@ TEST_F(SweepLoaderTest, RefusesMissingOrBrokenParts) {
               AllOf(HasSubstr("grid.yaml:1:7: base:"), HasSubstr("none.yaml")));
   EXPECT_THAT(refusal("base: worlds/tiny.yaml\nparameters: {robots.count: [10]}\nseed: -1\n"),
               AllOf(HasSubstr("grid.yaml:3:7"), HasSubstr("seed")));
-  EXPECT_THAT(refusal("base: worlds/tiny.yaml\nparameters: {}\n"), HasSubstr("parameters:"));
+  EXPECT_THAT(refusal("base: worlds/tiny.yaml\nparameters: {}\n"),
+              HasSubstr("parameters: expected a mapping of world key paths to lists of values, "
+                        "e.g. {robots.count: [50, 100]}, got an empty mapping"));
   EXPECT_THAT(refusal("base: [\n"), HasSubstr("YAML syntax error"));
   EXPECT_THAT(
       refusal("base: worlds/tiny.yaml\nparameters:\n  robots.count: [1]\n  robots.count: [2]\n"),
