@@ -8,6 +8,14 @@
 #include "swarmagg_version.hpp"
 
 namespace swarmagg::cli {
+namespace {
+
+int interrupted(int signal_number) {
+  std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
+  return Interrupted(signal_number).exit_code();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   h5::skip_hdf5_exit_cleanup();
@@ -45,17 +53,13 @@ int main(int argc, char** argv) {
     throw_if_interrupted();
     return code;
   } catch (const Interrupted& e) {
-    std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
-    return e.exit_code();
+    return interrupted(e.signal_number());
   } catch (const InputError& e) {
     std::cerr << "swarmagg: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
     // Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's.
-    if (const int signal_number = interrupt_signal()) {
-      std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
-      return Interrupted(signal_number).exit_code();
-    }
+    if (const int signal_number = interrupt_signal()) return interrupted(signal_number);
     std::cerr << "swarmagg: error: " << e.what() << "\n";
     return 1;
   }

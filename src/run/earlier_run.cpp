@@ -7,7 +7,8 @@
 namespace swarmagg {
 namespace {
 
-// The terms in the first column of a rates.csv, each once.
+// The terms in the first column of a rates.csv, each once. Read leniently, not with read_csv,
+// which refuses a damaged file: that would throw after the new simulation and lose it.
 std::vector<std::string> rate_terms(const std::filesystem::path& rates_csv) {
   std::vector<std::string> terms;
   std::ifstream in(rates_csv);

@@ -11,6 +11,7 @@ class Interrupted : public std::runtime_error {
   explicit Interrupted(int signal_number)
       : std::runtime_error("interrupted"), signal_number_(signal_number) {}
   int exit_code() const { return 128 + signal_number_; }
+  int signal_number() const { return signal_number_; }
 
  private:
   int signal_number_;
