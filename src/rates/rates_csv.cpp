@@ -10,6 +10,10 @@ namespace swarmagg {
 
 namespace {
 
+// Bounds that keep the casts to int and uint64 defined (and far above any real run).
+constexpr double kMaxSize = 1e9;
+constexpr double kMaxEvents = 1e15;
+
 constexpr const char* kHeader =
     "term,size,events,exposure,rate,ci_low,ci_high,model,variant,model_rate";
 
@@ -54,27 +58,34 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
   std::vector<RateRow> rows;
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const std::vector<std::string>& cells = table.rows[i];
-    const std::string where = file.string() + ": line " + std::to_string(i + 2);
-    if (cells.size() < 7) throw InputError(where + ": expected 10 columns");
-    auto number = [&](std::size_t column) {
-      double value = 0.0;
-      try {
-        value = table.number(i, column);
-      } catch (const std::exception&) {
-        throw InputError(where + ": column " + table.header[column] + ": expected a number");
+    const std::string where = file.string() + ": line " + std::to_string(table.line_of.at(i));
+    // Every quantity of the file is a count, a duration or a rate: a hand-edited negative or
+    // infinite value would otherwise flow into the model as -inf or nan in model.csv.
+    auto number = [&](std::size_t column, bool may_be_empty) {
+      const double value = table.number(i, column);  // names file, line and column
+      const bool empty = std::isnan(value) && cells.at(column).empty();
+      if ((empty && !may_be_empty) || (!empty && !(std::isfinite(value) && value >= 0.0))) {
+        throw InputError(where + ": column " + table.header[column] +
+                         ": expected a finite number >= 0, got '" + cells.at(column) + "'");
       }
-      if (column >= 2 && column < 4 && std::isnan(value)) {
-        throw InputError(where + ": column " + table.header[column] + ": expected a number");
+      return value;
+    };
+    auto whole_number = [&](std::size_t column, double low, double high) {
+      const double value = number(column, false);
+      if (value != std::floor(value) || value < low || value > high) {
+        throw InputError(where + ": column " + table.header[column] + ": expected a whole number " +
+                         csv_number(low) + " to " + csv_number(high) + ", got '" +
+                         cells.at(column) + "'");
       }
       return value;
     };
     RateRow row{.term = cells.at(0)};
-    if (!cells.at(1).empty()) row.size = static_cast<int>(number(1));
-    row.estimate.events = static_cast<std::uint64_t>(number(2));
-    row.estimate.exposure = number(3);
+    if (!cells.at(1).empty()) row.size = static_cast<int>(whole_number(1, 1, kMaxSize));
+    row.estimate.events = static_cast<std::uint64_t>(whole_number(2, 0, kMaxEvents));
+    row.estimate.exposure = number(3, false);
     for (const auto& [column, field] :
          {std::pair{4, &row.estimate.rate}, {5, &row.estimate.low}, {6, &row.estimate.high}}) {
-      const double value = number(static_cast<std::size_t>(column));
+      const double value = number(static_cast<std::size_t>(column), true);
       if (!std::isnan(value)) *field = value;
     }
     if (!rows.empty() && rows.back().term == row.term && rows.back().size == row.size) {
@@ -82,7 +93,7 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
       rows.pop_back();
     }
     if (cells.size() > 9 && !cells[7].empty()) {
-      row.models.push_back({cells[7], cells[8], number(9)});
+      row.models.push_back({cells[7], cells[8], number(9, false)});
     }
     rows.push_back(row);
   }
