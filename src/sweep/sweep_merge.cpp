@@ -1,10 +1,9 @@
 #include "sweep/sweep_merge.hpp"
 
-#include <charconv>
-#include <fstream>
-#include <sstream>
+#include <algorithm>
 #include <stdexcept>
 
+#include "analysis/csv_table.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
@@ -26,14 +25,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string csv_prefix(const std::vector<std::string>& fields) {
   std::string text;
   for (const std::string& field : fields) text += field + ",";
@@ -52,34 +43,52 @@ std::vector<std::string> point_values(const SweepPoint& point) {
   return values;
 }
 
+std::string joined(const std::vector<std::string>& fields, std::size_t from) {
+  std::string text;
+  for (std::size_t k = from; k < fields.size(); ++k) text += (k > from ? "," : "") + fields[k];
+  return text;
+}
+
 // One merged CSV: the parameter columns, then a run file's columns, whose first column is
-// the replicate (always 0 in a sweep run's folder: a run is one replicate).
+// the replicate (always 0 in a sweep run's folder: a run is one replicate). Shard files are
+// read as tables: a row cut short or a cell that is not a number (outside `text_columns`)
+// stops the merge naming the file, line and column, rather than being copied into results.
 class MergedCsv {
  public:
-  MergedCsv(const std::vector<std::string>& keys, std::string file_header)
-      : file_header_(std::move(file_header)), text_(csv_prefix(keys) + file_header_ + "\n") {}
+  MergedCsv(const std::vector<std::string>& keys, std::string file_header,
+            std::vector<std::size_t> text_columns = {})
+      : file_header_(std::move(file_header)),
+        text_columns_(std::move(text_columns)),
+        text_(csv_prefix(keys) + file_header_ + "\n") {}
 
-  // Appends the file's rows; returns its last row.
-  std::string append(const std::filesystem::path& file, const std::string& prefix, int replicate) {
-    const std::vector<std::string> lines = split(read_text(file), '\n');
-    if (lines.front() != file_header_) {
+  // Appends the file's rows; returns its last row's fields (none when it has no rows).
+  std::vector<std::string> append(const std::filesystem::path& file, const std::string& prefix,
+                                  int replicate) {
+    const CsvTable table = read_csv(file);
+    if (joined(table.header, 0) != file_header_) {
       throw std::runtime_error(file.string() + ": expected the header '" + file_header_ + "'");
     }
-    std::string last;
-    for (std::size_t i = 1; i < lines.size(); ++i) {
-      if (lines[i].empty()) continue;
-      last = lines[i];
-      text_ += prefix + std::to_string(replicate) + lines[i].substr(lines[i].find(',')) + "\n";
+    for (std::size_t row = 0; row < table.rows.size(); ++row) {
+      check_numbers(table, row);
+      text_ += prefix + std::to_string(replicate) + "," + joined(table.rows[row], 1) + "\n";
     }
     appended_ = true;
-    return last;
+    return table.rows.empty() ? std::vector<std::string>{} : table.rows.back();
   }
 
   bool appended() const { return appended_; }
   const std::string& text() const { return text_; }
 
  private:
+  void check_numbers(const CsvTable& table, std::size_t row) const {
+    for (std::size_t column = 0; column < table.header.size(); ++column) {
+      if (std::find(text_columns_.begin(), text_columns_.end(), column) == text_columns_.end())
+        table.number(row, column);  // throws naming the file, line and column
+    }
+  }
+
   std::string file_header_;
+  std::vector<std::size_t> text_columns_;
   std::string text_;
   bool appended_ = false;
 };
@@ -121,22 +130,15 @@ std::vector<std::filesystem::path> run_locations(
       "); run the missing shards (or resume the sweep) first");
 }
 
-std::vector<double> final_observables(const std::string& last_row,
+// The observables of a run's last timeseries row (its cells already checked as numbers).
+std::vector<double> final_observables(const std::vector<std::string>& last_row,
                                       const std::filesystem::path& file) {
   std::vector<double> values;
-  const std::vector<std::string> fields = split(last_row, ',');
-  if (fields.size() != split(kTimeseriesHeader, ',').size()) {
-    throw std::runtime_error(file.string() + ": malformed or missing last row '" + last_row + "'");
+  for (std::size_t k = 3; k < last_row.size(); ++k) {  // after replicate, step, time
+    if (last_row[k].empty()) throw std::runtime_error(file.string() + ": no last row of values");
+    values.push_back(std::stod(last_row[k]));
   }
-  for (std::size_t k = 3; k < fields.size(); ++k) {  // after replicate, step, time
-    double value = 0.0;
-    const auto [end, error] =
-        std::from_chars(fields[k].data(), fields[k].data() + fields[k].size(), value);
-    if (error != std::errc() || end != fields[k].data() + fields[k].size()) {
-      throw std::runtime_error(file.string() + ": malformed last row '" + last_row + "'");
-    }
-    values.push_back(value);
-  }
+  if (values.empty()) throw std::runtime_error(file.string() + ": no rows");
   return values;
 }
 
@@ -156,14 +158,15 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   const std::vector<std::string> keys = parameter_keys(plan);
   MergedCsv timeseries(keys, kTimeseriesHeader);
   // partitions_csv of no replicates is exactly the header run folders carry.
-  MergedCsv partitions(keys, split(partitions_csv(RunResult{}, 1), '\n').front());
+  // The partition column ("4+2+1") is the one that is not a number.
+  MergedCsv partitions(keys, split(partitions_csv(RunResult{}, 1), '\n').front(), {1});
   std::vector<PointFinals> finals;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const SweepRun& run = runs[i];
     if (run.replicate == 0) finals.push_back({point_values(run.point), {}});
     const std::string prefix = csv_prefix(finals.back().values);
     const auto file = locations[i] / "timeseries.csv";
-    const std::string last = timeseries.append(file, prefix, run.replicate);
+    const std::vector<std::string> last = timeseries.append(file, prefix, run.replicate);
     finals.back().replicates.push_back(final_observables(last, file));
     if (std::filesystem::exists(locations[i] / "partitions.csv")) {
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);

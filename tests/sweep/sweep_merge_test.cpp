@@ -2,6 +2,8 @@
 
 #include <gmock/gmock.h>
 
+#include <fstream>
+
 #include "core/errors.hpp"
 #include "sweep/sweep_loader.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -11,6 +13,7 @@
 namespace swarmagg {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using testing::read_file_text;
 using ::testing::StartsWith;
@@ -90,6 +93,26 @@ TEST_F(SweepMergeTest, RefusesMissingRunsAndForeignSweeps) {
       ::testing::ThrowsMessage<InputError>(HasSubstr("holds a different sweep")));
   EXPECT_THAT([&] { merge_sweep({dir_ / "nowhere"}, dir_ / "m"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("not a sweep output folder")));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
+}
+
+TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
+  run(testing::kGridSweep, "full");
+  const std::filesystem::path file =
+      dir_ / "full/runs/robots.count=10,controller.p_leave=0.001/rep-1/timeseries.csv";
+  const std::string good = read_file_text(file);
+  // Line 3's noa cell (column 4) made a word, then the line cut short after its time.
+  const std::size_t line3 = good.find('\n', good.find('\n') + 1) + 1;
+  const std::size_t noa = good.find(',', good.find(',', good.find(',', line3) + 1) + 1) + 1;
+  std::string damaged = good;
+  damaged.replace(noa, good.find(',', noa) - noa, "many");
+  std::ofstream(file, std::ios::binary) << damaged;
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(
+                  AllOf(HasSubstr(file.string() + ":3"), HasSubstr("'noa'"), HasSubstr("'many'"))));
+  std::ofstream(file, std::ios::binary) << good.substr(0, good.find(',', noa - 1) + 0);
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr(file.string() + ":3")));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
 }
 
