@@ -1,7 +1,14 @@
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <new>
+#include <optional>
 
 #include "cli/commands.hpp"
+#include "config/did_you_mean.hpp"
 #include "core/errors.hpp"
 #include "output/hdf5_file.hpp"
 #include "run/interrupt.hpp"
@@ -13,6 +20,27 @@ namespace {
 int interrupted(int signal_number) {
   std::cerr << "swarmagg: interrupted; completed outputs are intact\n";
   return Interrupted(signal_number).exit_code();
+}
+
+// CLI11 would call a misspelt command "a subcommand is required" (it takes the word for a
+// stray argument): name the word and the nearest command instead.
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  std::vector<std::string> commands;
+  for (const CLI::App* command : app.get_subcommands({})) commands.push_back(command->get_name());
+  const std::string word = argv[1];
+  if (std::find(commands.begin(), commands.end(), word) != commands.end()) return std::nullopt;
+  std::string message = "swarmagg: unknown command '" + word + "'";
+  if (const auto nearest = closest_name(word, commands))
+    message += "; did you mean '" + *nearest + "'?";
+  return message + " (swarmagg --help lists the commands)";
+}
+
+// What was printed must have reached its reader: a full disk or a closed pipe behind `>`
+// otherwise ends a command such as `validate` or `keys` with success and an empty file.
+bool standard_output_written() {
+  std::cout.flush();
+  return !std::cout.fail() && std::fflush(stdout) == 0 && !std::ferror(stdout);
 }
 
 }  // namespace
@@ -40,6 +68,10 @@ int main(int argc, char** argv) {
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_help_command(app, action);
+  if (const auto message = unknown_command(app, argc, argv)) {
+    std::cerr << *message << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -51,12 +83,22 @@ int main(int argc, char** argv) {
     // A signal that came during work that does not look for one (the models, gnuplot) still
     // ends the command as interrupted, not as a success.
     throw_if_interrupted();
+    if (!standard_output_written()) {
+      std::cerr << "swarmagg: error: cannot write to standard output: " << std::strerror(errno)
+                << "\n";
+      return 1;
+    }
     return code;
   } catch (const Interrupted& e) {
     return interrupted(e.signal_number());
   } catch (const InputError& e) {
     std::cerr << "swarmagg: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "swarmagg: error: out of memory: the world (agents, replicates run at once) or "
+                 "the sweep needs more memory than this machine gives; use fewer agents, fewer "
+                 "--threads or a smaller sweep\n";
+    return 1;
   } catch (const std::exception& e) {
     // Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's.
     if (const int signal_number = interrupt_signal()) return interrupted(signal_number);

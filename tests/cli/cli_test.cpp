@@ -51,6 +51,16 @@ TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
   EXPECT_THAT(o.output, HasSubstr("isolated_wait: resume"));
 }
 
+// A world printed onto a full disk is not a success.
+TEST(Cli, OutputThatCannotBeWrittenIsAFailure) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  for (const char* command : {"validate worlds/examples/demo.yaml", "keys"}) {
+    const Outcome o = swarmagg::testing::run_swarmagg(command, "", "/dev/full");
+    EXPECT_EQ(o.exit_code, 1) << command;
+    EXPECT_THAT(o.output, HasSubstr("cannot write to standard output")) << command;
+  }
+}
+
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const Outcome missing = swarmagg("run /nonexistent.yaml");
   EXPECT_EQ(missing.exit_code, 2);
@@ -59,7 +69,12 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_THAT(bad.output, HasSubstr("robots.radius"));
   EXPECT_EQ(swarmagg("run").exit_code, 2);
-  EXPECT_EQ(swarmagg("frobnicate").exit_code, 2);
+  const Outcome misspelt = swarmagg("rnu worlds/examples/demo.yaml");
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_THAT(misspelt.output, HasSubstr("unknown command 'rnu'; did you mean 'run'?"));
+  const Outcome unknown = swarmagg("frobnicate");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.output, HasSubstr("unknown command 'frobnicate'"));
   const Outcome folder = swarmagg("validate worlds");
   EXPECT_EQ(folder.exit_code, 2);
   EXPECT_THAT(folder.output, HasSubstr("worlds: is a folder; expected a world file"));

@@ -17,10 +17,13 @@ struct CliOutcome {
 };
 
 // Runs `swarmagg <arguments>` through the shell and waits for it; `environment` holds
-// assignments for the child only (e.g. "PATH=/x").
-inline CliOutcome run_swarmagg(const std::string& arguments, const std::string& environment = "") {
+// assignments for the child only (e.g. "PATH=/x"); `stdout_to`, a file that takes standard
+// output instead of `output` (which then holds stderr alone).
+inline CliOutcome run_swarmagg(const std::string& arguments, const std::string& environment = "",
+                               const std::string& stdout_to = "") {
+  const std::string redirection = stdout_to.empty() ? " 2>&1" : " 2>&1 >" + stdout_to;
   const std::string command =
-      environment + " " + std::string(SWARMAGG_BINARY) + " " + arguments + " 2>&1";
+      environment + " " + std::string(SWARMAGG_BINARY) + " " + arguments + redirection;
   CliOutcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return outcome;
