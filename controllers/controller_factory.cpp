@@ -20,7 +20,8 @@ std::optional<Vec2> heading_away(std::span<const Neighbour> neighbours, double r
     lengths += nb.distance;
   }
   const double length = norm(towards);
-  if (length > 1e-12 && length > enclosed_fraction * lengths) return towards * (-1.0 / length);
+  if (length > 1e-12 * lengths && length > enclosed_fraction * lengths)
+    return towards * (-1.0 / length);
   return std::nullopt;
 }
 

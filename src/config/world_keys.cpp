@@ -50,6 +50,12 @@ const RealBounds kPositive{0.0, false, std::numeric_limits<double>::infinity(),
                            "a positive number"};
 const RealBounds kNonNegative{0.0, true, std::numeric_limits<double>::infinity(), "a number >= 0"};
 const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
+// Lengths (u) and speeds (u per tu) are computed with their squares and products (event
+// times solve quadratics in them): within these bounds every such term stays a normal double,
+// and the kinematic engine gives the same run, bit for bit, at any power-of-two scale of every
+// length (tested). Far outside, squares overflow or vanish and the physics silently breaks.
+const RealBounds kLength{1e-30, true, 1e30, "a length from 1e-30 to 1e30"};
+const RealBounds kLengthOrZero{0.0, true, 1e30, "a number from 0 to 1e30"};
 // Box2D computes in float: a value beyond float's range becomes infinite there and fails
 // Box2D's own checks (an abort), so it is refused here.
 const RealBounds kBox2dNonNegative{0.0, true, 1e30, "a number from 0 to 1e30"};
@@ -177,16 +183,14 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   return {std::move(path), "text", expected, read, write, {}, {}, {}};
 }
 
-// A positive length whose default follows another key (written back resolved).
+// A length whose default follows another key (written back resolved).
 WorldKey optional_length_key(std::string path, Access<std::optional<double>> access,
                              std::function<double(const WorldSpec&)> resolved) {
   auto read = [access](WorldSpec& w, const YAML::Node& node) {
-    const double v = read_real(node, kPositive.expected);
-    if (!(v > 0.0)) throw KeyValueError{kPositive.expected};
-    access(w) = v;
+    access(w) = read_bounded_real(node, kLength);
   };
   auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
-  return {std::move(path), "number", kPositive.expected, read, write, {}, {}, {}};
+  return {std::move(path), "number", kLength.expected, read, write, {}, {}, {}};
 }
 
 WorldKey name_key() {
@@ -261,13 +265,13 @@ std::vector<WorldKey> build_keys() {
   constexpr long long kMaxInt = 1'000'000'000;
   std::vector<WorldKey> keys;
   keys.push_back(described(name_key(), "the world's name; the default run folder is runs/<name>/"));
+  keys.push_back(
+      described(real_key(
+                    "arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kLength),
+                "arena width W, u"));
   keys.push_back(described(
       real_key(
-          "arena.width", [](WorldSpec& w) -> double& { return w.arena.width; }, kPositive),
-      "arena width W, u"));
-  keys.push_back(described(
-      real_key(
-          "arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kPositive),
+          "arena.height", [](WorldSpec& w) -> double& { return w.arena.height; }, kLength),
       "arena height H, u"));
   keys.push_back(
       described(enum_key<Topology>("arena.topology",
@@ -281,16 +285,16 @@ std::vector<WorldKey> build_keys() {
       "number of agents N; without it, a placement list sets it"));
   keys.push_back(described(
       real_key(
-          "robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kPositive),
+          "robots.radius", [](WorldSpec& w) -> double& { return w.robots.radius; }, kLength),
       "body radius r, u"));
   keys.push_back(
       described(real_key(
                     "robots.detection_radius",
-                    [](WorldSpec& w) -> double& { return w.robots.detection_radius; }, kPositive),
+                    [](WorldSpec& w) -> double& { return w.robots.detection_radius; }, kLength),
                 "detection radius s, centre to centre, u; at least 2 robots.radius"));
   keys.push_back(described(
       real_key(
-          "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kNonNegative),
+          "robots.speed", [](WorldSpec& w) -> double& { return w.robots.speed; }, kLengthOrZero),
       "speed v, u per tu"));
   keys.push_back(
       described(placement_key(),
@@ -325,7 +329,7 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(described(
       real_key(
           "controller.approach_radius",
-          [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kPositive),
+          [](WorldSpec& w) -> double& { return w.controller.approach_radius; }, kLength),
       "soysal: approach radius s_a, u; a searcher moves towards the nearest agent within it"));
   keys.push_back(described(
       real_key(
@@ -377,7 +381,7 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(described(
       real_key(
           "controller.compaction.tolerance",
-          [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kNonNegative),
+          [](WorldSpec& w) -> double& { return w.controller.compaction.tolerance; }, kLengthOrZero),
       "net spring force below which a waiting agent stands still, u"));
   // Each registered controller's own keys follow the shared controller keys.
   for (const ControllerCatalogEntry& entry : controller_catalog()) {

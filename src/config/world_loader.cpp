@@ -388,6 +388,15 @@ void check_world(const WorldSpec& spec) {
                    " but must be below robots.detection_radius (" + format_number(s) +
                    "); set it, or controller.compaction.enabled: false");
   }
+  // Box2D's contact solver works with fixed tolerances in world units (a linear slop of
+  // 0.005 u, b2_linearSlop): bodies must be much larger than that for contacts to hold.
+  constexpr double kBox2dSmallestRadius = 0.05;
+  if (spec.engine.type == EngineType::Box2D && robots.radius < kBox2dSmallestRadius) {
+    impossible(spec, "robots.radius",
+               "is " + format_number(robots.radius) + " but the Box2D engine needs at least " +
+                   format_number(kBox2dSmallestRadius) +
+                   " (its contact tolerance is 0.005 u; scale the world's lengths up)");
+  }
   // Box2D's solver always slides bodies along their contacts.
   if (spec.engine.type == EngineType::Box2D && spec.engine.contact == ContactResponse::Stop) {
     impossible(spec, "engine.contact",
@@ -402,6 +411,14 @@ void check_world(const WorldSpec& spec) {
   }
   if (robots.speed * spec.engine.dt > 0.25 * min_side) {
     impossible(spec, "robots.speed", "moves an agent more than a quarter of the arena per step");
+  }
+  // A move shorter than this is lost in the rounding of positions across the arena.
+  if (robots.speed > 0.0 && robots.speed * spec.engine.dt < 1e-12 * longest) {
+    impossible(spec, "robots.speed",
+               "moves an agent less than 10^-12 of the arena per step (robots.speed * "
+               "engine.dt = " +
+                   format_number(robots.speed * spec.engine.dt) +
+                   "); positions cannot resolve such moves");
   }
   if (spec.render.replicate >= spec.run.replicates && spec.render.every > 0) {
     impossible(spec, "render.replicate",

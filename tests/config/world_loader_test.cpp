@@ -116,11 +116,11 @@ TEST(WorldLoaderErrors, ContactResponseIsCheckedAgainstTheEngine) {
 
 TEST(WorldLoaderErrors, CompactionValuesAreChecked) {
   EXPECT_THAT(error_of("controller: {compaction: {spacing: 0}}\n"),
-              HasSubstr("controller.compaction.spacing: expected a positive number"));
+              HasSubstr("controller.compaction.spacing: expected a length from 1e-30 to 1e30"));
   EXPECT_THAT(error_of("controller: {compaction: {gain: -1}}\n"),
               HasSubstr("controller.compaction.gain: expected a positive number"));
   EXPECT_THAT(error_of("controller: {compaction: {tolerance: -0.1}}\n"),
-              HasSubstr("controller.compaction.tolerance: expected a number >= 0"));
+              HasSubstr("controller.compaction.tolerance: expected a number from 0 to 1e30"));
   EXPECT_THAT(error_of("controller: {compaction: {spacing: 4}}\n"),
               HasSubstr("controller.compaction.spacing: is 4 but must be below "
                         "robots.detection_radius (4)"));
@@ -189,7 +189,7 @@ TEST(WorldLoaderErrors, WrongTypesSayWhatWasExpected) {
 
 TEST(WorldLoaderErrors, ImpossibleValuesAreRefused) {
   EXPECT_THAT(error_of("robots: {radius: -1}\n"),
-              HasSubstr("robots.radius: expected a positive number"));
+              HasSubstr("robots.radius: expected a length from 1e-30 to 1e30"));
   EXPECT_THAT(error_of("engine: {dt: 0}\n"), HasSubstr("engine.dt: expected a positive number"));
   EXPECT_THAT(error_of("robots: {radius: 3, detection_radius: 4}\n"),
               HasSubstr("robots.detection_radius: must be at least twice robots.radius"));
@@ -200,9 +200,9 @@ TEST(WorldLoaderErrors, ImpossibleValuesAreRefused) {
   EXPECT_THAT(error_of("engine: {box2d: {linear_damping: 1e39}}\n"),
               HasSubstr("engine.box2d.linear_damping: expected a number from 0 to 1e30"));
   EXPECT_THAT(error_of("arena: {width: .nan}\n"),
-              HasSubstr("arena.width: expected a positive number"));
+              HasSubstr("arena.width: expected a length from 1e-30 to 1e30"));
   EXPECT_THAT(error_of("arena: {width: 1e999}\n"),
-              HasSubstr("arena.width: expected a positive number"));
+              HasSubstr("arena.width: expected a length from 1e-30 to 1e30"));
   EXPECT_THAT(error_of("robots: {count: 99999999999999999999}\n"), HasSubstr("robots.count"));
 }
 

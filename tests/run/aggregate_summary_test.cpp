@@ -132,7 +132,8 @@ WorldSpec packed_world(std::uint64_t seed) {
 TEST(AggregateSummary, APackedAggregateSplitsItsAttemptsIntoInsideAndRim) {
   int inside_seen = 0, rim_seen = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    Replicate replicate(packed_world(seed), 0);
+    const WorldSpec world = packed_world(seed);
+    Replicate replicate(world, 0);
     while (replicate.leave_episodes().tally().attempts.total() == 0 &&
            replicate.steps_done() < replicate.spec().steps())
       replicate.step();
