@@ -103,6 +103,29 @@ std::string describe_status(int status) {
   return "status " + std::to_string(status);
 }
 
+// The frames ffmpeg's pattern reads are frame_000000.png on, up to the first missing
+// number: a gap would silently end the video there, so it is refused, naming the gap.
+void check_frames_contiguous(const std::filesystem::path& frames_dir) {
+  std::vector<long> numbers;
+  for (const auto& entry : std::filesystem::directory_iterator(frames_dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() != 16 || name.rfind("frame_", 0) != 0 || name.substr(12) != ".png") continue;
+    const std::string digits = name.substr(6, 6);
+    if (std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); }))
+      numbers.push_back(std::stol(digits));
+  }
+  std::sort(numbers.begin(), numbers.end());
+  for (std::size_t k = 0; k < numbers.size(); ++k) {
+    if (numbers[k] != static_cast<long>(k)) {
+      char missing[32];
+      std::snprintf(missing, sizeof missing, "frame_%06ld.png", static_cast<long>(k));
+      throw InputError(frames_dir.string() + ": " + missing + " is missing but " +
+                       std::to_string(numbers.size() - k) +
+                       " later frames exist; the video would end at the gap");
+    }
+  }
+}
+
 }  // namespace
 
 std::filesystem::path find_program(std::string_view name) {
@@ -162,6 +185,7 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
     throw InputError("no frames to assemble in " + frames_dir.string() +
                      " (expected frame_000000.png, frame_000001.png, ...)");
   }
+  check_frames_contiguous(frames_dir);
   const std::string extension = lower(output.extension().string());
 
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
@@ -197,7 +221,9 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
   args.push_back(temporary.string());
 
   const SpawnResult result = run(program, args);
-  if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0) {
+  // ffmpeg runs with -loglevel error, so anything it says is an error; some (a trailer that
+  // did not fit on a full disk) leave it exiting 0 with an unplayable file.
+  if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0 || !result.errors.empty()) {
     discard_temporary(temporary);
     throw std::runtime_error("ffmpeg failed (" + describe_status(result.status) + ") making " +
                              output.string() + ": " + result.errors);

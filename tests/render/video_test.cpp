@@ -67,6 +67,44 @@ TEST(AssembleVideo, RejectsBadInput) {
   EXPECT_THROW(assemble_video(scratch.path(), scratch.path() / "out.mp4", options), InputError);
 }
 
+TEST(AssembleVideo, RefusesFramesWithAGap) {
+  testing::ScratchDir scratch("video-gap");
+  record_frames(scratch.path(), 4);
+  std::filesystem::remove(scratch.path() / "frame_000002.png");
+  try {
+    assemble_video(scratch.path(), scratch.path() / "out.mp4", 25.0);
+    FAIL() << "a video of the frames before the gap was made";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("frame_000002.png is missing but 1 later frames exist"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// ffmpeg exits 0 when the disk fills while it writes the trailer, saying so on stderr: that is
+// a failure, and its unplayable file is not left behind.
+TEST(AssembleVideo, AnErrorFfmpegReportsIsAFailureWhateverItsExitStatus) {
+  testing::ScratchDir scratch("video-silent-failure");
+  record_frames(scratch.path() / "frames", 2);
+  const auto fake = scratch.path() / "ffmpeg";
+  std::ofstream(fake) << "#!/bin/sh\nfor last; do :; done\necho partial > \"$last\"\n"
+                         "echo 'Error writing trailer: No space left on device' >&2\nexit 0\n";
+  std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+  VideoOptions options;
+  options.ffmpeg = fake.string();
+  try {
+    assemble_video(scratch.path() / "frames", scratch.path() / "out.mp4", options);
+    FAIL() << "reported success";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(scratch.path())) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "frames" || name == "ffmpeg") << "left behind: " << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "out.mp4"));
+}
+
 TEST(AssembleVideo, MakesAnMp4FromTheFrames) {
   if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
   // A directory name with characters a shell or ffmpeg's pattern syntax would misread.
