@@ -151,6 +151,13 @@ bool has_child(const Handle& parent, const std::string& name) {
   return H5Lexists(parent.id(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
+void copy_object(const Handle& source, const std::string& name, const Handle& destination) {
+  Lock lock(hdf5_lock());
+  check(
+      H5Ocopy(source.id(), name.c_str(), destination.id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+      "copy " + name + " (disk full?)");
+}
+
 void write_attribute(const Handle& object, const std::string& name, const std::string& value) {
   Lock lock(hdf5_lock());
   // A variable-length UTF-8 string: h5py reads it as a Python str.

@@ -52,6 +52,9 @@ Handle open_file_read(const std::string& path);
 Handle create_group(const Handle& parent, const std::string& name);
 Handle open_group(const Handle& parent, const std::string& name);
 bool has_child(const Handle& parent, const std::string& name);
+// Copies the object `name` (a group with everything below it) of `source` into `destination`
+// under the same name. Compressed chunks move as they are: nothing is compressed again.
+void copy_object(const Handle& source, const std::string& name, const Handle& destination);
 
 void write_attribute(const Handle& object, const std::string& name, const std::string& value);
 void write_attribute(const Handle& object, const std::string& name, std::int64_t value);

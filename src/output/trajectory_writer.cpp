@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +22,11 @@ h5::Handle make_dataset(const h5::Handle& group, const char* name, std::int64_t 
                             layout::kDeflateLevel);
 }
 
+// A replicate's scratch file: ".trajectories.h5.replicate_<r>.<pid>.<n>.tmp" beside the target.
+std::filesystem::path scratch_file_for(const std::filesystem::path& target, int replicate) {
+  return temporary_beside(target.string() + "." + layout::group_name(replicate));
+}
+
 template <typename T>
 void write_block(const h5::Handle& dataset, std::int64_t first_row, std::int64_t count,
                  const std::vector<T>& values) {
@@ -29,11 +35,17 @@ void write_block(const h5::Handle& dataset, std::int64_t first_row, std::int64_t
 
 }  // namespace
 
-ReplicateTrajectory::ReplicateTrajectory(const h5::Handle& file, int replicate, std::uint64_t seed,
-                                         std::int64_t rows, std::int64_t agents)
-    : rows_(rows), agents_(agents), block_rows_(layout::chunk_rows(agents, rows)) {
+ReplicateTrajectory::ReplicateTrajectory(TrajectoryWriter& writer,
+                                         const std::filesystem::path& scratch, int replicate,
+                                         std::uint64_t seed, std::int64_t rows, std::int64_t agents)
+    : writer_(&writer),
+      replicate_(replicate),
+      rows_(rows),
+      agents_(agents),
+      block_rows_(layout::chunk_rows(agents, rows)) {
   std::lock_guard lock(h5::hdf5_lock());
-  group_ = h5::create_group(file, layout::group_name(replicate));
+  scratch_file_ = h5::create_file(scratch.string());
+  group_ = h5::create_group(scratch_file_, layout::group_name(replicate));
   h5::write_attribute(group_, "replicate", std::int64_t{replicate});
   const std::uint64_t seeds[1] = {seed};
   h5::write_attribute(group_, "seed", std::span<const std::uint64_t>(seeds));
@@ -105,6 +117,15 @@ void ReplicateTrajectory::finish() {
     throw std::logic_error("trajectory: " + std::to_string(rows_done_) + " of " +
                            std::to_string(rows_) + " rows recorded");
   }
+  {
+    std::lock_guard lock(h5::hdf5_lock());
+    // Closed one by one, so that a failing last write (a full disk) is reported.
+    for (h5::Handle* object : {&step_set_, &time_set_, &x_set_, &y_set_, &heading_set_, &state_set_,
+                               &aggregate_set_, &group_, &scratch_file_}) {
+      object->close();
+    }
+  }
+  writer_->replicate_finished(replicate_);
 }
 
 TrajectoryWriter::TrajectoryWriter(const WorldSpec& spec, const std::string& world_text,
@@ -113,7 +134,9 @@ TrajectoryWriter::TrajectoryWriter(const WorldSpec& spec, const std::string& wor
       rows_(layout::stored_rows(spec.steps(), spec.run.trajectories)),
       agents_(spec.robots.count),
       seeds_(static_cast<std::size_t>(spec.run.replicates), 0),
-      begun_(static_cast<std::size_t>(spec.run.replicates), false) {
+      scratch_files_(static_cast<std::size_t>(spec.run.replicates)),
+      begun_(static_cast<std::size_t>(spec.run.replicates), false),
+      finished_(static_cast<std::size_t>(spec.run.replicates), false) {
   if (spec.run.trajectories <= 0)
     throw std::logic_error("TrajectoryWriter without run.trajectories");
   if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
@@ -136,27 +159,52 @@ TrajectoryWriter::~TrajectoryWriter() {
     file_ = h5::Handle();
   } catch (...) {  // closing a file that is about to be removed: nothing to report
   }
-  std::error_code ignored;
-  std::filesystem::remove(temporary_, ignored);
+  discard_temporary(temporary_);
+  for (const auto& scratch : scratch_files_) {
+    if (!scratch.empty()) discard_temporary(scratch);
+  }
 }
 
 ReplicateTrajectory TrajectoryWriter::begin_replicate(int index, std::uint64_t seed) {
+  std::filesystem::path scratch;
   {
-    std::lock_guard lock(seeds_mutex_);
+    std::lock_guard lock(progress_mutex_);
     const auto i = static_cast<std::size_t>(index);
     if (index < 0 || i >= seeds_.size() || begun_[i]) {
       throw std::logic_error("trajectory: replicate " + std::to_string(index) + " begun twice");
     }
     begun_[i] = true;
     seeds_[i] = seed;
+    scratch = scratch_files_[i] = scratch_file_for(target_, index);
   }
-  return ReplicateTrajectory(file_, index, seed, rows_, agents_);
+  return ReplicateTrajectory(*this, scratch, index, seed, rows_, agents_);
+}
+
+void TrajectoryWriter::replicate_finished(int index) {
+  std::lock_guard lock(progress_mutex_);
+  finished_[static_cast<std::size_t>(index)] = true;
+  while (copied_in_ < finished_.size() && finished_[copied_in_]) {
+    copy_in(copied_in_);
+    ++copied_in_;
+  }
+}
+
+void TrajectoryWriter::copy_in(std::size_t index) {
+  {
+    std::lock_guard lock(h5::hdf5_lock());
+    const h5::Handle scratch = h5::open_file_read(scratch_files_[index].string());
+    h5::copy_object(scratch, layout::group_name(static_cast<int>(index)), file_);
+  }
+  discard_temporary(scratch_files_[index]);
 }
 
 void TrajectoryWriter::commit() {
-  for (std::size_t i = 0; i < begun_.size(); ++i) {
-    if (!begun_[i])
-      throw std::logic_error("trajectory: replicate " + std::to_string(i) + " missing");
+  {
+    std::lock_guard lock(progress_mutex_);
+    if (copied_in_ < begun_.size()) {
+      throw std::logic_error("trajectory: replicate " + std::to_string(copied_in_) +
+                             (begun_[copied_in_] ? " unfinished" : " missing"));
+    }
   }
   {
     std::lock_guard lock(h5::hdf5_lock());

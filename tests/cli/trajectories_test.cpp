@@ -147,25 +147,52 @@ TEST(Trajectories, ARunWithoutTrajectoriesRemovesAnEarlierFile) {
   fs::remove_all(out);
 }
 
+// The trajectories.h5 of the small demo run with several replicates, on `threads` threads.
+std::string stored_file(const fs::path& folder, int threads) {
+  std::string arguments =
+      "run worlds/examples/demo.yaml --replicates 4 --set run.duration=150 --trajectories 10 "
+      "--no-model --no-plots --quiet --threads ";
+  arguments.append(std::to_string(threads)).append(" --out ").append(folder.string());
+  const Outcome o = swarmagg(arguments);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  return read_all(folder / "trajectories.h5");
+}
+
 // The same run on one thread writes the same bytes (HDF5 would stamp each object with its
-// creation time). With replicates in parallel the data are the same but their chunks lie in
-// the order the replicates wrote them.
+// creation time).
 TEST(Trajectories, TheSameRunOnOneThreadWritesTheSameFile) {
   const fs::path out = fresh_dir("same-bytes");
-  std::string files[2];
-  for (int k = 0; k < 2; ++k) {
-    const fs::path folder = out / std::to_string(k);
-    const Outcome o = swarmagg(
-        "run worlds/examples/demo.yaml --replicates 2 --threads 1 --set run.duration=150 "
-        "--trajectories 10 --no-model --no-plots --quiet --out " +
-        folder.string());
-    ASSERT_EQ(o.exit_code, 0) << o.output;
-    files[k] = read_all(folder / "trajectories.h5");
-    // HDF5's times have a resolution of a second: the second file is written in another.
-    if (k == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  const std::string first = stored_file(out / "0", 1);
+  // HDF5's times have a resolution of a second: the second file is written in another.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  const std::string second = stored_file(out / "1", 1);
+  EXPECT_FALSE(first.empty());
+  EXPECT_TRUE(first == second) << "the two files differ";
+  fs::remove_all(out);
+}
+
+// The file with the thread count that its `world` attribute records (world.resolved.yaml
+// records it too) written as 1. The texts are the same length, so nothing else moves.
+std::string as_if_on_one_thread(std::string file, int threads) {
+  std::string recorded = "\n  threads: ";
+  recorded.append(std::to_string(threads)).append("\n");
+  const std::size_t at = file.find(recorded);
+  EXPECT_NE(at, std::string::npos) << "no threads line in the stored world";
+  if (at != std::string::npos) file.replace(at, recorded.size(), "\n  threads: 1\n");
+  return file;
+}
+
+// With replicates in parallel they finish in another order than on one thread; the file is
+// the same, byte for byte.
+TEST(Trajectories, AnyNumberOfThreadsWritesTheSameFile) {
+  const fs::path out = fresh_dir("threads");
+  const std::string one = stored_file(out / "1", 1);
+  EXPECT_FALSE(one.empty());
+  for (const int threads : {2, 3}) {
+    const std::string many = stored_file(out / std::to_string(threads), threads);
+    EXPECT_TRUE(as_if_on_one_thread(many, threads) == one)
+        << threads << " threads wrote another file than one thread";
   }
-  EXPECT_FALSE(files[0].empty());
-  EXPECT_TRUE(files[0] == files[1]) << "the two files differ";
   fs::remove_all(out);
 }
 
