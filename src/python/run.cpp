@@ -19,6 +19,7 @@
 #include "output/scratch_folder.hpp"
 #include "output/timeseries_csv.hpp"
 #include "python/bindings.hpp"
+#include "python/bound_class.hpp"
 #include "python/interruptible.hpp"
 #include "python/world.hpp"
 #include "rates/rate_rows.hpp"
@@ -35,6 +36,8 @@ namespace {
 
 class RunOutput {
  public:
+  using BoundToPython = void;
+
   RunOutput(World world, MeasuredRun run)
       : spec_(world.spec), changes_(std::move(world.changes)), run_(std::move(run)) {
     if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates);
@@ -117,8 +120,14 @@ RunOutput run(const World& world, std::optional<long long> replicates,
 }  // namespace
 
 void bind_run(py::module_& module) {
-  py::class_<RunOutput>(module, "RunOutput", "The outputs of run(), as the CLI's texts.")
-      .def_property_readonly("world", &RunOutput::world)
+  py::class_<RunOutput> output(module, "RunOutput", "The outputs of run(), as the CLI's texts.");
+  // Nothing changes a run's outputs once made: a copy may be the same object.
+  copied_as_itself(output);
+  refuse_pickling(output,
+                  "swarmagg.Run and swarmagg.Rates cannot be pickled: their results live in the "
+                  "library's memory. Pickle what they return (frames and dicts), or the world "
+                  "(run.world, which pickles) to run it again, with the same seed, elsewhere");
+  output.def_property_readonly("world", &RunOutput::world)
       .def("timeseries_csv", &RunOutput::timeseries_csv_text)
       .def("summary_json", &RunOutput::summary_json)
       .def("partitions_csv", &RunOutput::partitions_csv_text)

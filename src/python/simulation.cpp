@@ -15,6 +15,7 @@
 #include "core/agent_state.hpp"
 #include "core/errors.hpp"
 #include "python/bindings.hpp"
+#include "python/bound_class.hpp"
 #include "python/world.hpp"
 #include "render/frame_recorder.hpp"
 #include "render/frame_renderer.hpp"
@@ -36,6 +37,8 @@ using Size = std::optional<std::pair<int, int>>;
 
 class Simulation {
  public:
+  using BoundToPython = void;
+
   Simulation(const World& world, std::optional<py::object> seed, int replicate,
              std::optional<std::string> engine)
       : world_(world_for(world, seed, engine)) {
@@ -141,13 +144,22 @@ void bind_simulation(py::module_& module) {
     states.append(py::make_tuple(std::string(to_string(static_cast<AgentState>(s))), s));
   module.attr("AGENT_STATES") = states;
 
-  py::class_<Simulation>(
+  py::class_<Simulation> simulation(
       module, "Simulation",
       "Simulation(world: World, seed: int | None = None, replicate: int = 0, engine: str | None "
       "= None)\n\n"
       "One replicate of `world`, stepped by hand: the replicate `swarmagg run` runs with the "
       "same seed and index. The state attributes are read-only numpy views of the "
-      "simulation's own arrays, valid until the next step() (take .copy() to keep one).")
+      "simulation's own arrays, valid until the next step() (take .copy() to keep one).");
+  // No copy: the replicate's engine and controllers cannot be copied, and replaying its steps
+  // could take as long as the steps took.
+  refuse_pickling(simulation,
+                  "swarmagg.Simulation cannot be copied or pickled: its replicate lives in the "
+                  "library's memory. For a second one in the same state, make "
+                  "Simulation(sim.world, replicate=<the same index>) and step() it "
+                  "sim.step_count steps: the same world, seed, replicate and steps give the "
+                  "same state, bit for bit");
+  simulation
       .def(py::init<const World&, std::optional<py::object>, int, std::optional<std::string>>(),
            py::arg("world"), py::arg("seed") = py::none(), py::arg("replicate") = 0,
            py::arg("engine") = py::none())

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
@@ -118,6 +119,21 @@ std::string engine_name(const WorldSpec& spec) {
   return spec.engine.type == EngineType::Box2D ? "box2d" : "kinematic";
 }
 
+// A world's pickle: its resolved YAML (to_yaml(), which loads back as the same world), the file
+// it came from and what `set` changed, so that a world reaches multiprocessing's workers.
+using WorldState = std::tuple<std::string, std::string, std::vector<std::string>>;
+
+WorldState world_state(const World& world) {
+  return {world_to_yaml(*world.spec), world.spec->source, world.changes};
+}
+
+World world_from_state(const WorldState& state) {
+  const auto& [yaml, source, changes] = state;
+  return {std::make_shared<const WorldSpec>(
+              reading_file([&] { return load_world_text_with(yaml, source, {}); })),
+          changes};
+}
+
 }  // namespace
 
 World with_overrides(const World& world, const std::vector<WorldOverride>& overrides) {
@@ -129,9 +145,13 @@ World with_overrides(const World& world, const std::vector<WorldOverride>& overr
 }
 
 void bind_world(py::module_& module) {
-  py::class_<World>(module, "World",
-                    "A loaded and checked world: every key resolved, immutable. Made by "
-                    "load_world(); runs and simulations read it.")
+  py::class_<World> world(module, "World",
+                          "A loaded and checked world: every key resolved, immutable. Made by "
+                          "load_world(); runs and simulations read it. Copies are the world "
+                          "itself; a pickle holds its resolved YAML.");
+  copied_as_itself(world);
+  pickled_by_state(world, &world_state, &world_from_state);
+  world
       .def_property_readonly(
           "name", [](const World& w) { return w.spec->name; }, "The world's name (str).")
       .def_property_readonly(

@@ -12,10 +12,13 @@
 
 #include "config/world_override.hpp"
 #include "config/world_spec.hpp"
+#include "python/bound_class.hpp"
 
 namespace swarmagg::python {
 
 struct World {
+  using BoundToPython = void;
+
   std::shared_ptr<const WorldSpec> spec;
   // What load_world's `set` changed of the world file, "key=value" each, as summary.json's
   // `overrides` names the CLI's --set texts.
