@@ -36,6 +36,15 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
   return message + " (swarmagg --help lists the commands)";
 }
 
+// `--out ""` would silently mean the command's default folder: refused, as a missing value is.
+void refuse_empty_output_folders(CLI::App& app) {
+  const CLI::Validator non_empty(
+      [](std::string& value) { return value.empty() ? "expected a folder, got ''" : ""; }, "");
+  for (CLI::App* command : app.get_subcommands({})) {
+    if (CLI::Option* out = command->get_option_no_throw("--out")) out->check(non_empty);
+  }
+}
+
 // What was printed must have reached its reader: a full disk or a closed pipe behind `>`
 // otherwise ends a command such as `validate` or `keys` with success and an empty file.
 bool standard_output_written() {
@@ -68,6 +77,7 @@ int main(int argc, char** argv) {
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_help_command(app, action);
+  refuse_empty_output_folders(app);
   if (const auto message = unknown_command(app, argc, argv)) {
     std::cerr << *message << "\n";
     return 2;

@@ -251,10 +251,16 @@ void check_placement(const WorldSpec& spec, bool count_given) {
     const bool inside = placed[i].x >= margin && placed[i].x <= spec.arena.width - margin &&
                         placed[i].y >= margin && placed[i].y <= spec.arena.height - margin;
     if (!inside) {
+      // Between walls a body must fit: a centre closer than r to a wall overlaps it.
+      const std::string where = walls ? " does not fit in the " + format_number(spec.arena.width) +
+                                            " x " + format_number(spec.arena.height) +
+                                            " walled arena (its body, radius " + format_number(r) +
+                                            ", must lie within the walls)"
+                                      : " is outside the " + format_number(spec.arena.width) +
+                                            " x " + format_number(spec.arena.height) + " arena";
       throw InputError(spec.source + ": robots.placement: agent " + std::to_string(i) + " at (" +
-                       format_number(placed[i].x) + ", " + format_number(placed[i].y) +
-                       ") is outside the " + format_number(spec.arena.width) + " x " +
-                       format_number(spec.arena.height) + " arena");
+                       format_number(placed[i].x) + ", " + format_number(placed[i].y) + ")" +
+                       where);
     }
   }
   check_no_overlap(spec);

@@ -72,6 +72,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const Outcome misspelt = swarmagg("rnu worlds/examples/demo.yaml");
   EXPECT_EQ(misspelt.exit_code, 2);
   EXPECT_THAT(misspelt.output, HasSubstr("unknown command 'rnu'; did you mean 'run'?"));
+  const Outcome empty_out = swarmagg("run worlds/examples/demo.yaml --out ''");
+  EXPECT_EQ(empty_out.exit_code, 2);
+  EXPECT_THAT(empty_out.output, HasSubstr("--out: expected a folder, got ''"));
   const Outcome unknown = swarmagg("frobnicate");
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_THAT(unknown.output, HasSubstr("unknown command 'frobnicate'"));
