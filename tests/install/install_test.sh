@@ -16,10 +16,15 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 
 cmake --install "$build_dir" --prefix "$tmp/prefix" >/dev/null
 for f in bin/swarmagg share/doc/swarmagg/README.md share/doc/swarmagg/docs/rendering.md share/doc/swarmagg/docs/frame-full-0.0025.png \
+  share/doc/swarmagg/bench/results/README.md \
   share/swarmagg/worlds/examples/demo.yaml share/swarmagg/worlds/paper/full-0.0025.yaml \
   share/swarmagg/examples/sweeps/p-leave-vs-count.yaml share/swarmagg/examples/slurm/sweep.sbatch; do
   [[ -f $tmp/prefix/$f ]] || fail "$f not installed"
 done
+# The installed pages' relative links resolve within the installed documentation.
+/usr/bin/python3 "$(dirname "$0")/../docs/check_links.py" "$tmp/prefix/share/doc/swarmagg" >/dev/null ||
+  fail "installed docs have broken links: $(/usr/bin/python3 "$(dirname "$0")/../docs/check_links.py" \
+    "$tmp/prefix/share/doc/swarmagg" | head -3)"
 for f in bin/swarmagg share/swarmagg/examples/slurm/submit.sh; do
   [[ -x $tmp/prefix/$f ]] || fail "$f not executable"
 done
