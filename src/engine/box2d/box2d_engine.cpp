@@ -38,6 +38,19 @@ constexpr int kMaxSubsteps = 4096;
 double max_travel_per_substep(const WorldSpec& spec) {
   return std::min(kMaxSubstepTravelCap, 0.5 * spec.robots.radius);
 }
+// The repulsion force on a leaving body whose centre is 2r from one waiting body's (touching):
+// `gain` (1 - 2r/s), per unit mass. More repellers, or overlap, push harder.
+double touching_push(const WorldSpec& spec) {
+  return spec.engine.box2d.repulsion_gain *
+         std::max(0.0, 1.0 - 2.0 * spec.robots.radius / spec.robots.detection_radius);
+}
+// The substeps a step needs for a body at full speed that one touching repeller pushes for the
+// whole step (substeps_for counts the same at run time, for the real forces): a gain that
+// fails this would fail every run at its first leave.
+double touching_push_substeps(const WorldSpec& spec) {
+  return (spec.robots.speed + spec.engine.dt * touching_push(spec)) * spec.engine.dt /
+         max_travel_per_substep(spec);
+}
 constexpr double kWallThickness = 10.0;
 
 b2Vec2 to_b2(Vec2 v) {
@@ -138,6 +151,13 @@ void check_spec(const WorldSpec& spec, const BodyShapes& shapes) {
         << " Box2D substeps (the engine moves a body at most min(" << kMaxSubstepTravelCap
         << ", robots.radius / 2) u per substep; Box2D itself caps it at " << b2_maxTranslation
         << ")";
+  else if (touching_push_substeps(spec) > kMaxSubsteps)
+    why << "engine.box2d.repulsion_gain = " << b.repulsion_gain
+        << " pushes a leaving body touching one waiting body to "
+        << spec.robots.speed + spec.engine.dt * touching_push(spec)
+        << " u/tu within a step, which would need more than " << kMaxSubsteps
+        << " Box2D substeps (at most min(" << kMaxSubstepTravelCap
+        << ", robots.radius / 2) u each); lower it";
   else if (shapes.torus && std::min(spec.arena.width, spec.arena.height) <=
                                2.0 * static_cast<double>(shapes.sensor_keep_margin))
     why << "a torus arena must be wider and higher than " << 2.0 * shapes.sensor_keep_margin
@@ -304,15 +324,19 @@ void Box2DEngine::compute_repulsion() {
 int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
   double fastest2 = 0.0;
   for (const MotionCommand& c : commands) fastest2 = std::max(fastest2, norm2(c.velocity));
+  double pushed2 = 0.0;
   for (const AgentId i : forced_) {
-    fastest2 = std::max(fastest2, norm2(commands[i].velocity + forces_[i] * dt_));
+    pushed2 = std::max(pushed2, norm2(commands[i].velocity + forces_[i] * dt_));
   }
-  const double fastest = std::sqrt(fastest2);
+  const double fastest = std::sqrt(std::max(fastest2, pushed2));
   const double needed = std::ceil(fastest * dt_ / max_travel_);
   if (needed > kMaxSubsteps) {
-    throw std::runtime_error("Box2D engine: a commanded speed of " + std::to_string(fastest) +
-                             " u/tu needs more than " + std::to_string(kMaxSubsteps) +
-                             " substeps per step");
+    const std::string what = pushed2 > fastest2 ? "the repulsion push on a leaving body reaches "
+                                                : "a commanded speed of ";
+    throw std::runtime_error("Box2D engine: " + what + std::to_string(fastest) +
+                             " u/tu, which needs more than " + std::to_string(kMaxSubsteps) +
+                             " substeps per step" +
+                             (pushed2 > fastest2 ? " (lower engine.box2d.repulsion_gain)" : ""));
   }
   return std::max(min_substeps_, static_cast<int>(needed));
 }
