@@ -27,6 +27,25 @@ std::filesystem::path scratch_file_for(const std::filesystem::path& target, int 
   return temporary_beside(target.string() + "." + layout::group_name(replicate));
 }
 
+// HDF5 1.10's H5Ocopy crashes on its own error path when the disk fills during a copy (a
+// segfault in H5T_close_real, which also leaves every temporary behind), so a copy starts only
+// with room for it: the scratch file's size and a quarter more, plus 256 KiB for the
+// destination's metadata. Another process may still fill the disk meanwhile; this covers a
+// run that fills it itself.
+void check_room_to_copy(const std::filesystem::path& scratch, const std::filesystem::path& into) {
+  std::error_code unknown;
+  const std::uintmax_t size = std::filesystem::file_size(scratch, unknown);
+  const std::filesystem::path folder = into.has_parent_path() ? into.parent_path() : ".";
+  const std::filesystem::space_info room = std::filesystem::space(folder, unknown);
+  if (unknown) return;  // no figure to go by: HDF5 tries
+  const std::uintmax_t needed = size + size / 4 + (std::uintmax_t{1} << 18);
+  if (room.available < needed) {
+    throw std::runtime_error("HDF5: no room to copy a replicate's trajectory into " +
+                             into.string() + " (disk full?): about " + std::to_string(needed) +
+                             " bytes needed, " + std::to_string(room.available) + " free");
+  }
+}
+
 template <typename T>
 void write_block(const h5::Handle& dataset, std::int64_t first_row, std::int64_t count,
                  const std::vector<T>& values) {
@@ -190,6 +209,7 @@ void TrajectoryWriter::replicate_finished(int index) {
 }
 
 void TrajectoryWriter::copy_in(std::size_t index) {
+  check_room_to_copy(scratch_files_[index], temporary_);
   {
     std::lock_guard lock(h5::hdf5_lock());
     const h5::Handle scratch = h5::open_file_read(scratch_files_[index].string());

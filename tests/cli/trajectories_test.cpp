@@ -3,8 +3,10 @@
 // frames the run drew at the same steps.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -194,6 +196,29 @@ TEST(Trajectories, AnyNumberOfThreadsWritesTheSameFile) {
         << threads << " threads wrote another file than one thread";
   }
   fs::remove_all(out);
+}
+
+// A disk that fills while the replicates are copied into trajectories.h5 (HDF5's copy crashed
+// on its error path): a clear error, exit 1, and nothing left in the run folder. Needs a small
+// tmpfs, so root and a kernel that lets the test mount one.
+TEST(Trajectories, ADiskThatFillsDuringTheCopyIsAnErrorAndLeavesNothing) {
+  const fs::path disk = fresh_dir("full-disk");
+  fs::create_directories(disk);
+  const std::string mount =
+      "mount -t tmpfs -o size=1600k tmpfs '" + disk.string() + "' 2>/dev/null";
+  if (::geteuid() != 0 || std::system(mount.c_str()) != 0) GTEST_SKIP() << "cannot mount a tmpfs";
+  const Outcome o = swarmagg(
+      "run worlds/examples/demo.yaml --no-plots --replicates 3 --threads 2 "
+      "--set run.duration=300 --set run.trajectories=5 --out '" +
+      (disk / "t").string() + "'");
+  std::vector<std::string> left;
+  std::error_code no_folder;  // the run folder may not exist at all
+  for (const auto& entry : fs::directory_iterator(disk / "t", no_folder))
+    left.push_back(entry.path().filename().string());
+  std::system(("umount '" + disk.string() + "'").c_str());
+  EXPECT_EQ(o.exit_code, 1) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("disk full?"));
+  EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
 }
 
 }  // namespace
