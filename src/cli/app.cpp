@@ -47,9 +47,16 @@ void refuse_empty_output_folders(CLI::App& app) {
 
 // What was printed must have reached its reader: a full disk or a closed pipe behind `>`
 // otherwise ends a command such as `validate` or `keys` with success and an empty file.
-bool standard_output_written() {
+// Returns why it did not (a guess when the failing write was an earlier one, whose errno is
+// gone), or nothing when every write succeeded.
+std::optional<std::string> standard_output_failure() {
+  const bool failed_earlier = std::cout.fail() || std::ferror(stdout);
   std::cout.flush();
-  return !std::cout.fail() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+  errno = 0;
+  if (std::fflush(stdout) != 0 && errno != 0) return std::string(": ") + std::strerror(errno);
+  if (failed_earlier || std::cout.fail() || std::ferror(stdout))
+    return std::string(" (a full disk, or a reader that went away?)");
+  return std::nullopt;
 }
 
 }  // namespace
@@ -93,9 +100,8 @@ int main(int argc, char** argv) {
     // A signal that came during work that does not look for one (the models, gnuplot) still
     // ends the command as interrupted, not as a success.
     throw_if_interrupted();
-    if (!standard_output_written()) {
-      std::cerr << "swarmagg: error: cannot write to standard output: " << std::strerror(errno)
-                << "\n";
+    if (const auto failure = standard_output_failure()) {
+      std::cerr << "swarmagg: error: cannot write to standard output" << *failure << "\n";
       return 1;
     }
     return code;

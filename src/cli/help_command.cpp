@@ -1,10 +1,12 @@
-// `swarmagg help [--markdown]`: the help of every command in one page. `--markdown` prints
-// docs/reference/cli.md, which a test compares with this output, so the page cannot drift
-// from the options the commands really take.
+// `swarmagg help [COMMAND] [--markdown]`: one command's help, or every command's in one page.
+// `--markdown` prints docs/reference/cli.md, which a test compares with this output, so the page
+// cannot drift from the options the commands really take.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -35,13 +37,24 @@ void print_markdown(CLI::App& app) {
 
 void add_help_command(CLI::App& app, Action& action) {
   auto markdown = std::make_shared<bool>(false);
-  CLI::App* command =
-      app.add_subcommand("help", "Print the help of every command (docs/reference/cli.md)");
+  auto only = std::make_shared<std::string>();
+  CLI::App* command = app.add_subcommand(
+      "help", "Print the help of a command, or of every command (docs/reference/cli.md)");
+  command->add_option("COMMAND", *only, "The command whose help to print (default: all)");
   command->add_flag("--markdown", *markdown,
                     "Print the page docs/reference/cli.md: every command's --help");
-  command->callback([markdown, &app, &action] {
-    action = [markdown, &app] {
-      if (*markdown) {
+  command->callback([markdown, only, &app, &action] {
+    action = [markdown, only, &app] {
+      if (!only->empty()) {
+        const std::vector<CLI::App*> commands = app.get_subcommands({});
+        const auto wanted = std::find_if(commands.begin(), commands.end(),
+                                         [&](const CLI::App* c) { return c->get_name() == *only; });
+        if (wanted == commands.end()) {
+          throw InputError("help: unknown command '" + *only +
+                           "' (swarmagg help lists every command's help)");
+        }
+        std::cout << (*wanted)->help(app.get_name());
+      } else if (*markdown) {
         print_markdown(app);
       } else {
         for (CLI::App* sub : app.get_subcommands({})) {

@@ -41,7 +41,11 @@ TEST(Cli, HelpWorksForEverySubcommand) {
     const Outcome o = swarmagg(std::string(sub) + " --help");
     EXPECT_EQ(o.exit_code, 0) << sub;
     EXPECT_THAT(o.output, HasSubstr("--set")) << sub;
+    const Outcome via_help = swarmagg(std::string("help ") + sub);
+    EXPECT_EQ(via_help.exit_code, 0) << sub;
+    EXPECT_EQ(via_help.output, o.output) << sub;
   }
+  EXPECT_EQ(swarmagg("help nope").exit_code, 2);
 }
 
 TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
