@@ -183,14 +183,15 @@ WorldKey string_key(std::string path, Access<std::string> access) {
   return {std::move(path), "text", expected, read, write, {}, {}, {}};
 }
 
-// A length whose default follows another key (written back resolved).
-WorldKey optional_length_key(std::string path, Access<std::optional<double>> access,
-                             std::function<double(const WorldSpec&)> resolved) {
-  auto read = [access](WorldSpec& w, const YAML::Node& node) {
-    access(w) = read_bounded_real(node, kLength);
+// A number whose default follows another key (written back resolved).
+WorldKey optional_real_key(std::string path, Access<std::optional<double>> access,
+                           std::function<double(const WorldSpec&)> resolved,
+                           const RealBounds& bounds) {
+  auto read = [access, bounds](WorldSpec& w, const YAML::Node& node) {
+    access(w) = read_bounded_real(node, bounds);
   };
   auto write = [resolved](const WorldSpec& w) { return YAML::Node(format_number(resolved(w))); };
-  return {std::move(path), "number", kLength.expected, read, write, {}, {}, {}};
+  return {std::move(path), "number", bounds.expected, read, write, {}, {}, {}};
 }
 
 WorldKey name_key() {
@@ -367,10 +368,10 @@ std::vector<WorldKey> build_keys() {
                [](WorldSpec& w) -> bool& { return w.controller.compaction.enabled; }),
       "waiting agents close up their aggregate under a spring force (docs/controllers.md)"));
   keys.push_back(described(
-      optional_length_key(
+      optional_real_key(
           "controller.compaction.spacing",
           [](WorldSpec& w) -> std::optional<double>& { return w.controller.compaction.spacing; },
-          [](const WorldSpec& w) { return w.compaction_spacing(); }),
+          [](const WorldSpec& w) { return w.compaction_spacing(); }, kLength),
       "centre distance the members close up to, u; default 2 robots.radius (touching), below "
       "robots.detection_radius"));
   keys.push_back(described(
@@ -483,10 +484,10 @@ std::vector<WorldKey> build_keys() {
       "where model predictions start: the placement's expected pairs, all agents searching, or the "
       "state a run measured"));
   keys.push_back(described(
-      optional_length_key(
+      optional_real_key(
           "rates.return_window",
           [](WorldSpec& w) -> std::optional<double>& { return w.rates.return_window; },
-          [](const WorldSpec& w) { return w.return_window(); }),
+          [](const WorldSpec& w) { return w.return_window(); }, kPositive),
       "tu after a LEAVE attempt within which waiting again beside the aggregate left counts as a "
       "return (default 3 leave timeouts)"));
   keys.push_back(described(

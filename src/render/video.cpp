@@ -225,8 +225,11 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
   // did not fit on a full disk) leave it exiting 0 with an unplayable file.
   if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0 || !result.errors.empty()) {
     discard_temporary(temporary);
-    throw std::runtime_error("ffmpeg failed (" + describe_status(result.status) + ") making " +
-                             output.string() + ": " + result.errors);
+    const bool exited_zero = WIFEXITED(result.status) && WEXITSTATUS(result.status) == 0;
+    throw std::runtime_error((exited_zero
+                                  ? "ffmpeg reported an error (though it exited 0)"
+                                  : "ffmpeg failed (" + describe_status(result.status) + ")") +
+                             " making " + output.string() + ": " + result.errors);
   }
   rename_or_discard(temporary, output);
 }

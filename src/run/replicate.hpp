@@ -27,6 +27,7 @@ class Replicate {
   // The replicate keeps a reference to its world: one made from a temporary spec would read
   // a destroyed spec after the statement (a silently wrong run, not an error).
   Replicate(WorldSpec&& spec, int index) = delete;
+  Replicate(const WorldSpec&& spec, int index) = delete;
   ~Replicate();
 
   void step();  // advances by one step of dt
