@@ -52,30 +52,33 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
   std::string header;
   for (const std::string& column : table.header) header += (header.empty() ? "" : ",") + column;
   if (header != kHeader) {
-    throw InputError(file.string() + ": line 1: expected the rates.csv header `" +
-                     std::string(kHeader) + "`");
+    throw InputError(file.string() + ":1: expected the rates.csv header `" + std::string(kHeader) +
+                     "`");
   }
   std::vector<RateRow> rows;
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const std::vector<std::string>& cells = table.rows[i];
-    const std::string where = file.string() + ": line " + std::to_string(table.line_of.at(i));
+    // As CsvTable names a cell: file:line: column 'name'.
+    const auto cell = [&](std::size_t column) {
+      return file.string() + ":" + std::to_string(table.line_of.at(i)) + ": column '" +
+             table.header[column] + "'";
+    };
     // Every quantity of the file is a count, a duration or a rate: a hand-edited negative or
     // infinite value would otherwise flow into the model as -inf or nan in model.csv.
     auto number = [&](std::size_t column, bool may_be_empty) {
       const double value = table.number(i, column);  // names file, line and column
       const bool empty = std::isnan(value) && cells.at(column).empty();
       if ((empty && !may_be_empty) || (!empty && !(std::isfinite(value) && value >= 0.0))) {
-        throw InputError(where + ": column " + table.header[column] +
-                         ": expected a finite number >= 0, got '" + cells.at(column) + "'");
+        throw InputError(cell(column) + ": expected a finite number >= 0, got '" +
+                         cells.at(column) + "'");
       }
       return value;
     };
     auto whole_number = [&](std::size_t column, double low, double high) {
-      const double value = number(column, false);
-      if (value != std::floor(value) || value < low || value > high) {
-        throw InputError(where + ": column " + table.header[column] + ": expected a whole number " +
-                         csv_number(low) + " to " + csv_number(high) + ", got '" +
-                         cells.at(column) + "'");
+      const double value = table.number(i, column);
+      if (!(value == std::floor(value) && value >= low && value <= high)) {
+        throw InputError(cell(column) + ": expected a whole number from " + csv_number(low) +
+                         " to " + csv_number(high) + ", got '" + cells.at(column) + "'");
       }
       return value;
     };

@@ -57,13 +57,14 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
   const std::string good = "creation,,120,400000,0.0003,0.00025,0.00036,bayindir,original,3e-4\n";
   EXPECT_NO_THROW(read_rates_csv(write_temp("swarmagg-good-rates.csv", header + good)));
   const std::vector<std::pair<std::string, std::string>> damaged = {
-      {"creation,,120,400000,-0.0003,0.00025,0.00036,,,\n", "column rate"},
-      {"creation,,120,400000,inf,0.00025,0.00036,,,\n", "column rate"},
-      {"creation,,120,400000,0.0003,nan,0.00036,,,\n", "column ci_low"},
-      {"creation,,120,-5,0.0003,0.00025,0.00036,,,\n", "column exposure"},
-      {"creation,,12.5,400000,0.0003,0.00025,0.00036,,,\n", "column events"},
-      {"growth,0,12,400000,0.0003,0.00025,0.00036,,,\n", "column size"},
-      {"creation,,120,400000,0.0003,0.00025,0.00036,bayindir,original,-1\n", "column model_rate"},
+      {"creation,,120,400000,-0.0003,0.00025,0.00036,,,\n", "column 'rate'"},
+      {"creation,,120,400000,inf,0.00025,0.00036,,,\n", "column 'rate'"},
+      {"creation,,120,400000,0.0003,nan,0.00036,,,\n", "column 'ci_low'"},
+      {"creation,,120,-5,0.0003,0.00025,0.00036,,,\n", "column 'exposure'"},
+      {"creation,,12.5,400000,0.0003,0.00025,0.00036,,,\n", "column 'events'"},
+      {"creation,,,400000,0.0003,0.00025,0.00036,,,\n", "a whole number from 0"},
+      {"growth,0,12,400000,0.0003,0.00025,0.00036,,,\n", "column 'size'"},
+      {"creation,,120,400000,0.0003,0.00025,0.00036,bayindir,original,-1\n", "column 'model_rate'"},
   };
   for (const auto& [row, column] : damaged) {
     try {
@@ -71,7 +72,7 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
       ADD_FAILURE() << "accepted " << row;
     } catch (const InputError& e) {
       const std::string message = e.what();
-      EXPECT_NE(message.find("swarmagg-damaged-rates.csv: line 3"), std::string::npos) << message;
+      EXPECT_NE(message.find("swarmagg-damaged-rates.csv:3"), std::string::npos) << message;
       EXPECT_NE(message.find(column), std::string::npos) << message;
     }
   }
