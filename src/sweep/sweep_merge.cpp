@@ -1,6 +1,7 @@
 #include "sweep/sweep_merge.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "analysis/csv_table.hpp"
@@ -49,46 +50,68 @@ std::string joined(const std::vector<std::string>& fields, std::size_t from) {
   return text;
 }
 
+// What a merged file's cells hold: counts unless a column is listed as real or as text.
+struct ColumnKinds {
+  std::vector<std::size_t> real;
+  std::vector<std::size_t> text;
+};
+
+bool listed(const std::vector<std::size_t>& columns, std::size_t column) {
+  return std::find(columns.begin(), columns.end(), column) != columns.end();
+}
+
 // One merged CSV: the parameter columns, then a run file's columns, whose first column is
 // the replicate (always 0 in a sweep run's folder: a run is one replicate). Shard files are
-// read as tables: a row cut short or a cell that is not a number (outside `text_columns`)
-// stops the merge naming the file, line and column, rather than being copied into results.
+// read as tables: a row cut short, a cell that is not a number, or a count that is not a whole
+// number >= 0 stops the merge naming the file, line and column, rather than being copied into
+// the results.
 class MergedCsv {
  public:
-  MergedCsv(const std::vector<std::string>& keys, std::string file_header,
-            std::vector<std::size_t> text_columns = {})
+  MergedCsv(const std::vector<std::string>& keys, std::string file_header, ColumnKinds kinds)
       : file_header_(std::move(file_header)),
-        text_columns_(std::move(text_columns)),
+        kinds_(std::move(kinds)),
         text_(csv_prefix(keys) + file_header_ + "\n") {}
 
-  // Appends the file's rows; returns its last row's fields (none when it has no rows).
-  std::vector<std::string> append(const std::filesystem::path& file, const std::string& prefix,
-                                  int replicate) {
+  // Appends the file's rows; returns its last row's numbers (NaN for text cells; none when
+  // it has no rows).
+  std::vector<double> append(const std::filesystem::path& file, const std::string& prefix,
+                             int replicate) {
     const CsvTable table = read_csv(file);
     if (joined(table.header, 0) != file_header_) {
-      throw std::runtime_error(file.string() + ": expected the header '" + file_header_ + "'");
+      throw InputError(file.string() + ": expected the header '" + file_header_ + "'");
     }
+    std::vector<double> numbers;
     for (std::size_t row = 0; row < table.rows.size(); ++row) {
-      check_numbers(table, row);
+      numbers = checked_numbers(table, row);
       text_ += prefix + std::to_string(replicate) + "," + joined(table.rows[row], 1) + "\n";
     }
     appended_ = true;
-    return table.rows.empty() ? std::vector<std::string>{} : table.rows.back();
+    return numbers;
   }
 
   bool appended() const { return appended_; }
   const std::string& text() const { return text_; }
 
  private:
-  void check_numbers(const CsvTable& table, std::size_t row) const {
+  std::vector<double> checked_numbers(const CsvTable& table, std::size_t row) const {
+    std::vector<double> numbers(table.header.size(), std::nan(""));
     for (std::size_t column = 0; column < table.header.size(); ++column) {
-      if (std::find(text_columns_.begin(), text_columns_.end(), column) == text_columns_.end())
-        table.number(row, column);  // throws naming the file, line and column
+      if (listed(kinds_.text, column)) continue;
+      const double value = table.number(row, column);  // names the file, line and column
+      const bool count = !listed(kinds_.real, column);
+      if (!std::isfinite(value) || (count && !(value >= 0.0 && value == std::floor(value)))) {
+        throw InputError(table.source + ":" + std::to_string(table.line_of.at(row)) + ": column '" +
+                         table.header[column] + "': expected " +
+                         (count ? "a whole number >= 0" : "a finite number") + ", got '" +
+                         table.rows[row][column] + "'");
+      }
+      numbers[column] = value;
     }
+    return numbers;
   }
 
   std::string file_header_;
-  std::vector<std::size_t> text_columns_;
+  ColumnKinds kinds_;
   std::string text_;
   bool appended_ = false;
 };
@@ -130,16 +153,11 @@ std::vector<std::filesystem::path> run_locations(
       "); run the missing shards (or resume the sweep) first");
 }
 
-// The observables of a run's last timeseries row (its cells already checked as numbers).
-std::vector<double> final_observables(const std::vector<std::string>& last_row,
+// The observables of a run's last timeseries row (after replicate, step and time).
+std::vector<double> final_observables(const std::vector<double>& last_row,
                                       const std::filesystem::path& file) {
-  std::vector<double> values;
-  for (std::size_t k = 3; k < last_row.size(); ++k) {  // after replicate, step, time
-    if (last_row[k].empty()) throw std::runtime_error(file.string() + ": no last row of values");
-    values.push_back(std::stod(last_row[k]));
-  }
-  if (values.empty()) throw std::runtime_error(file.string() + ": no rows");
-  return values;
+  if (last_row.empty()) throw InputError(file.string() + ": holds no rows");
+  return {last_row.begin() + 3, last_row.end()};
 }
 
 std::vector<std::string> observable_names() {
@@ -156,17 +174,19 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   const std::vector<SweepRun> runs = expand_sweep(plan);
   const std::vector<std::filesystem::path> locations = run_locations(runs, folders);
   const std::vector<std::string> keys = parameter_keys(plan);
-  MergedCsv timeseries(keys, kTimeseriesHeader);
+  // Every timeseries column counts something but the time.
+  MergedCsv timeseries(keys, kTimeseriesHeader, {.real = {2}, .text = {}});
   // partitions_csv of no replicates is exactly the header run folders carry.
-  // The partition column ("4+2+1") is the one that is not a number.
-  MergedCsv partitions(keys, split(partitions_csv(RunResult{}, 1), '\n').front(), {1});
+  // replicate, partition ("4+2+1"), time_fraction.
+  MergedCsv partitions(keys, split(partitions_csv(RunResult{}, 1), '\n').front(),
+                       {.real = {2}, .text = {1}});
   std::vector<PointFinals> finals;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const SweepRun& run = runs[i];
     if (run.replicate == 0) finals.push_back({point_values(run.point), {}});
     const std::string prefix = csv_prefix(finals.back().values);
     const auto file = locations[i] / "timeseries.csv";
-    const std::vector<std::string> last = timeseries.append(file, prefix, run.replicate);
+    const std::vector<double> last = timeseries.append(file, prefix, run.replicate);
     finals.back().replicates.push_back(final_observables(last, file));
     if (std::filesystem::exists(locations[i] / "partitions.csv")) {
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);

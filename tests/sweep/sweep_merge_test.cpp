@@ -110,6 +110,12 @@ TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
   EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
               ::testing::ThrowsMessage<InputError>(
                   AllOf(HasSubstr(file.string() + ":3"), HasSubstr("'noa'"), HasSubstr("'many'"))));
+  damaged = good;
+  damaged.replace(noa, good.find(',', noa) - noa, "inf");
+  std::ofstream(file, std::ios::binary) << damaged;
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(AllOf(
+                  HasSubstr(file.string() + ":3"), HasSubstr("expected a whole number >= 0"))));
   std::ofstream(file, std::ios::binary) << good.substr(0, good.find(',', noa - 1) + 0);
   EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr(file.string() + ":3")));
