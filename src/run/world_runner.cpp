@@ -65,7 +65,7 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
     if (is_recorded_step(spec, k)) record(replicate, outcome);
     if (observer) observer->observe(replicate);
-    if ((k & 1023) == 0) throw_if_interrupted();
+    throw_if_interrupted();
   }
   if (observer) observer->finish();
   const auto sizes = replicate.aggregates().sizes();

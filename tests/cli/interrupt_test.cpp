@@ -238,6 +238,27 @@ TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
   fs::remove_all(out);
 }
 
+// Drawing a frame every step, a run stops at the step the signal came in, not at the next
+// multiple of 1024 steps (it drew on for seconds, to frame 1025).
+TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStep) {
+  const fs::path out = fresh_dir("frames");
+  Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=300",
+               "--render-every", "1", "--render-size", "64x64", "--out", out.string()});
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "frames" / "frame_000005.png") &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  child.send(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+  std::size_t frames = 0;
+  for (const auto& entry : fs::directory_iterator(out / "frames"))
+    frames += entry.is_regular_file();
+  EXPECT_LT(frames, 1000u) << "drew on after the signal";
+  fs::remove_all(out);
+}
+
 // Ctrl-C after the simulation, while the models are computed (which do not look for it):
 // no later phase starts, and the run exits as interrupted, not as a success.
 TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
