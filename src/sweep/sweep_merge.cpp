@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "analysis/csv_table.hpp"
+#include "analysis/csv_text.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
@@ -153,10 +154,21 @@ std::vector<std::filesystem::path> run_locations(
       "); run the missing shards (or resume the sweep) first");
 }
 
-// The observables of a run's last timeseries row (after replicate, step and time).
-std::vector<double> final_observables(const std::vector<double>& last_row,
-                                      const std::filesystem::path& file) {
+// A run's timeseries ends with its last step: one cut short at a line's end reads as a
+// complete file whose last row is an earlier state.
+void check_reaches_the_end(const std::vector<double>& last_row, const WorldSpec& world,
+                           const std::filesystem::path& file) {
   if (last_row.empty()) throw InputError(file.string() + ": holds no rows");
+  const double last_step = last_row[1];
+  if (last_step != static_cast<double>(world.steps())) {
+    throw InputError(file.string() + ": ends at step " + csv_number(last_step) +
+                     " but the run has " + std::to_string(world.steps()) +
+                     " steps (cut short?); run it again");
+  }
+}
+
+// The observables of a run's last timeseries row (after replicate, step and time).
+std::vector<double> final_observables(const std::vector<double>& last_row) {
   return {last_row.begin() + 3, last_row.end()};
 }
 
@@ -187,7 +199,8 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
     const std::string prefix = csv_prefix(finals.back().values);
     const auto file = locations[i] / "timeseries.csv";
     const std::vector<double> last = timeseries.append(file, prefix, run.replicate);
-    finals.back().replicates.push_back(final_observables(last, file));
+    check_reaches_the_end(last, run.world, file);
+    finals.back().replicates.push_back(final_observables(last));
     if (std::filesystem::exists(locations[i] / "partitions.csv")) {
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);
     }

@@ -119,6 +119,11 @@ TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
   std::ofstream(file, std::ios::binary) << good.substr(0, good.find(',', noa - 1) + 0);
   EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr(file.string() + ":3")));
+  // Cut short at a line's end: every row is whole, but the run's last steps are missing.
+  std::ofstream(file, std::ios::binary) << good.substr(0, line3);
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(
+                  AllOf(HasSubstr(file.string() + ": ends at step"), HasSubstr("cut short?"))));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
 }
 
