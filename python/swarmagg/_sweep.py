@@ -46,11 +46,21 @@ class Sweep:
         return json.loads((self.out / "sweep.json").read_text())
 
 
-def sweep(path: str | os.PathLike, out: str | os.PathLike | None = None, threads: int = 0) -> Sweep:
+def sweep(
+    path: str | os.PathLike,
+    out: str | os.PathLike | None = None,
+    threads: int = 0,
+    force: bool = False,
+) -> Sweep:
     """Runs the sweep file's runs that are not complete yet into `out` (default
     runs/<sweep name>, as the CLI), then merges them, as `swarmagg sweep SWEEP --out OUT
     --threads T --no-plots`. Resumable: complete runs are kept. threads=0 uses every core.
+    Runs whose folders hold results of another world (the sweep's base world, seed or values
+    changed since) raise ValueError unless force=True replaces them (--force); so does an
+    `out` that holds files but is not a sweep's folder.
     Runs without the GIL; Ctrl-C raises KeyboardInterrupt, and runs in progress leave
     nothing behind. A bad sweep file raises WorldError.
     """
-    return Sweep(_core.sweep(os.fspath(path), None if out is None else os.fspath(out), threads))
+    return Sweep(
+        _core.sweep(os.fspath(path), None if out is None else os.fspath(out), threads, force)
+    )

@@ -22,6 +22,7 @@ struct SweepCommandOptions {
   int threads = 0;
   std::string shard;
   bool list = false;
+  bool force = false;
   bool quiet = false;
   ProgressOption progress;
   bool no_plots = false;
@@ -42,6 +43,7 @@ int sweep_command(const SweepCommandOptions& command) {
   options.out = command.out.empty() ? std::filesystem::path("runs") / plan.name
                                     : std::filesystem::path(command.out);
   options.threads = command.threads;
+  options.replace_outdated = command.force;
   options.shard = command.shard.empty() ? Shard{} : parse_shard(command.shard);
   options.progress = command.progress.shown(command.quiet);
   if (command.list) {
@@ -97,6 +99,8 @@ void add_sweep_command(CLI::App& app, Action& action) {
   command->add_option("--shard", options->shard,
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
+  command->add_flag("--force", options->force,
+                    "Replace runs whose folders hold results of another world (the sweep changed)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   options->progress.add_to(*command);
   command->add_flag("--no-plots", options->no_plots, "Skip the merged sweep's plots (gnuplot)");

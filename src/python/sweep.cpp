@@ -18,13 +18,14 @@ namespace py = pybind11;
 namespace swarmagg::python {
 namespace {
 
-py::dict sweep(const std::string& path, std::optional<std::string> out, int threads) {
+py::dict sweep(const std::string& path, std::optional<std::string> out, int threads, bool force) {
   if (threads < 0 || threads > 1024)  // as run.threads and the CLI's sweep --threads
     throw InputError("threads: expected 0 (all cores) to 1024, got " + std::to_string(threads));
   const SweepPlan plan = reading_file([&] { return load_sweep(path); });
   SweepOptions options;
   options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;
   options.threads = threads;
+  options.replace_outdated = force;
   const SweepReport report = call_interruptibly([&] {
     const SweepReport ran = run_sweep(plan, options);
     merge_sweep({options.out}, options.out);
@@ -45,7 +46,7 @@ py::dict sweep(const std::string& path, std::optional<std::string> out, int thre
 
 void bind_sweep(py::module_& module) {
   module.def("sweep", &sweep, py::arg("path"), py::arg("out") = py::none(), py::arg("threads") = 0,
-             "Runs and merges a sweep (see swarmagg.sweep).");
+             py::arg("force") = false, "Runs and merges a sweep (see swarmagg.sweep).");
 }
 
 }  // namespace swarmagg::python

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/run_plots.hpp"
 #include "run/interrupt.hpp"
@@ -77,6 +78,37 @@ void write_manifest(const std::filesystem::path& out, const SweepPlan& plan) {
   if (!in || existing.str() != text) write_file_atomic(out / kManifestFile, text);
 }
 
+// A folder a sweep may write into: missing, empty but for hidden temporaries (shards of a job
+// array start at once, one of them writing the manifest), or a sweep's own (its manifest).
+void check_is_sweep_folder(const std::filesystem::path& out) {
+  if (std::filesystem::exists(out / kManifestFile)) return;
+  std::error_code missing;
+  for (const auto& entry : std::filesystem::directory_iterator(out, missing)) {
+    if (entry.path().filename().string().starts_with(".")) continue;
+    throw InputError(out.string() + "/ holds files but no " + kManifestFile +
+                     ": not a sweep's folder (an earlier run?); use --out DIR for the sweep");
+  }
+}
+
+// Runs whose folders hold a complete run of another world are results someone may still
+// need: they are replaced only when asked.
+void check_no_outdated_runs(const std::filesystem::path& out, const std::vector<SweepRun>& runs) {
+  std::size_t outdated = 0;
+  const SweepRun* example = nullptr;
+  for (const SweepRun& run : runs) {
+    if (sweep_run_status(out, run) != RunStatus::Outdated) continue;
+    ++outdated;
+    if (example == nullptr) example = &run;
+  }
+  if (outdated == 0) return;
+  throw InputError(
+      out.string() + "/: " + std::to_string(outdated) +
+      " runs hold results of another world (the base world, seed or values "
+      "changed since they ran), e.g. " +
+      sweep_run_folder(out, *example).string() +
+      "; pass --force (force=True in Python) to replace them, or --out DIR to keep them");
+}
+
 }  // namespace
 
 std::vector<SweepRun> shard_runs(std::vector<SweepRun> runs, Shard shard) {
@@ -89,6 +121,8 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   std::vector<SweepRun> pending = shard_runs(expand_sweep(plan), options.shard);
   SweepReport report;
   report.selected = static_cast<int>(pending.size());
+  check_is_sweep_folder(options.out);
+  if (!options.replace_outdated) check_no_outdated_runs(options.out, pending);
   std::erase_if(pending, [&](const SweepRun& run) {
     return sweep_run_status(options.out, run) == RunStatus::Complete;
   });

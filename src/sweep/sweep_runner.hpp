@@ -20,6 +20,9 @@ struct SweepOptions {
   Shard shard;
   bool progress = false;  // a progress line on stderr (run/progress_line.hpp)
   bool plots = false;  // draw each run's own plots (run_plots.hpp); the caller checks for gnuplot
+  // Replace runs whose folders hold a complete run of another world (the sweep's base world,
+  // seed or values changed since); without it they are refused, naming one.
+  bool replace_outdated = false;
 };
 
 struct SweepReport {

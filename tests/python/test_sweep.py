@@ -33,3 +33,15 @@ def test_a_sweep_run_again_keeps_its_complete_runs(demo, tmp_path):
     again = sa.sweep(path, out=tmp_path / "out")
     assert (again.report["already_complete"], again.report["ran"]) == (4, 0)
     pd.testing.assert_frame_equal(first.results(), again.results())
+
+
+def test_a_changed_sweep_replaces_earlier_runs_only_with_force(demo, tmp_path):
+    path = write_sweep(tmp_path, demo)
+    sa.sweep(path, out=tmp_path / "out")
+    path.write_text(path.read_text().replace("seed: 11", "seed: 12"))
+    try:
+        sa.sweep(path, out=tmp_path / "out")
+        raise AssertionError("replaced the earlier runs without force")
+    except ValueError as error:
+        assert "4 runs hold results of another world" in str(error)
+    assert sa.sweep(path, out=tmp_path / "out", force=True).report["ran"] == 4

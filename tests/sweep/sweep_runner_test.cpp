@@ -5,6 +5,7 @@
 #include <csignal>
 
 #include "config/world_loader.hpp"
+#include "core/errors.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
@@ -27,10 +28,11 @@ class SweepRunnerTest : public testing::SweepTest {
     SweepTest::TearDown();
   }
 
-  SweepReport run(const std::string& out, int threads = 2) {
+  SweepReport run(const std::string& out, int threads = 2, bool replace_outdated = false) {
     SweepOptions options;
     options.out = dir_ / out;
     options.threads = threads;
+    options.replace_outdated = replace_outdated;
     return run_sweep(load_sweep(sweep_file(testing::kGridSweep)), options);
   }
 
@@ -85,7 +87,14 @@ TEST_F(SweepRunnerTest, ResumingSkipsCompleteRunsAndRedoesUnfinishedOrOutdatedOn
   EXPECT_EQ(sweep_run_status(dir_ / "out", runs[10]), RunStatus::Complete);
   EXPECT_EQ(sweep_run_status(dir_ / "nowhere", runs[10]), RunStatus::Pending);
 
-  const SweepReport report = run("out");
+  // An outdated run holds results someone may need: replaced only when asked.
+  EXPECT_THAT([&] { run("out"); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("1 runs hold results of another world (the base world, seed or values "
+                            "changed since they ran), e.g. " +
+                            folder("out", 9).string() + "; pass --force")));
+  EXPECT_TRUE(read_file_text(outdated) == world) << "the outdated run was touched";
+  const SweepReport report = run("out", 2, true);
   EXPECT_EQ(report.already_complete, 10);
   EXPECT_EQ(report.ran, 2);
   EXPECT_EQ(count_files(dir_ / "out", ".tmp"), 0);
@@ -94,6 +103,17 @@ TEST_F(SweepRunnerTest, ResumingSkipsCompleteRunsAndRedoesUnfinishedOrOutdatedOn
     EXPECT_TRUE(read_file_text(dir_ / "out" / file) == read_file_text(dir_ / "reference" / file))
         << file;
   }
+}
+
+TEST_F(SweepRunnerTest, AFolderThatIsNotASweepsIsRefused) {
+  std::filesystem::create_directories(dir_ / "a-run");
+  testing::write_file_text(dir_ / "a-run" / "timeseries.csv", "replicate,step\n");
+  EXPECT_THAT([&] { run("a-run"); }, ::testing::ThrowsMessage<InputError>(HasSubstr(
+                                         "holds files but no sweep.json: not a sweep's folder")));
+  // A shard that starts while another writes the manifest sees only its temporary.
+  std::filesystem::create_directories(dir_ / "starting");
+  testing::write_file_text(dir_ / "starting" / ".sweep.json.42.0.tmp", "{");
+  EXPECT_EQ(run("starting").ran, 12);
 }
 
 TEST_F(SweepRunnerTest, AnInterruptStopsBeforeTheNextRunAndKeepsCompletedOnes) {
