@@ -16,6 +16,7 @@ namespace {
 struct CompareCommandOptions {
   WorldOptions world;
   std::string out;
+  bool force = false;
   bool quiet = false;
   ProgressOption progress;
 };
@@ -27,9 +28,15 @@ int compare_command(const CompareCommandOptions& options) {
     throw InputError("compare needs at least 2 replicates (--replicates)");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
+  if (!options.force) refuse_to_replace(out, "an earlier comparison or run?", "them");
   check_output_folder(out, options.out.empty() ? "the comparison folder" : "--out");
   install_interrupt_handlers();
   const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet));
+  // Only now: Ctrl-C before leaves the earlier comparison whole.
+  if (options.force) {
+    for (const std::string& failure : remove_earlier_comparison(out))
+      std::cerr << "warning: could not remove the earlier comparison's " << failure << "\n";
+  }
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   if (!options.quiet) {
     std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";
@@ -49,6 +56,8 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_option("--seed", options->world.seed, "World seed (run.seed)")->type_name("UINT");
   command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
   command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
+  command->add_flag("--force", options->force,
+                    "Replace the comparison (or anything else) already in the output folder");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   options->progress.add_to(*command);
   command->callback(

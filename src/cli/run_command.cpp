@@ -108,20 +108,11 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
   std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
 }
 
-// An earlier run is never replaced without a word: its folder holds results someone may
-// still need.
-void refuse_to_replace(const std::filesystem::path& out) {
-  std::error_code error;
-  if (!std::filesystem::is_directory(out, error) || std::filesystem::is_empty(out, error)) return;
-  throw InputError(out.string() + "/ already holds files (an earlier run?): pass --force to " +
-                   "replace its run, or --out DIR to write this one elsewhere");
-}
-
 // Every output path is checked before the first step: a long run must not be lost to a
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
-  if (!options.force) refuse_to_replace(out);
+  if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");

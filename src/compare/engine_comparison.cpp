@@ -45,6 +45,21 @@ void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparis
   write_comparison_plots(world, a, b, c, std::filesystem::absolute(out));
 }
 
+std::vector<std::string> remove_earlier_comparison(const std::filesystem::path& out) {
+  std::vector<std::string> failures;
+  const auto remove = [&](const std::filesystem::path& path) {
+    std::error_code error;
+    std::filesystem::remove_all(path, error);
+    if (error) failures.push_back(path.string() + ": " + error.message());
+  };
+  for (const char* name : {"kinematic", "box2d", "summary.txt", "compare.json", "noa.csv", "noa.gp",
+                           "noa.png", "final_noa.csv", "sizes.csv", "final.gp", "final.png",
+                           "escape_rate.csv", "escape_rate.gp", "escape_rate.png"}) {
+    remove(out / name);
+  }
+  return failures;
+}
+
 std::filesystem::path default_compare_folder(const WorldSpec& spec) {
   return std::filesystem::path("runs") / (spec.name + "-compare");
 }

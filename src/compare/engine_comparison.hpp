@@ -6,6 +6,8 @@
 //   escape_rate.{csv,gp,png} (worlds with leaving), and each engine's ordinary run folder
 //   in kinematic/ and box2d/.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "compare/arm_comparison.hpp"
 #include "compare/engine_arm.hpp"
@@ -22,6 +24,12 @@ EngineComparison compare_engines(const WorldSpec& spec, bool progress = false);
 
 void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
                           const std::filesystem::path& out);
+
+// What `compare --force` does to the comparison already in `out` once the new one is
+// computed: the files above go, and the arms' folders whole (a comparison without leaving
+// writes no escape_rate.*; an arm's trajectories.h5 put there by hand would stay beside a new
+// arm). Other files stay. Returns what could not be removed ("path: reason"), to warn about.
+std::vector<std::string> remove_earlier_comparison(const std::filesystem::path& out);
 
 // runs/<world name>-compare unless --out says otherwise.
 std::filesystem::path default_compare_folder(const WorldSpec& spec);

@@ -85,4 +85,13 @@ void check_output_file(const std::filesystem::path& file, const std::string& opt
     refuse(option, file, "its folder " + folder.string() + ": " + why);
 }
 
+void refuse_to_replace(const std::filesystem::path& folder, const std::string& earlier,
+                       const std::string& replaced) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error) || std::filesystem::is_empty(folder, error))
+    return;
+  throw InputError(folder.string() + "/ already holds files (" + earlier + "): pass --force to " +
+                   "replace " + replaced + ", or --out DIR to write this one elsewhere");
+}
+
 }  // namespace swarmagg

@@ -15,4 +15,10 @@ void check_output_folder(const std::filesystem::path& folder, const std::string&
 // folder.
 void check_output_file(const std::filesystem::path& file, const std::string& option);
 
+// An earlier output is never replaced without a word: its folder holds results someone may
+// still need. Throws InputError when `folder` holds files, naming `earlier` (what they are
+// likely to be: "an earlier run?") and saying that --force replaces them.
+void refuse_to_replace(const std::filesystem::path& folder, const std::string& earlier,
+                       const std::string& replaced);
+
 }  // namespace swarmagg

@@ -117,6 +117,25 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
 }
 
 // A video the run could not make is refused before the simulation, not after it.
+// compare, as run, replaces what its folder holds only with --force, and then its arms whole.
+TEST(Cli, CompareReplacesAnEarlierFolderOnlyWithForce) {
+  const auto out = temp_dir("compare-force");
+  std::filesystem::create_directories(out / "kinematic");
+  std::ofstream(out / "kinematic" / "trajectories.h5") << "an earlier arm's";
+  const std::string compare =
+      "compare worlds/examples/demo.yaml --set run.duration=20 --replicates 2 --quiet --out " +
+      out.string();
+  const Outcome refused = swarmagg(compare);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_THAT(refused.output, HasSubstr("already holds files"));
+  EXPECT_TRUE(std::filesystem::exists(out / "kinematic" / "trajectories.h5"));
+  const Outcome forced = swarmagg(compare + " --force");
+  EXPECT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_TRUE(std::filesystem::exists(out / "compare.json"));
+  EXPECT_FALSE(std::filesystem::exists(out / "kinematic" / "trajectories.h5"));
+  std::filesystem::remove_all(out);
+}
+
 TEST(Cli, ABadVideoRequestIsRefusedBeforeTheRun) {
   const std::filesystem::path dir = temp_dir("video");
   const std::string out = (dir / "run").string();
