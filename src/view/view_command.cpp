@@ -143,8 +143,11 @@ std::vector<ViewCommand> read_view_script(const std::string& path) {
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     ViewCommand command;
-    if (parse_view_command(line, path + ":" + std::to_string(number), command))
+    const std::string where = path + ":" + std::to_string(number);
+    if (parse_view_command(line, where, command)) {
+      command.origin = where;
       commands.push_back(std::move(command));
+    }
   }
   return commands;
 }

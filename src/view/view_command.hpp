@@ -42,6 +42,9 @@ struct ViewCommand {
   Overlay overlay = Overlay::Detection;
   bool on = true;    // Overlay, Panel
   std::string path;  // Screenshot
+  // "file:line" of a scripted command; empty for one typed in the window. A scripted command
+  // that fails ends the view as an error, where a typed one only shows its message.
+  std::string origin;
 };
 
 inline ViewCommand view_command(ViewAction action, std::int64_t count = 0) {

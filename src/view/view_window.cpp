@@ -108,7 +108,7 @@ class Window {
   void draw_noa_plot();
   void draw_inspector();
   void draw_tooltip();
-  void take_screenshot(const std::string& path);
+  bool take_screenshot(const std::string& path);  // false, with message_ saying why, on failure
   void set_recording(bool on);
   void record_step();
   FrameLayout fit_layout() const;
@@ -408,6 +408,7 @@ void Window::run_commands() {
     try {
       session_.apply(command);
     } catch (const InputError& e) {
+      if (!command.origin.empty()) throw InputError(command.origin + ": " + e.what());
       message_ = e.what();
       std::cerr << "swarmagg view: " << e.what() << "\n";
     }
@@ -415,7 +416,8 @@ void Window::run_commands() {
       // Screenshots show the frame as drawn after the commands before them.
       draw_scene();
       show_frame();
-      take_screenshot(*path);
+      if (!take_screenshot(*path) && !command.origin.empty())
+        throw std::runtime_error(command.origin + ": " + message_);
     }
     if (const auto record = session_.take_record_request()) set_recording(*record);
   }
@@ -477,7 +479,7 @@ void Window::show_frame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void Window::take_screenshot(const std::string& path) {
+bool Window::take_screenshot(const std::string& path) {
   std::vector<std::uint8_t> rows(pixels_.size());
   gl_.ReadBuffer(GL_BACK);
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -492,9 +494,11 @@ void Window::take_screenshot(const std::string& path) {
     write_png(path, width_, height_, top_down, 1);
     message_ = "screenshot " + path;
     std::cout << "screenshot " << path << std::endl;
+    return true;
   } catch (const std::exception& e) {
     message_ = std::string("screenshot failed: ") + e.what();
     std::cerr << "swarmagg view: " << message_ << "\n";
+    return false;
   }
 }
 

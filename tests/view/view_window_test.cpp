@@ -163,6 +163,24 @@ TEST(ViewWindow, BadScriptIsBadInput) {
       << outcome.output;
 }
 
+// A scripted command that fails while the view runs ends it as an error naming its line (it
+// printed the failure and exited 0); a typed one only shows its message.
+TEST(ViewWindow, AScriptedCommandThatFailsEndsTheViewNamingItsLine) {
+  SKIP_WITHOUT("xvfb-run");
+  const testing::ScratchDir dir("view-failing-script");
+  write_text(dir.path() / "select.txt", "step 2\nselect 60\nquit\n");
+  const auto select = run_on_xvfb("view " + kDemo + " --script select.txt", dir.path());
+  EXPECT_EQ(select.exit_code, 2) << select.output;
+  EXPECT_NE(select.output.find("select.txt:2: select 60: the world has agents 0 to 59"),
+            std::string::npos)
+      << select.output;
+  fs::create_directories(dir.path() / "a-folder");
+  write_text(dir.path() / "shot.txt", "screenshot a-folder\nquit\n");
+  const auto shot = run_on_xvfb("view " + kDemo + " --script shot.txt", dir.path());
+  EXPECT_EQ(shot.exit_code, 1) << shot.output;
+  EXPECT_NE(shot.output.find("shot.txt:1: screenshot failed"), std::string::npos) << shot.output;
+}
+
 // Real key presses through the X server (xdotool): play and pause (Space twice), three single
 // steps (.), hide the panel (Tab), screenshot (S), quit (Q). The screenshot is named after the
 // step it shows, and must be the run's frame of that step: had the view not paused, it would
