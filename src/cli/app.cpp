@@ -36,12 +36,17 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
   return message + " (swarmagg --help lists the commands)";
 }
 
-// `--out ""` would silently mean the command's default folder: refused, as a missing value is.
-void refuse_empty_output_folders(CLI::App& app) {
+// An empty path would silently mean the default (`--out ""`: the default folder) or nothing
+// at all (`--video ""`: no video): refused, as a missing value is.
+void refuse_empty_paths(CLI::App& app) {
   const CLI::Validator non_empty(
-      [](std::string& value) { return value.empty() ? "expected a folder, got ''" : ""; }, "");
+      [](std::string& value) { return value.empty() ? "expected a path, got ''" : ""; }, "");
   for (CLI::App* command : app.get_subcommands({})) {
-    if (CLI::Option* out = command->get_option_no_throw("--out")) out->check(non_empty);
+    for (const char* name : {"--out", "--video", "--render-dir", "--rates", "--script"}) {
+      CLI::Option* option = command->get_option_no_throw(name);
+      if (option != nullptr && option->get_type_size() != 0)
+        option->check(non_empty);  // flags: none
+    }
   }
 }
 
@@ -84,7 +89,7 @@ int main(int argc, char** argv) {
   add_bench_command(app, action);
   add_keys_command(app, action);
   add_help_command(app, action);
-  refuse_empty_output_folders(app);
+  refuse_empty_paths(app);
   if (const auto message = unknown_command(app, argc, argv)) {
     std::cerr << *message << "\n";
     return 2;

@@ -47,8 +47,14 @@ struct RunCommandOptions {
   std::optional<int> render_replicate;
   std::optional<int> trajectories;
   std::string video;
-  double fps = 25.0;
+  std::optional<double> fps;  // of --video; VideoOptions' default when not given
 };
+
+VideoOptions video_options(const RunCommandOptions& options) {
+  VideoOptions video;
+  if (options.fps) video.fps = *options.fps;
+  return video;
+}
 
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
@@ -108,6 +114,24 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
   std::cout << " (scripts and their CSVs in " << (out / kPlotsFolder).string() << "/)\n";
 }
 
+// A frame or video option that would change nothing is refused, as a typo would be: the
+// user expects frames (or a video) that the run would not make.
+void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpec& spec) {
+  if (spec.render.every <= 0) {
+    for (const auto& [given, name] :
+         {std::pair{!options.video.empty(), "--video"},
+          {options.render_size.has_value(), "--render-size"},
+          {options.render_dir.has_value(), "--render-dir"},
+          {options.render_replicate.has_value(), "--render-replicate"}}) {
+      if (given) {
+        throw InputError(std::string(name) +
+                         " needs frames: give --render-every K (or render.every in the world)");
+      }
+    }
+  }
+  if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
+}
+
 // Every output path is checked before the first step: a long run must not be lost to a
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
@@ -119,7 +143,7 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   }
   if (!options.video.empty()) {
     check_output_file(options.video, "--video");
-    check_video_request(options.video, VideoOptions{.fps = options.fps});
+    check_video_request(options.video, video_options(options));
   }
 }
 
@@ -131,9 +155,7 @@ int run_command(const RunCommandOptions& options) {
   const std::filesystem::path out =
       out_given ? std::filesystem::path(options.out) : default_run_folder(spec);
   const std::filesystem::path frames = frames_folder(spec, out, out_given);
-  if (!options.video.empty() && spec.render.every <= 0) {
-    throw InputError("--video needs frames: give --render-every K (or render.every in the world)");
-  }
+  refuse_idle_render_options(options, spec);
   check_outputs(spec, options, out, frames);
   install_interrupt_handlers();
   RunOptions run_options;
@@ -188,7 +210,7 @@ int run_command(const RunCommandOptions& options) {
               << trajectories->target().string() << "\n";
   }
   if (!options.video.empty()) {
-    assemble_video(frames, options.video, options.fps);
+    assemble_video(frames, options.video, video_options(options));
     if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;

@@ -78,7 +78,13 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   EXPECT_THAT(misspelt.output, HasSubstr("unknown command 'rnu'; did you mean 'run'?"));
   const Outcome empty_out = swarmagg("run worlds/examples/demo.yaml --out ''");
   EXPECT_EQ(empty_out.exit_code, 2);
-  EXPECT_THAT(empty_out.output, HasSubstr("--out: expected a folder, got ''"));
+  EXPECT_THAT(empty_out.output, HasSubstr("--out: expected a path, got ''"));
+  // Frame and video options a run would not use: the frames or video expected would not come.
+  for (const char* idle : {"--render-size 100x100", "--render-dir x", "--fps 30", "--video ''"}) {
+    const Outcome o =
+        swarmagg("run worlds/examples/demo.yaml --out " + temp_dir("idle").string() + " " + idle);
+    EXPECT_EQ(o.exit_code, 2) << idle << ": " << o.output;
+  }
   const Outcome unknown = swarmagg("frobnicate");
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_THAT(unknown.output, HasSubstr("unknown command 'frobnicate'"));
