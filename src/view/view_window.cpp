@@ -49,6 +49,18 @@ struct WindowGl {
   decltype(&::glReadBuffer) ReadBuffer = nullptr;
   decltype(&::glViewport) Viewport = nullptr;
   decltype(&::glFinish) Finish = nullptr;
+  decltype(&::glClearColor) ClearColor = nullptr;
+  decltype(&::glClear) Clear = nullptr;
+  PFNGLGENFRAMEBUFFERSPROC GenFramebuffers = nullptr;
+  PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers = nullptr;
+  PFNGLBINDFRAMEBUFFERPROC BindFramebuffer = nullptr;
+  PFNGLCHECKFRAMEBUFFERSTATUSPROC CheckFramebufferStatus = nullptr;
+  PFNGLFRAMEBUFFERRENDERBUFFERPROC FramebufferRenderbuffer = nullptr;
+  PFNGLGENRENDERBUFFERSPROC GenRenderbuffers = nullptr;
+  PFNGLDELETERENDERBUFFERSPROC DeleteRenderbuffers = nullptr;
+  PFNGLBINDRENDERBUFFERPROC BindRenderbuffer = nullptr;
+  PFNGLRENDERBUFFERSTORAGEPROC RenderbufferStorage = nullptr;
+  PFNGLBLITFRAMEBUFFERPROC BlitFramebuffer = nullptr;
 
   template <class F>
   static void load(F& f, const char* name) {
@@ -67,6 +79,18 @@ struct WindowGl {
     load(ReadBuffer, "glReadBuffer");
     load(Viewport, "glViewport");
     load(Finish, "glFinish");
+    load(ClearColor, "glClearColor");
+    load(Clear, "glClear");
+    load(GenFramebuffers, "glGenFramebuffers");
+    load(DeleteFramebuffers, "glDeleteFramebuffers");
+    load(BindFramebuffer, "glBindFramebuffer");
+    load(CheckFramebufferStatus, "glCheckFramebufferStatus");
+    load(FramebufferRenderbuffer, "glFramebufferRenderbuffer");
+    load(GenRenderbuffers, "glGenRenderbuffers");
+    load(DeleteRenderbuffers, "glDeleteRenderbuffers");
+    load(BindRenderbuffer, "glBindRenderbuffer");
+    load(RenderbufferStorage, "glRenderbufferStorage");
+    load(BlitFramebuffer, "glBlitFramebuffer");
   }
 };
 
@@ -108,7 +132,9 @@ class Window {
   void draw_noa_plot();
   void draw_inspector();
   void draw_tooltip();
-  bool take_screenshot(const std::string& path);  // false, with message_ saying why, on failure
+  bool take_screenshot(const std::string& path);
+  void make_frame_buffer();
+  void copy_frame_to_window();  // false, with message_ saying why, on failure
   void set_recording(bool on);
   void record_step();
   FrameLayout fit_layout() const;
@@ -125,6 +151,9 @@ class Window {
   std::unique_ptr<FrameRenderer> renderer_;
   std::vector<std::uint8_t> pixels_;
   unsigned texture_ = 0;
+  // The composed frame (scene and panel) at the frame's size, copied into the window.
+  unsigned frame_buffer_ = 0;
+  unsigned frame_colour_ = 0;
   std::deque<ViewCommand> queue_;
   std::deque<ViewCommand> script_;
   std::int64_t frame_limit_;
@@ -194,6 +223,7 @@ Window::Window(ViewSession& session, const ViewWindowOptions& options)
   gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  make_frame_buffer();
   glfwMakeContextCurrent(nullptr);
   renderer_ = std::make_unique<FrameRenderer>(width_, height_);
   pixels_.resize(static_cast<std::size_t>(width_) * height_ * 4);
@@ -212,6 +242,8 @@ Window::~Window() {
   renderer_.reset();
   glfwMakeContextCurrent(window_);
   gl_.DeleteTextures(1, &texture_);
+  gl_.DeleteFramebuffers(1, &frame_buffer_);
+  gl_.DeleteRenderbuffers(1, &frame_colour_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -466,6 +498,9 @@ void Window::show_frame() {
                     pixels_.data());
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  // The panel is laid out on the frame, whatever size the window was given.
+  ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
+  ImGui::GetIO().DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
   ImGui::NewFrame();
   ImGui::GetBackgroundDrawList()->AddImage(
       reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), ImVec2(0, 0),
@@ -475,15 +510,52 @@ void Window::show_frame() {
     draw_tooltip();
   }
   ImGui::Render();
-  gl_.Viewport(0, 0, width_, height_);  // no clear: the scene covers the whole window
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, frame_buffer_);
+  gl_.Viewport(0, 0, width_, height_);  // no clear: the scene covers the whole frame
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  copy_frame_to_window();
+}
+
+// Frames are composed off-screen at the frame's size and copied into the window: a window
+// resized anyway (a tiling window manager, xdotool) shows the same pixels, cropped or
+// bordered, and a screenshot reads the composed frame, not whatever the window's buffer holds
+// (it came out shifted and part blank).
+void Window::make_frame_buffer() {
+  gl_.GenRenderbuffers(1, &frame_colour_);
+  gl_.BindRenderbuffer(GL_RENDERBUFFER, frame_colour_);
+  gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_RGB8, width_, height_);
+  gl_.GenFramebuffers(1, &frame_buffer_);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, frame_buffer_);
+  gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, frame_colour_);
+  const bool complete = gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (!complete) throw std::runtime_error("view: cannot make an off-screen frame buffer");
+}
+
+// Pinned to the window's top-left corner, one pixel per pixel: where mouse positions count
+// from, so that they stay on what they point at.
+void Window::copy_frame_to_window() {
+  int window_width = 0, window_height = 0;
+  glfwGetFramebufferSize(window_, &window_width, &window_height);
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, frame_buffer_);
+  gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  if (window_width != width_ || window_height != height_) {
+    gl_.Viewport(0, 0, window_width, window_height);
+    gl_.ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl_.Clear(GL_COLOR_BUFFER_BIT);
+  }
+  gl_.BlitFramebuffer(0, 0, width_, height_, 0, window_height - height_, width_, window_height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 bool Window::take_screenshot(const std::string& path) {
   std::vector<std::uint8_t> rows(pixels_.size());
-  gl_.ReadBuffer(GL_BACK);
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, frame_buffer_);
+  gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
   gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   std::vector<std::uint8_t> top_down(rows.size());
   const std::size_t stride = static_cast<std::size_t>(width_) * 4;
   for (int y = 0; y < height_; ++y) {

@@ -223,5 +223,31 @@ TEST(ViewWindow, KeysPauseStepAndTakeAScreenshot) {
   EXPECT_EQ(pixels_differing(testing::read_png(shot), frame), 0u) << shot;
 }
 
+// A window resized anyway (xdotool here, a tiling window manager elsewhere) still shows and
+// screenshots the frame at its own size: the screenshot came out shifted, part blank.
+TEST(ViewWindow, AResizedWindowStillScreenshotsTheFrame) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const testing::ScratchDir dir("view-resized");
+  write_text(dir.path() / "resize.sh",
+             "set -e\n" + std::string(SWARMAGG_BINARY) + " view " + kDemo +
+                 " --size 320x240 &\n"
+                 "pid=$!\n"
+                 "wid=$(xdotool search --sync --name 'swarmagg view' | head -1)\n"
+                 "xdotool windowsize --sync $wid 400 180\n"
+                 "xdotool windowfocus --sync $wid\n"
+                 "sleep 0.5\n"
+                 "xdotool key --delay 150 period Tab s\n"
+                 "sleep 0.5\n"
+                 "xdotool key q\n"
+                 "wait $pid\n");
+  const auto outcome = on_xvfb("sh resize.sh", dir.path());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  const fs::path shot = dir.path() / "demo-step1.png";
+  ASSERT_TRUE(fs::exists(shot)) << outcome.output;
+  const testing::Image frame = run_frame(dir.path(), "kinematic", 1, "320x240");
+  EXPECT_EQ(pixels_differing(testing::read_png(shot), frame), 0u) << shot;
+}
+
 }  // namespace
 }  // namespace swarmagg
