@@ -66,36 +66,29 @@ TEST(Cli, OutputThatCannotBeWrittenIsAFailure) {
 }
 
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
-  const Outcome missing = swarmagg("run /nonexistent.yaml");
-  EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_THAT(missing.output, HasSubstr("/nonexistent.yaml"));
-  const Outcome bad = swarmagg("validate worlds/examples/demo.yaml --set robots.radius=-2");
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_THAT(bad.output, HasSubstr("robots.radius"));
-  EXPECT_EQ(swarmagg("run").exit_code, 2);
-  const Outcome misspelt = swarmagg("rnu worlds/examples/demo.yaml");
-  EXPECT_EQ(misspelt.exit_code, 2);
-  EXPECT_THAT(misspelt.output, HasSubstr("unknown command 'rnu'; did you mean 'run'?"));
-  const Outcome empty_out = swarmagg("run worlds/examples/demo.yaml --out ''");
-  EXPECT_EQ(empty_out.exit_code, 2);
-  EXPECT_THAT(empty_out.output, HasSubstr("--out: expected a path, got ''"));
-  // Frame and video options a run would not use: the frames or video expected would not come.
-  for (const char* idle : {"--render-size 100x100", "--render-dir x", "--fps 30", "--video ''"}) {
-    const Outcome o =
-        swarmagg("run worlds/examples/demo.yaml --out " + temp_dir("idle").string() + " " + idle);
-    EXPECT_EQ(o.exit_code, 2) << idle << ": " << o.output;
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"run /nonexistent.yaml", "/nonexistent.yaml"},
+      {"validate worlds/examples/demo.yaml --set robots.radius=-2", "robots.radius"},
+      {"run", "world is required"},
+      {"rnu worlds/examples/demo.yaml", "unknown command 'rnu'; did you mean 'run'?"},
+      {"frobnicate", "unknown command 'frobnicate'"},
+      {"run worlds/examples/demo.yaml --out ''", "--out: expected a path, got ''"},
+      // Frame and video options a run would not use: the frames or video expected would not
+      // come.
+      {"run worlds/examples/demo.yaml --render-size 100x100", "--render-size needs frames"},
+      {"run worlds/examples/demo.yaml --render-dir x", "--render-dir needs frames"},
+      {"run worlds/examples/demo.yaml --fps 30", "--fps needs --video"},
+      {"run worlds/examples/demo.yaml --video ''", "--video: expected a path, got ''"},
+      {"validate worlds", "worlds: is a folder; expected a world file"},
+      // A reproduction of no world would be an empty report that reads as a success.
+      {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
+       "--only: no paper world's name contains 'no-such-world'"},
+  };
+  for (const auto& [arguments, message] : refused) {
+    const Outcome o = swarmagg(arguments);
+    EXPECT_EQ(o.exit_code, 2) << arguments << ": " << o.output;
+    EXPECT_THAT(o.output, HasSubstr(message)) << arguments;
   }
-  const Outcome unknown = swarmagg("frobnicate");
-  EXPECT_EQ(unknown.exit_code, 2);
-  EXPECT_THAT(unknown.output, HasSubstr("unknown command 'frobnicate'"));
-  const Outcome folder = swarmagg("validate worlds");
-  EXPECT_EQ(folder.exit_code, 2);
-  EXPECT_THAT(folder.output, HasSubstr("worlds: is a folder; expected a world file"));
-  // A reproduction of no world would be an empty report that reads as a success.
-  const Outcome none = swarmagg("reproduce --quick --only no-such-world --out " +
-                                temp_dir("reproduce-none").string());
-  EXPECT_EQ(none.exit_code, 2);
-  EXPECT_THAT(none.output, HasSubstr("--only: no paper world's name contains 'no-such-world'"));
 }
 
 // --force replaces the earlier run whole: its model, rates and plots do not stay beside a run

@@ -6,24 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
+#include "config/world_keys.hpp"
 #include "config/world_loader.hpp"
 #include "run/replicate.hpp"
 
 namespace swarmagg {
 namespace {
 
-std::string exactly(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 // Written as a world file would be, so that every default derived from a length follows.
 WorldSpec scaled_world(const std::string& controller, const std::string& topology, double scale) {
-  const auto length = [scale](double value) { return exactly(value * scale); };
+  const auto length = [scale](double value) { return format_number(value * scale); };
   std::string controller_keys = "type: " + controller +
                                 ", compaction: {tolerance: " + length(0.05) +
                                 ", spacing: " + length(2.0) + "}";

@@ -54,6 +54,25 @@ void write_text(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+// The demo's view at 320x240 on a virtual display, driven through the X server: `window`
+// (shell lines given the window id in $wid, run before it is focused), then `keys`, then Q.
+testing::CliOutcome drive_view(const fs::path& dir, const std::string& window,
+                               const std::string& keys) {
+  write_text(dir / "drive.sh",
+             "set -e\n" + std::string(SWARMAGG_BINARY) + " view " + kDemo +
+                 " --size 320x240 &\n"
+                 "pid=$!\n"
+                 "wid=$(xdotool search --sync --name 'swarmagg view' | head -1)\n" +
+                 window +
+                 "xdotool windowfocus --sync $wid\n"
+                 "sleep 0.5\n" +
+                 keys +
+                 "sleep 0.5\n"
+                 "xdotool key q\n"
+                 "wait $pid\n");
+  return on_xvfb("sh drive.sh", dir);
+}
+
 // The frame `run --render-every steps` draws after `steps` steps, at width x height.
 testing::Image run_frame(const fs::path& dir, const std::string& engine, std::int64_t steps,
                          const std::string& size) {
@@ -189,20 +208,10 @@ TEST(ViewWindow, KeysPauseStepAndTakeAScreenshot) {
   SKIP_WITHOUT("xvfb-run");
   SKIP_WITHOUT("xdotool");
   const testing::ScratchDir dir("view-keys");
-  write_text(dir.path() / "keys.sh",
-             "set -e\n" + std::string(SWARMAGG_BINARY) + " view " + kDemo +
-                 " --size 320x240 &\n"
-                 "pid=$!\n"
-                 "wid=$(xdotool search --sync --name 'swarmagg view' | head -1)\n"
-                 "xdotool windowfocus --sync $wid\n"
-                 "sleep 0.5\n"
-                 "xdotool key --delay 150 space\n"
-                 "sleep 1\n"
-                 "xdotool key --delay 150 space period period period Tab s\n"
-                 "sleep 0.5\n"
-                 "xdotool key q\n"
-                 "wait $pid\n");
-  const auto outcome = on_xvfb("sh keys.sh", dir.path());
+  const auto outcome = drive_view(dir.path(), "",
+                                  "xdotool key --delay 150 space\n"
+                                  "sleep 1\n"
+                                  "xdotool key --delay 150 space period period period Tab s\n");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   fs::path shot;
   std::int64_t step = -1;
@@ -229,19 +238,8 @@ TEST(ViewWindow, AResizedWindowStillScreenshotsTheFrame) {
   SKIP_WITHOUT("xvfb-run");
   SKIP_WITHOUT("xdotool");
   const testing::ScratchDir dir("view-resized");
-  write_text(dir.path() / "resize.sh",
-             "set -e\n" + std::string(SWARMAGG_BINARY) + " view " + kDemo +
-                 " --size 320x240 &\n"
-                 "pid=$!\n"
-                 "wid=$(xdotool search --sync --name 'swarmagg view' | head -1)\n"
-                 "xdotool windowsize --sync $wid 400 180\n"
-                 "xdotool windowfocus --sync $wid\n"
-                 "sleep 0.5\n"
-                 "xdotool key --delay 150 period Tab s\n"
-                 "sleep 0.5\n"
-                 "xdotool key q\n"
-                 "wait $pid\n");
-  const auto outcome = on_xvfb("sh resize.sh", dir.path());
+  const auto outcome = drive_view(dir.path(), "xdotool windowsize --sync $wid 400 180\n",
+                                  "xdotool key --delay 150 period Tab s\n");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   const fs::path shot = dir.path() / "demo-step1.png";
   ASSERT_TRUE(fs::exists(shot)) << outcome.output;
