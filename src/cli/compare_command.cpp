@@ -29,6 +29,11 @@ int compare_command(const CompareCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
   if (!options.force) refuse_to_replace(out, "an earlier comparison or run?", "them");
+  // The arms are compared, not watched: say so rather than leave the user looking for them.
+  if (spec.run.trajectories > 0 || spec.render.every > 0) {
+    std::cerr << "note: compare stores no trajectories and draws no frames (run.trajectories, "
+                 "render.every); run each engine with `swarmagg run --engine` for those\n";
+  }
   check_output_folder(out, options.out.empty() ? "the comparison folder" : "--out");
   install_interrupt_handlers();
   const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet));
