@@ -134,6 +134,7 @@ class Window {
   void draw_tooltip();
   bool take_screenshot(const std::string& path);
   void make_frame_buffer();
+  void finish_recording();      // says how many frames went where
   void copy_frame_to_window();  // false, with message_ saying why, on failure
   void set_recording(bool on);
   void record_step();
@@ -232,9 +233,10 @@ Window::Window(ViewSession& session, const ViewWindowOptions& options)
 
 Window::~Window() {
   session_.after_step = nullptr;
+  // Quitting while recording ends the recording as R would, saying where the frames are.
   if (recorder_) {
     try {
-      recorder_->finish();
+      finish_recording();
     } catch (const std::exception& e) {
       std::cerr << "swarmagg: recording: " << e.what() << "\n";
     }
@@ -455,6 +457,14 @@ void Window::run_commands() {
   }
 }
 
+void Window::finish_recording() {
+  recorder_->finish();
+  message_ = "recorded " + std::to_string(recorder_->frames_recorded()) + " frames into " +
+             record_dir_.string() + "/ (swarmagg video " + record_dir_.string() + " OUT.mp4)";
+  std::cout << message_ << std::endl;
+  recorder_.reset();
+}
+
 // The scene, off-screen, into pixels_, with the window's context released.
 void Window::draw_scene() {
   follow_selected();
@@ -464,11 +474,7 @@ void Window::draw_scene() {
 void Window::set_recording(bool on) {
   if (on == static_cast<bool>(recorder_)) return;
   if (recorder_) {
-    recorder_->finish();
-    message_ = "recorded " + std::to_string(recorder_->frames_recorded()) + " frames into " +
-               record_dir_.string() + "/ (swarmagg video " + record_dir_.string() + " OUT.mp4)";
-    std::cout << message_ << std::endl;
-    recorder_.reset();
+    finish_recording();
     return;
   }
   WorldSpec spec = session_.spec();

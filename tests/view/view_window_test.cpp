@@ -145,10 +145,13 @@ TEST(ViewWindow, ScreenshotWithThePanelOffIsTheRunsFrame) {
 TEST(ViewWindow, RecordsAFrameEveryKSteps) {
   SKIP_WITHOUT("xvfb-run");
   const testing::ScratchDir dir("view-record");
-  write_text(dir.path() / "s.txt", "step 5\nrecord on\nstep 25\nrecord off\nquit\n");
+  // Quit while recording: the recording ends as `record off` would end it, saying so.
+  write_text(dir.path() / "s.txt", "step 5\nrecord on\nstep 25\nquit\n");
   const auto view = run_on_xvfb(
       "view " + kDemo + " --set render.every=10 --size 200x160 --script s.txt", dir.path());
   ASSERT_EQ(view.exit_code, 0) << view.output;
+  EXPECT_NE(view.output.find("recorded 3 frames into renders/demo-view/"), std::string::npos)
+      << view.output;
   const fs::path frames = dir.path() / "renders" / "demo-view";
   // Steps 10, 20 and 30 (recording starts at step 5, which is no multiple of 10).
   for (int i = 0; i < 3; ++i) EXPECT_TRUE(fs::exists(frames / FrameRecorder::frame_name(i))) << i;
