@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
+#include "output/atomic_file.hpp"
 #include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
@@ -170,6 +171,7 @@ int run_command(const RunCommandOptions& options) {
   if (options.force) {
     for (const std::string& failure : clear_earlier_run(out))
       std::cerr << "warning: cannot remove the earlier run's " << failure << "\n";
+    remove_stale_temporaries(out);  // of a run that was killed
   }
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.

@@ -1,11 +1,14 @@
 #include "output/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <system_error>
 
@@ -68,6 +71,41 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view con
     fail("cannot write", target, error);
   }
   rename_or_discard(temporary, target);
+}
+
+namespace {
+
+// The process id in a name temporary_beside made (".<name>.<pid>.<n>.tmp"), or none.
+std::optional<pid_t> writer_of_temporary(const std::string& name) {
+  if (!name.starts_with(".") || !name.ends_with(".tmp")) return std::nullopt;
+  const std::string stem = name.substr(0, name.size() - 4);
+  const std::size_t counter_dot = stem.rfind('.');
+  if (counter_dot == std::string::npos || counter_dot == 0) return std::nullopt;
+  const std::size_t pid_dot = stem.rfind('.', counter_dot - 1);
+  if (pid_dot == std::string::npos || pid_dot == 0) return std::nullopt;
+  const std::string pid = stem.substr(pid_dot + 1, counter_dot - pid_dot - 1);
+  const std::string counter = stem.substr(counter_dot + 1);
+  const auto digits = [](const std::string& text) {
+    return !text.empty() && text.size() < 10 &&
+           text.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (!digits(pid) || !digits(counter)) return std::nullopt;
+  return static_cast<pid_t>(std::stol(pid));
+}
+
+}  // namespace
+
+std::size_t remove_stale_temporaries(const std::filesystem::path& folder) {
+  std::size_t removed = 0;
+  std::error_code missing;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, missing)) {
+    const std::optional<pid_t> writer = writer_of_temporary(entry.path().filename().string());
+    // kill(pid, 0) fails with ESRCH only when no such process exists.
+    if (!writer || !(::kill(*writer, 0) != 0 && errno == ESRCH)) continue;
+    std::error_code ignored;
+    removed += std::filesystem::remove(entry.path(), ignored) ? 1 : 0;
+  }
+  return removed;
 }
 
 }  // namespace swarmagg

@@ -20,5 +20,9 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
 void rename_or_discard(const std::filesystem::path& temporary, const std::filesystem::path& target);
 // Removes a temporary that will not become its output, whatever removing it says.
 void discard_temporary(const std::filesystem::path& temporary);
+// Removes the temporaries in `folder` (named as temporary_beside names them) whose process is
+// gone: what a killed run (SIGKILL, a node lost) left. Those of running processes stay.
+// Returns how many were removed.
+std::size_t remove_stale_temporaries(const std::filesystem::path& folder);
 
 }  // namespace swarmagg

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <string>
@@ -41,6 +42,24 @@ TEST(AtomicFile, AFailedRenameLeavesNoTemporary) {
     EXPECT_NE(std::string(e.what()).find("a.csv"), std::string::npos) << e.what();
   }
   EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
+}
+
+// What a killed run left goes; what a running one writes, and anything else, stays.
+TEST(AtomicFile, OnlyTemporariesOfProcessesThatAreGoneAreStale) {
+  const ScratchFolder folder("atomic-file-stale");
+  // Beyond Linux's largest process id: no such process.
+  const std::string gone = ".timeseries.csv.99999999.0.tmp";
+  const std::string scratch = ".trajectories.h5.replicate_2.99999999.3.tmp";
+  const std::string running = temporary_beside(folder.path() / "summary.json").filename();
+  for (const std::string& name : {gone, scratch, running, std::string(".hidden"),
+                                  std::string("notes.99999999.0.tmp"), std::string("a.csv")})
+    write_file_atomic(folder.path() / name, "x");
+  EXPECT_EQ(remove_stale_temporaries(folder.path()), 2u);
+  std::vector<std::string> left = names_in(folder.path());
+  std::sort(left.begin(), left.end());
+  std::vector<std::string> expected = {running, ".hidden", "a.csv", "notes.99999999.0.tmp"};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(left, expected);
 }
 
 }  // namespace
