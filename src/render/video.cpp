@@ -18,6 +18,8 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
+#include "output/scratch_folder.hpp"
+#include "render/png_writer.hpp"
 
 extern char** environ;
 
@@ -155,8 +157,11 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
   assemble_video(frames_dir, output, options);
 }
 
-std::filesystem::path check_video_request(const std::filesystem::path& output,
-                                          const VideoOptions& options) {
+namespace {
+
+// The checks of check_video_request that need no ffmpeg run; returns ffmpeg's path.
+std::filesystem::path video_program(const std::filesystem::path& output,
+                                    const VideoOptions& options) {
   if (!std::isfinite(options.fps) || options.fps <= 0.0 || options.fps > 1000.0) {
     throw InputError("video frame rate " + fps_text(options.fps) +
                      ": expected a number of frames per second in (0, 1000]");
@@ -178,20 +183,16 @@ std::filesystem::path check_video_request(const std::filesystem::path& output,
   return program;
 }
 
-void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
-                    const VideoOptions& options) {
-  const std::filesystem::path program = check_video_request(output, options);
-  if (!std::filesystem::exists(frames_dir / "frame_000000.png")) {
-    throw InputError("no frames to assemble in " + frames_dir.string() +
-                     " (expected frame_000000.png, frame_000001.png, ...)");
-  }
-  check_frames_contiguous(frames_dir);
-  const std::string extension = lower(output.extension().string());
+std::string trimmed(std::string text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
 
-  if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
-  const auto temporary =
-      output.parent_path() / ("." + output.stem().string() + "." + std::to_string(::getpid()) +
-                              ".tmp" + output.extension().string());
+// ffmpeg's arguments to make `made` from the frames (its extension picks the container).
+std::vector<std::string> ffmpeg_arguments(const VideoOptions& options,
+                                          const std::filesystem::path& frames_dir,
+                                          const std::filesystem::path& made) {
+  const std::string extension = lower(made.extension().string());
   std::vector<std::string> args{options.ffmpeg,
                                 "-nostdin",
                                 "-hide_banner",
@@ -218,19 +219,67 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
       args.emplace_back("+faststart");
     }
   }
-  args.push_back(temporary.string());
+  args.push_back(made.string());
+  return args;
+}
 
-  const SpawnResult result = run(program, args);
+// Runs ffmpeg to make `made`; when it fails, `made` is removed and the error names `video`.
+void make_video(const std::filesystem::path& program, const VideoOptions& options,
+                const std::filesystem::path& frames_dir, const std::filesystem::path& made,
+                const std::filesystem::path& video) {
+  const SpawnResult result = run(program, ffmpeg_arguments(options, frames_dir, made));
   // ffmpeg runs with -loglevel error, so anything it says is an error; some (a trailer that
   // did not fit on a full disk) leave it exiting 0 with an unplayable file.
   if (!WIFEXITED(result.status) || WEXITSTATUS(result.status) != 0 || !result.errors.empty()) {
-    discard_temporary(temporary);
+    discard_temporary(made);
     const bool exited_zero = WIFEXITED(result.status) && WEXITSTATUS(result.status) == 0;
     throw std::runtime_error((exited_zero
                                   ? "ffmpeg reported an error (though it exited 0)"
                                   : "ffmpeg failed (" + describe_status(result.status) + ")") +
-                             " making " + output.string() + ": " + result.errors);
+                             " making " + video.string() + ": " + trimmed(result.errors));
   }
+}
+
+// A one-frame video of the same kind, made in a scratch folder: a container or codec this
+// ffmpeg cannot write is found before a run, not after it (`--video out.xyz`).
+void probe_video_kind(const std::filesystem::path& program, const std::filesystem::path& output,
+                      const VideoOptions& options) {
+  const ScratchFolder probe("swarmagg-video-probe");
+  constexpr int kSide = 16;
+  write_png(probe.path() / "frame_000000.png", kSide, kSide,
+            std::vector<std::uint8_t>(kSide * kSide * 4, 255), 1);
+  try {
+    make_video(program, options, probe.path(),
+               probe.path() / ("probe" + output.extension().string()), output);
+  } catch (const std::runtime_error& e) {
+    throw InputError("video output '" + output.string() + "': ffmpeg cannot make a " +
+                     output.extension().string() + " video here (" + e.what() +
+                     "); .mp4, .mkv, .mov and .gif work");
+  }
+}
+
+}  // namespace
+
+std::filesystem::path check_video_request(const std::filesystem::path& output,
+                                          const VideoOptions& options) {
+  const std::filesystem::path program = video_program(output, options);
+  probe_video_kind(program, output, options);
+  return program;
+}
+
+void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
+                    const VideoOptions& options) {
+  const std::filesystem::path program = video_program(output, options);
+  if (!std::filesystem::exists(frames_dir / "frame_000000.png")) {
+    throw InputError("no frames to assemble in " + frames_dir.string() +
+                     " (expected frame_000000.png, frame_000001.png, ...)");
+  }
+  check_frames_contiguous(frames_dir);
+  if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
+  const auto temporary =
+      output.parent_path() / ("." + output.stem().string() + "." + std::to_string(::getpid()) +
+                              ".tmp" + output.extension().string());
+  make_video(program, options, frames_dir, temporary, output);
   rename_or_discard(temporary, output);
 }
 

@@ -17,10 +17,11 @@ struct VideoOptions {
 // The executable `name` resolves to (PATH search unless it contains '/'); empty if none.
 std::filesystem::path find_program(std::string_view name);
 
-// What assemble_video checks before it looks at the frames, so that a command can refuse a
-// video it could not make before rendering them: InputError for a bad fps/crf or an output
-// without extension, std::runtime_error when ffmpeg is not installed (the message says how
-// to install it). Returns ffmpeg's path.
+// What a command checks before it renders anything, so that it can refuse a video it could
+// not make: InputError for a bad fps/crf, an output without extension, or a kind of video
+// this ffmpeg cannot make (it makes a one-frame video of that kind in a scratch folder: about
+// 0.1 s); std::runtime_error when ffmpeg is not installed (the message says how to install it).
+// Returns ffmpeg's path.
 std::filesystem::path check_video_request(const std::filesystem::path& output,
                                           const VideoOptions& options);
 // Throws InputError for a bad fps/crf, an output without extension or a directory without

@@ -105,6 +105,22 @@ TEST(AssembleVideo, AnErrorFfmpegReportsIsAFailureWhateverItsExitStatus) {
   EXPECT_FALSE(std::filesystem::exists(scratch.path() / "out.mp4"));
 }
 
+// A kind of video ffmpeg cannot make is found before any frame is drawn (it was found after
+// the whole run).
+TEST(CheckVideoRequest, RefusesAKindOfVideoFfmpegCannotMake) {
+  if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  testing::ScratchDir scratch("video-kind");
+  EXPECT_NO_THROW(check_video_request(scratch.path() / "ok.mp4", VideoOptions{}));
+  try {
+    check_video_request(scratch.path() / "out.xyz", VideoOptions{});
+    FAIL() << "accepted .xyz";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ffmpeg cannot make a .xyz video"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(scratch.path())) << "the probe left something";
+}
+
 TEST(AssembleVideo, MakesAnMp4FromTheFrames) {
   if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
   // A directory name with characters a shell or ffmpeg's pattern syntax would misread.
