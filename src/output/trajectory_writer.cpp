@@ -31,7 +31,7 @@ std::filesystem::path scratch_file_for(const std::filesystem::path& target, int 
 // segfault in H5T_close_real, which also leaves every temporary behind), so a copy starts only
 // with room for it: the scratch file's size and a quarter more, plus 256 KiB for the
 // destination's metadata. Another process may still fill the disk meanwhile; this covers a
-// run that fills it itself.
+// run that fills it itself (checked under hdf5_lock, which every write of the run takes).
 void check_room_to_copy(const std::filesystem::path& scratch, const std::filesystem::path& into) {
   std::error_code unknown;
   const std::uintmax_t size = std::filesystem::file_size(scratch, unknown);
@@ -209,9 +209,10 @@ void TrajectoryWriter::replicate_finished(int index) {
 }
 
 void TrajectoryWriter::copy_in(std::size_t index) {
-  check_room_to_copy(scratch_files_[index], temporary_);
   {
+    // Under the lock: no other replicate writes between the check and the copy.
     std::lock_guard lock(h5::hdf5_lock());
+    check_room_to_copy(scratch_files_[index], temporary_);
     const h5::Handle scratch = h5::open_file_read(scratch_files_[index].string());
     h5::copy_object(scratch, layout::group_name(static_cast<int>(index)), file_);
   }
