@@ -33,11 +33,11 @@ std::filesystem::path scratch_file_for(const std::filesystem::path& target, int 
 // destination's metadata. Another process may still fill the disk meanwhile; this covers a
 // run that fills it itself (checked under hdf5_lock, which every write of the run takes).
 void check_room_to_copy(const std::filesystem::path& scratch, const std::filesystem::path& into) {
-  std::error_code unknown;
-  const std::uintmax_t size = std::filesystem::file_size(scratch, unknown);
+  std::error_code no_size, no_room;
+  const std::uintmax_t size = std::filesystem::file_size(scratch, no_size);
   const std::filesystem::path folder = into.has_parent_path() ? into.parent_path() : ".";
-  const std::filesystem::space_info room = std::filesystem::space(folder, unknown);
-  if (unknown) return;  // no figure to go by: HDF5 tries
+  const std::filesystem::space_info room = std::filesystem::space(folder, no_room);
+  if (no_size || no_room) return;  // no figure to go by: HDF5 tries
   const std::uintmax_t needed = size + size / 4 + (std::uintmax_t{1} << 18);
   if (room.available < needed) {
     throw std::runtime_error("HDF5: no room to copy a replicate's trajectory into " +

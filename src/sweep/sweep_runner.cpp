@@ -79,9 +79,16 @@ void write_manifest(const std::filesystem::path& out, const SweepPlan& plan) {
 }
 
 // A folder a sweep may write into: missing, empty but for hidden temporaries (shards of a job
-// array start at once, one of them writing the manifest), or a sweep's own (its manifest).
-void check_is_sweep_folder(const std::filesystem::path& out) {
-  if (std::filesystem::exists(out / kManifestFile)) return;
+// array start at once, one of them writing the manifest), or this sweep's own (a manifest of
+// the same name: values, replicates or seed may have changed since, see the outdated runs).
+void check_is_this_sweeps_folder(const std::filesystem::path& out, const SweepPlan& plan,
+                                 bool replace) {
+  if (std::filesystem::exists(out / kManifestFile)) {
+    const SweepPlan earlier = read_manifest(out);
+    if (earlier.name == plan.name || replace) return;
+    throw InputError(out.string() + "/ holds the sweep '" + earlier.name + "', not '" + plan.name +
+                     "'; pass --force to write this one there anyway, or --out DIR");
+  }
   std::error_code missing;
   for (const auto& entry : std::filesystem::directory_iterator(out, missing)) {
     if (entry.path().filename().string().starts_with(".")) continue;
@@ -103,8 +110,9 @@ void check_no_outdated_runs(const std::filesystem::path& out, const std::vector<
   if (outdated == 0) return;
   throw InputError(
       out.string() + "/: " + std::to_string(outdated) +
-      " runs hold results of another world (the base world, seed or values "
-      "changed since they ran), e.g. " +
+      (outdated == 1 ? " run holds" : " runs hold") +
+      " results of another world (the base world, seed or values changed since they ran), "
+      "e.g. " +
       sweep_run_folder(out, *example).string() +
       "; pass --force (force=True in Python) to replace them, or --out DIR to keep them");
 }
@@ -121,7 +129,7 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   std::vector<SweepRun> pending = shard_runs(expand_sweep(plan), options.shard);
   SweepReport report;
   report.selected = static_cast<int>(pending.size());
-  check_is_sweep_folder(options.out);
+  check_is_this_sweeps_folder(options.out, plan, options.replace_outdated);
   if (!options.replace_outdated) check_no_outdated_runs(options.out, pending);
   std::erase_if(pending, [&](const SweepRun& run) {
     return sweep_run_status(options.out, run) == RunStatus::Complete;

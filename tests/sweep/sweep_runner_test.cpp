@@ -90,7 +90,7 @@ TEST_F(SweepRunnerTest, ResumingSkipsCompleteRunsAndRedoesUnfinishedOrOutdatedOn
   // An outdated run holds results someone may need: replaced only when asked.
   EXPECT_THAT([&] { run("out"); },
               ::testing::ThrowsMessage<InputError>(
-                  HasSubstr("1 runs hold results of another world (the base world, seed or values "
+                  HasSubstr("1 run holds results of another world (the base world, seed or values "
                             "changed since they ran), e.g. " +
                             folder("out", 9).string() + "; pass --force")));
   EXPECT_TRUE(read_file_text(outdated) == world) << "the outdated run was touched";
@@ -114,6 +114,13 @@ TEST_F(SweepRunnerTest, AFolderThatIsNotASweepsIsRefused) {
   std::filesystem::create_directories(dir_ / "starting");
   testing::write_file_text(dir_ / "starting" / ".sweep.json.42.0.tmp", "{");
   EXPECT_EQ(run("starting").ran, 12);
+  // Another sweep's folder (its manifest names another sweep) is not this one's.
+  SweepOptions options;
+  options.out = dir_ / "starting";
+  const SweepPlan other = load_sweep(sweep_file(testing::kGridSweep, "other.yaml"));
+  EXPECT_THAT([&] { run_sweep(other, options); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("holds the sweep 'grid', not 'other'; pass --force")));
 }
 
 TEST_F(SweepRunnerTest, AnInterruptStopsBeforeTheNextRunAndKeepsCompletedOnes) {
