@@ -163,7 +163,8 @@ void check_reaches_the_end(const std::vector<double>& last_row, const WorldSpec&
   if (last_step != static_cast<double>(world.steps())) {
     throw InputError(file.string() + ": ends at step " + csv_number(last_step) +
                      " but the run has " + std::to_string(world.steps()) +
-                     " steps (cut short?); run it again");
+                     " steps (cut short?); remove " + file.parent_path().string() +
+                     " and run the sweep again to redo it");
   }
 }
 
