@@ -18,7 +18,6 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
-#include "output/scratch_folder.hpp"
 #include "render/png_writer.hpp"
 
 extern char** environ;
@@ -240,21 +239,36 @@ void make_video(const std::filesystem::path& program, const VideoOptions& option
   }
 }
 
-// A one-frame video of the same kind, made in a scratch folder: a container or codec this
-// ffmpeg cannot write is found before a run, not after it (`--video out.xyz`).
+// A two-frame video of the same kind, made in a hidden folder beside the output (whose folder
+// was checked writable): a container or codec this ffmpeg cannot write (`--video out.xyz`),
+// or an image format that holds one frame (`--video out.png`), is found before a run, not
+// after it. A probe that cannot be set up (the folder is not writable after all) checks
+// nothing: the real video will say what is wrong.
 void probe_video_kind(const std::filesystem::path& program, const std::filesystem::path& output,
                       const VideoOptions& options) {
-  const ScratchFolder probe("swarmagg-video-probe");
+  const std::filesystem::path folder =
+      (output.has_parent_path() ? output.parent_path() : std::filesystem::path(".")) /
+      ("." + output.stem().string() + ".probe." + std::to_string(::getpid()));
+  struct Remove {
+    std::filesystem::path folder;
+    ~Remove() {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  } remove{folder};
   constexpr int kSide = 16;
-  write_png(probe.path() / "frame_000000.png", kSide, kSide,
-            std::vector<std::uint8_t>(kSide * kSide * 4, 255), 1);
   try {
-    make_video(program, options, probe.path(),
-               probe.path() / ("probe" + output.extension().string()), output);
+    std::filesystem::create_directories(folder);
+    for (const char* frame : {"frame_000000.png", "frame_000001.png"})
+      write_png(folder / frame, kSide, kSide, std::vector<std::uint8_t>(kSide * kSide * 4, 255), 1);
+  } catch (const std::exception&) {
+    return;
+  }
+  try {
+    make_video(program, options, folder, folder / ("probe" + output.extension().string()), output);
   } catch (const std::runtime_error& e) {
     throw InputError("video output '" + output.string() + "': ffmpeg cannot make a " +
-                     output.extension().string() + " video here (" + e.what() +
-                     "); .mp4, .mkv, .mov and .gif work");
+                     output.extension().string() + " video of the frames: " + e.what());
   }
 }
 

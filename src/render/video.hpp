@@ -19,9 +19,9 @@ std::filesystem::path find_program(std::string_view name);
 
 // What a command checks before it renders anything, so that it can refuse a video it could
 // not make: InputError for a bad fps/crf, an output without extension, or a kind of video
-// this ffmpeg cannot make (it makes a one-frame video of that kind in a scratch folder: about
-// 0.1 s); std::runtime_error when ffmpeg is not installed (the message says how to install it).
-// Returns ffmpeg's path.
+// this ffmpeg cannot make (it makes a two-frame video of that kind in a hidden folder beside
+// the output: about 0.1 s); std::runtime_error when ffmpeg is not installed (the message says how
+// to install it). Returns ffmpeg's path.
 std::filesystem::path check_video_request(const std::filesystem::path& output,
                                           const VideoOptions& options);
 // Throws InputError for a bad fps/crf, an output without extension or a directory without
