@@ -8,6 +8,7 @@
 #include "compare/engine_comparison.hpp"
 #include "core/errors.hpp"
 #include "output/output_check.hpp"
+#include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
 
 namespace swarmagg::cli {
@@ -28,7 +29,8 @@ int compare_command(const CompareCommandOptions& options) {
     throw InputError("compare needs at least 2 replicates (--replicates)");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
-  if (!options.force) refuse_to_replace(out, "an earlier comparison or run?", "them");
+  if (!options.force)
+    refuse_to_replace(out, "an earlier comparison or run?", "the comparison or run in it");
   // The arms are compared, not watched: say so rather than leave the user looking for them.
   if (spec.run.trajectories > 0 || spec.render.every > 0) {
     std::cerr << "note: compare stores no trajectories and draws no frames (run.trajectories, "
@@ -38,9 +40,12 @@ int compare_command(const CompareCommandOptions& options) {
   install_interrupt_handlers();
   const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet));
   // Only now: Ctrl-C before leaves the earlier comparison whole.
+  // A run's folder given as --out loses its run too, as `run --force` would remove it.
   if (options.force) {
-    for (const std::string& failure : remove_earlier_comparison(out))
-      std::cerr << "warning: could not remove the earlier comparison's " << failure << "\n";
+    std::vector<std::string> failures = remove_earlier_comparison(out);
+    for (std::string& failure : clear_earlier_run(out)) failures.push_back(std::move(failure));
+    for (const std::string& failure : failures)
+      std::cerr << "warning: could not remove the earlier outputs' " << failure << "\n";
   }
   write_compare_folder(result.kinematic, result.box2d, result.stats, out);
   if (!options.quiet) {
@@ -61,8 +66,9 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_option("--seed", options->world.seed, "World seed (run.seed)")->type_name("UINT");
   command->add_option("--threads", options->world.threads, "Threads (run.threads; 0 = all cores)");
   command->add_option("--out", options->out, "Output folder (default runs/<world name>-compare)");
-  command->add_flag("--force", options->force,
-                    "Replace the comparison (or anything else) already in the output folder");
+  command->add_flag(
+      "--force", options->force,
+      "Replace the comparison or run already in the output folder (other files stay)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   options->progress.add_to(*command);
   command->callback(

@@ -119,8 +119,15 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
 // compare, as run, replaces what its folder holds only with --force, and then its arms whole.
 TEST(Cli, CompareReplacesAnEarlierFolderOnlyWithForce) {
   const auto out = temp_dir("compare-force");
+  // A run's folder with a stale arm file in it: the run's outputs and the arm go, yours stay.
+  ASSERT_EQ(
+      swarmagg("run worlds/examples/demo.yaml --set run.duration=5 --quiet --no-plots --out " +
+               out.string())
+          .exit_code,
+      0);
   std::filesystem::create_directories(out / "kinematic");
   std::ofstream(out / "kinematic" / "trajectories.h5") << "an earlier arm's";
+  std::ofstream(out / "notes.txt") << "mine";
   const std::string compare =
       "compare worlds/examples/demo.yaml --set run.duration=20 --replicates 2 --quiet --out " +
       out.string();
@@ -132,6 +139,9 @@ TEST(Cli, CompareReplacesAnEarlierFolderOnlyWithForce) {
   EXPECT_EQ(forced.exit_code, 0) << forced.output;
   EXPECT_TRUE(std::filesystem::exists(out / "compare.json"));
   EXPECT_FALSE(std::filesystem::exists(out / "kinematic" / "trajectories.h5"));
+  EXPECT_FALSE(std::filesystem::exists(out / "timeseries.csv")) << "the run's outputs stayed";
+  EXPECT_FALSE(std::filesystem::exists(out / "world.resolved.yaml"));
+  EXPECT_TRUE(std::filesystem::exists(out / "notes.txt"));
   std::filesystem::remove_all(out);
 }
 
