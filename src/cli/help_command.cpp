@@ -45,6 +45,9 @@ void add_help_command(CLI::App& app, Action& action) {
                     "Print the page docs/reference/cli.md: every command's --help");
   command->callback([markdown, only, &app, &action] {
     action = [markdown, only, &app] {
+      if (!only->empty() && *markdown) {
+        throw InputError("help: --markdown prints every command's help; give no COMMAND with it");
+      }
       if (!only->empty()) {
         const std::vector<CLI::App*> commands = app.get_subcommands({});
         const auto wanted = std::find_if(commands.begin(), commands.end(),

@@ -138,6 +138,9 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
   if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
+  // A killed run's temporaries are garbage (they would only count against the disk the new
+  // run needs): gone before it starts.
+  if (options.force) remove_stale_temporaries(out);
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
@@ -171,7 +174,6 @@ int run_command(const RunCommandOptions& options) {
   if (options.force) {
     for (const std::string& failure : clear_earlier_run(out))
       std::cerr << "warning: cannot remove the earlier run's " << failure << "\n";
-    remove_stale_temporaries(out);  // of a run that was killed
   }
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
