@@ -46,6 +46,7 @@ TEST(Cli, HelpWorksForEverySubcommand) {
     EXPECT_EQ(via_help.output, o.output) << sub;
   }
   EXPECT_EQ(swarmagg("help nope").exit_code, 2);
+  EXPECT_EQ(swarmagg("help run --markdown").exit_code, 2);
 }
 
 TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
