@@ -22,6 +22,8 @@ nlohmann::json read_json(const std::filesystem::path& file) {
 
 RunFiles read_run_files(const std::filesystem::path& folder) {
   const auto resolved = folder / "world.resolved.yaml";
+  if (!std::filesystem::is_directory(folder))
+    throw InputError(folder.string() + ": no such folder (expected a run's output folder)");
   if (!std::filesystem::exists(resolved)) {
     throw InputError(folder.string() +
                      ": holds no complete run (no world.resolved.yaml, which a run writes last)");

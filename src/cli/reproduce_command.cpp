@@ -59,7 +59,8 @@ void add_reproduce_command(CLI::App& app, Action& action) {
                    "as long as there are more runs than threads")
       ->check(CLI::Range(0, 1024));
   command->add_option("--only", r.only,
-                      "Only the worlds whose name contains this text (repeatable)");
+                      "Only the worlds whose name contains this text (repeatable); "
+                      "timeout-series selects the leave-timeout series");
   command->add_option("--set", r.overrides,
                       "Override a key of every world, e.g. --set run.replicates=4");
   command

@@ -37,7 +37,8 @@ std::string no_world_selected(const std::vector<std::string>& patterns) {
   for (const PaperFigure& figure : paper_figures()) {
     for (const std::string& world : figure.worlds) worlds += (worlds.empty() ? "" : ", ") + world;
   }
-  return "--only: no paper world's name contains " + asked + "; the worlds are " + worlds;
+  return "--only: no paper world's name contains " + asked + "; the worlds are " + worlds +
+         ", and " + kTimeoutFolder + " selects the leave-timeout series";
 }
 
 constexpr const char* kPlotFolder = "plots";  // under --out, beside REPORT.md
@@ -324,6 +325,11 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
       timeout_series_selected(options) ? timeout_runs() : std::vector<TimeoutRun>{};
   // An empty report would read as a reproduction in which nothing was checked.
   if (figures.empty() && timeouts.empty()) throw InputError(no_world_selected(options.only));
+  // Given for a series that will not run, it would be ignored without a word.
+  if (options.timeout_duration && timeouts.empty()) {
+    throw InputError("--timeout-duration: the leave-timeout series is not selected; add --only " +
+                     std::string(kTimeoutFolder) + " (--only picks worlds by name)");
+  }
   const std::vector<ReproduceJob> jobs = reproduce_jobs(options, figures, timeouts);
   const ThreadSplit split = split_threads(options.threads, jobs.size());
   RunOptions run_options;

@@ -81,6 +81,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       {"run worlds/examples/demo.yaml --fps 30", "--fps needs --video"},
       {"run worlds/examples/demo.yaml --video ''", "--video: expected a path, got ''"},
       {"validate worlds", "worlds: is a folder; expected a world file"},
+      {"plot /nonexistent-run", "/nonexistent-run: no such folder"},
+      {"reproduce --quick --only soysal-10 --timeout-duration 100",
+       "--timeout-duration: the leave-timeout series is not selected"},
       // A reproduction of no world would be an empty report that reads as a success.
       {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
        "--only: no paper world's name contains 'no-such-world'"},
