@@ -5,6 +5,7 @@
 #include "config/world_loader.hpp"
 #include "config/world_override.hpp"
 #include "output/atomic_file.hpp"
+#include "run/earlier_run.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg {
@@ -47,15 +48,10 @@ void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparis
 
 std::vector<std::string> remove_earlier_comparison(const std::filesystem::path& out) {
   std::vector<std::string> failures;
-  const auto remove = [&](const std::filesystem::path& path) {
-    std::error_code error;
-    std::filesystem::remove_all(path, error);
-    if (error) failures.push_back(path.string() + ": " + error.message());
-  };
   for (const char* name : {"kinematic", "box2d", "summary.txt", "compare.json", "noa.csv", "noa.gp",
                            "noa.png", "final_noa.csv", "sizes.csv", "final.gp", "final.png",
                            "escape_rate.csv", "escape_rate.gp", "escape_rate.png"}) {
-    remove(out / name);
+    remove_earlier_output(out / name, failures);
   }
   return failures;
 }

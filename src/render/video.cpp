@@ -18,6 +18,7 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
+#include "render/frame_recorder.hpp"
 #include "render/png_writer.hpp"
 
 extern char** environ;
@@ -118,10 +119,9 @@ void check_frames_contiguous(const std::filesystem::path& frames_dir) {
   std::sort(numbers.begin(), numbers.end());
   for (std::size_t k = 0; k < numbers.size(); ++k) {
     if (numbers[k] != static_cast<long>(k)) {
-      char missing[32];
-      std::snprintf(missing, sizeof missing, "frame_%06ld.png", static_cast<long>(k));
-      throw InputError(frames_dir.string() + ": " + missing + " is missing but " +
-                       std::to_string(numbers.size() - k) +
+      throw InputError(frames_dir.string() + ": " +
+                       FrameRecorder::frame_name(static_cast<std::int64_t>(k)) +
+                       " is missing but " + std::to_string(numbers.size() - k) +
                        " later frames exist; the video would end at the gap");
     }
   }

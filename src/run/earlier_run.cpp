@@ -24,12 +24,16 @@ std::vector<std::string> rate_terms(const std::filesystem::path& rates_csv) {
 
 }  // namespace
 
+void remove_earlier_output(const std::filesystem::path& path, std::vector<std::string>& failures) {
+  std::error_code error;
+  std::filesystem::remove_all(path, error);
+  if (error) failures.push_back(path.string() + ": " + error.message());
+}
+
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
   std::vector<std::string> failures;
-  auto remove = [&](const std::filesystem::path& path) {
-    std::error_code error;
-    std::filesystem::remove_all(path, error);
-    if (error) failures.push_back(path.string() + ": " + error.message());
+  const auto remove = [&](const std::filesystem::path& path) {
+    remove_earlier_output(path, failures);
   };
   std::error_code missing;
   if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing)) return failures;

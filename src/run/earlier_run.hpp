@@ -19,4 +19,8 @@ namespace swarmagg {
 // run's outputs are written anyway.
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out);
 
+// Removes `path` (a folder whole); what could not be removed goes to `failures` as
+// "path: reason". The removal every command's --force shares.
+void remove_earlier_output(const std::filesystem::path& path, std::vector<std::string>& failures);
+
 }  // namespace swarmagg
