@@ -10,8 +10,10 @@
 #include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
+#include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
 #include "run/measured_run.hpp"
+#include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg::cli {
@@ -21,6 +23,7 @@ struct RatesCommandOptions {
   WorldOptions world;
   std::string out;
   bool quiet = false;
+  bool force = false;
   ProgressOption progress;
 };
 
@@ -29,11 +32,18 @@ int rates_command(const RatesCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
+  refuse_another_worlds_run(out, spec, "rates", options.force);
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = options.progress.shown(options.quiet);
   const MeasuredRun run = run_world_measuring(spec, run_options, true);
-  const std::vector<RateRow> rows = write_rate_outputs(spec, *run.rates, out);
+  const std::optional<PlacementSample> start = placement_start(spec, 0);
+  const std::vector<RateRow> rows = measured_rate_rows(spec, *run.rates, start ? &*start : nullptr);
+  std::vector<std::string> failures;
+  clear_earlier_rates(out, failures);
+  for (const std::string& failure : failures)
+    std::cerr << "warning: cannot remove the earlier rates' " << failure << "\n";
+  write_rate_outputs(spec, *run.rates, rows, out);
   if (options.quiet) return 0;
   for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
   std::cout << spec.name << ": rates of " << spec.run.replicates << " replicates x " << spec.steps()
@@ -53,6 +63,8 @@ void add_rates_command(CLI::App& app, Action& action) {
       "--out", options->out,
       "Output folder for rates.csv, rates.json and plots (default runs/<world name>)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--force", options->force,
+                    "Write into a folder that holds a run of another world (refused otherwise)");
   options->progress.add_to(*command);
   command->callback([options, &action] { action = [options] { return rates_command(*options); }; });
 }

@@ -24,6 +24,7 @@
 #include "run/interrupt.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
+#include "run/placement_sample.hpp"
 #include "run/replicate_observer.hpp"
 #include "run/run_folder.hpp"
 #include "run/trajectory_output.hpp"
@@ -91,9 +92,9 @@ void print_summary(const WorldSpec& spec, const RunResult& result,
 // A world the models cannot describe (say, a partition model of too many agents) still
 // keeps its simulation outputs: the run only notes why model.csv is missing.
 void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
-                       const MeasuredTerms* measured) {
+                       const MeasuredTerms* measured, const PlacementSample* sample) {
   try {
-    write_model_outputs(spec, predict(spec, measured), out);
+    write_model_outputs(spec, predict(spec, measured, sample), out);
   } catch (const InputError& e) {
     std::cerr << "note: no model.csv: " << e.what() << "\n";
   }
@@ -183,18 +184,22 @@ int run_command(const RunCommandOptions& options) {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
   write_run_folder(spec, result, out, options.world.changes());
+  const std::optional<PlacementSample> start =
+      run.rates || !options.no_model ? placement_start(spec, 0) : std::nullopt;
+  const PlacementSample* sample = start ? &*start : nullptr;
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;
   if (run.rates) {
-    rows = options.rates
-               ? write_rate_outputs(spec, *run.rates, out,
-                                    options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw)
-               : measured_rate_rows(spec, *run.rates);
+    rows = measured_rate_rows(spec, *run.rates, sample);
+    if (options.rates) {
+      write_rate_outputs(spec, *run.rates, rows, out,
+                         options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw);
+    }
     measured = measured_terms(rows);
   }
   if (!options.no_model) {
     options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
-    write_predictions(spec, out, measured ? &*measured : nullptr);
+    write_predictions(spec, out, measured ? &*measured : nullptr, sample);
     write_model_errors(out);
   }
   if (!options.quiet && options.rates) {

@@ -479,10 +479,12 @@ std::vector<WorldKey> build_keys() {
       enum_key<InitialState>("model.initial_state",
                              [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },
                              {{"placement", InitialState::Placement},
+                              {"placement_second_order", InitialState::PlacementSecondOrder},
                               {"all_searching", InitialState::AllSearching},
                               {"measured", InitialState::Measured}}),
-      "where model predictions start: the placement's expected pairs, all agents searching, or the "
-      "state a run measured"));
+      "where model predictions start: the mean first decision of sampled placements, its "
+      "second-order formula (sparse placements only), all agents searching, or the state a run "
+      "measured"));
   keys.push_back(described(
       optional_real_key(
           "rates.return_window",

@@ -26,10 +26,11 @@ enum class ContactResponse { Slide, Stop };
 enum class Kappa { Kinetic, Maxwell, Paper };
 enum class CreationVariant { Original, Collision };
 enum class LeavingVariant { Original, Peripheral };
-// Where the models start (docs/models.md): the state after the first decision, i.e. the pairs that
-// random placement formed at once (derived from the placement geometry, or measured by a
-// run), or all agents searching as the paper's models did.
-enum class InitialState { Placement, AllSearching, Measured };
+// Where the models start (docs/models.md): the state after the first decision, i.e. the
+// aggregates that the placement formed at once (the mean over sampled placements, its
+// second-order formula, or the mean a run measured), or all agents searching as the paper's
+// models did.
+enum class InitialState { Placement, PlacementSecondOrder, AllSearching, Measured };
 
 struct ArenaSpec {
   double width = 180.0;

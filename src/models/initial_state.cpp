@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
@@ -77,13 +78,25 @@ FirstDecision expected_first_decision(const WorldSpec& world) {
   return first;
 }
 
-std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured) {
+bool starts_from_placement_sample(const WorldSpec& world) {
+  const ModelFamily model = controller_rules(world).model;
+  return world.model.initial_state == InitialState::Placement &&
+         (model == ModelFamily::Bayindir || model == ModelFamily::Soysal);
+}
+
+std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured,
+                                     const PlacementSample* sample) {
   const int n = world.robots.count;
   const bool aggregating = controller_rules(world).model != ModelFamily::Encounters;
   switch (world.model.initial_state) {
     case InitialState::AllSearching:
       return {};
     case InitialState::Placement: {
+      if (!aggregating) return {};
+      if (!sample) throw std::logic_error("model.initial_state: placement needs a sample");
+      return sample->aggregates;
+    }
+    case InitialState::PlacementSecondOrder: {
       if (!aggregating || !world.robots.random_placement()) return {};
       const FirstDecision first = expected_first_decision(world);
       std::vector<double> start(static_cast<std::size_t>(n) + 1, 0.0);

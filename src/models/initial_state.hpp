@@ -4,8 +4,12 @@
 // models therefore start from the state after the first decision (step 1), not from all
 // agents searching (the paper's start, kept as `all_searching`).
 //
-// Expected state after the first decision of a random placement (`placement`), derived to
-// second order in q, the probability that a given pair starts within s. Placement draws
+// `placement` (the default) is the mean state after the first decision over placements drawn
+// as runs draw them (PlacementSample, made by run/placement_sample.hpp: the models do not
+// place agents themselves). It holds at any density and for given positions.
+//
+// `placement_second_order` is the expectation derived to second order in q, the probability
+// that a given pair starts within s. Placement draws
 // positions uniformly and rejects body overlaps (distance < 2r), so at low density a pair is
 // uniform outside 2r: q = pi (s^2 - (2r)^2) / A. Let j, k be two agents within s of a third,
 // i (uniform in the annulus 2r..s around it); o = P(|j - k| < 2r) (they would overlap, so
@@ -17,9 +21,11 @@
 // component of two or three agents, so the pairs formed are E - K + T (to first order E, the
 // issue's N(N-1)/2 pi s^2 / A before the body exclusion). With joining allowed the third
 // agent of a three-agent component joins its pair: n_3 = K - 2T aggregates of three and
-// n_2 = E - 2K + 3T of two; under join: false the third agent stays searching. Clusters of
-// four or more are left out: measured over 1500 placements of 400 agents on 460 x 460 the
-// pairs match within the standard error, the triples (0.64 expected) come out ~0.08 lower.
+// n_2 = E - 2K + 3T of two; under join: false the third agent stays searching. The expansion
+// leaves out that a cherry must also be apart from every other agent (a factor of about
+// exp(-3 (N-1) q)) and every larger component: with (N-1) q = 0.16 (60 agents on 120 x 120)
+// the pairs match the runs' but the triples come out 28 % high, and from (N-1) q of about 0.3
+// the counts are wrong altogether (docs/models.md).
 #include <vector>
 
 #include "config/world_spec.hpp"
@@ -42,11 +48,25 @@ struct FirstDecision {
 // The expectation above, for a random placement of an aggregating world.
 FirstDecision expected_first_decision(const WorldSpec& world);
 
+// The mean aggregates after the first decision of sampled placements.
+struct PlacementSample {
+  std::vector<double> aggregates;   // [m], m = 0..N: mean aggregates of size m
+  int placements = 0;               // placements drawn
+  double noa_standard_error = 0.0;  // of the mean number of aggregates
+};
+
+// Whether the world's models start from a PlacementSample: `placement`, for a controller that
+// forms aggregates.
+bool starts_from_placement_sample(const WorldSpec& world);
+
 // The aggregates ([m], m = 0..N; indices 0 and 1 zero) the models hold after the first
-// decision, by world.model.initial_state, or none (an empty vector) for all_searching, for
-// explicit placements (the first decision of given positions is not an expectation) and
-// for collision-controller worlds (they form no aggregates). `measured` must hold the
-// initial state when the key says `measured` (InputError otherwise).
-std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured);
+// decision, by world.model.initial_state, or none (an empty vector) for all_searching and
+// for collision-controller worlds (they form no aggregates). `sample` must be given when
+// starts_from_placement_sample(world) (std::logic_error otherwise: a caller's mistake);
+// `measured` must hold the initial state when the key says `measured` (InputError
+// otherwise). placement_second_order, an expectation over random placements, starts given
+// positions from all searching.
+std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured,
+                                     const PlacementSample* sample);
 
 }  // namespace swarmagg

@@ -31,6 +31,9 @@ std::string creation_variant_name(CreationVariant variant) {
 // use 0 and 1).
 constexpr std::uint64_t kMeasuredStream = 2;
 constexpr std::uint64_t kReturnsStream = 3;
+// Mean neighbours within s per agent above which placement_second_order is off by more than
+// a tenth in the triples (docs/models.md, "Where the models start").
+constexpr double kSecondOrderNeighbours = 0.1;
 
 // The returns variant matters only where aggregates lose leavers.
 bool knows_returns(const WorldSpec& world) {
@@ -60,9 +63,9 @@ VariantPrediction bayindir_expected(const WorldSpec& world, const BayindirRates&
 }
 
 std::vector<VariantPrediction> bayindir_predictions(const WorldSpec& world,
-                                                    const MeasuredTerms* measured) {
+                                                    const MeasuredTerms* measured,
+                                                    const std::vector<double>& start) {
   const std::vector<std::int64_t> grid = record_grid(world);
-  const std::vector<double> start = start_aggregates(world, measured);
   std::vector<VariantPrediction> predictions;
   for (const CreationVariant variant : kCreationVariants) {
     predictions.push_back(bayindir_expected(world, bayindir_rates(world, variant),
@@ -151,11 +154,12 @@ std::string stationary_summary(const VariantPrediction& prediction) {
 
 }  // namespace
 
-std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured) {
+std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured,
+                                       const PlacementSample* sample) {
   const ModelFamily model = controller_rules(world).model;
   if (model == ModelFamily::None) return {};
-  if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured);
-  const std::vector<double> start = start_aggregates(world, measured);
+  const std::vector<double> start = start_aggregates(world, measured, sample);
+  if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured, start);
   std::vector<VariantPrediction> predictions;
   for (const LeavingVariant variant : {LeavingVariant::Original, LeavingVariant::Peripheral}) {
     predictions.push_back(soysal_prediction(world, soysal_rates(world, variant),
@@ -186,10 +190,24 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
         "encounter are not modelled");
     return caveats;
   }
-  if (world.model.initial_state == InitialState::Placement && !world.robots.random_placement()) {
+  if (world.model.initial_state == InitialState::PlacementSecondOrder &&
+      !world.robots.random_placement()) {
     caveats.push_back(
-        "model.initial_state: placement expects a random placement; with given positions the "
-        "models start from all searching");
+        "model.initial_state: placement_second_order expects a random placement; with given "
+        "positions the models start from all searching (`placement` starts from their first "
+        "decision)");
+  }
+  if (world.model.initial_state == InitialState::PlacementSecondOrder &&
+      world.robots.random_placement()) {
+    const double neighbours = (world.robots.count - 1) * placement_pair_probability(world);
+    if (neighbours > kSecondOrderNeighbours) {
+      caveats.push_back(
+          "model.initial_state: placement_second_order: each agent starts with " +
+          format("%.2g", neighbours) + " others within s on average; the formula holds below " +
+          format("%.2g", kSecondOrderNeighbours) +
+          " (it leaves out that a group must lie apart from the rest, and groups of four and "
+          "more): `placement` samples the first decision instead");
+    }
   }
   if (rules.leaves) {
     caveats.push_back(

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "models/initial_state.hpp"
 #include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
 
@@ -18,11 +19,13 @@ namespace swarmagg {
 // Worlds whose aggregates lose agents also get the `returns` variant (bayindir `returns` and
 // `returns-stochastic`, soysal `returns`; models/returns_rates.hpp), and every expected-value
 // variant carries its noise floor (models/noise_floor.hpp) as an extra value.
-// Every variant starts where model.initial_state says (models/initial_state.hpp). With
+// Every variant starts where model.initial_state says (models/initial_state.hpp; `sample`
+// must be given when starts_from_placement_sample(world)). With
 // `measured` terms (docs/models.md) the `measured` variants are added too (bayindir `measured` and
 // `measured-stochastic`, soysal `measured`; models/measured_rates.hpp).
 std::vector<VariantPrediction> predict(const WorldSpec& world,
-                                       const MeasuredTerms* measured = nullptr);
+                                       const MeasuredTerms* measured = nullptr,
+                                       const PlacementSample* sample = nullptr);
 
 // Where the world departs from the models' assumptions, one sentence each.
 std::vector<std::string> model_caveats(const WorldSpec& world);

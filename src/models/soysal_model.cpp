@@ -120,9 +120,10 @@ std::string leaving_variant_name(LeavingVariant variant) {
   return variant == LeavingVariant::Original ? "original" : "peripheral";
 }
 
-VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant) {
+VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant,
+                                    const PlacementSample* sample) {
   return soysal_prediction(world, soysal_rates(world, variant), leaving_variant_name(variant),
-                           start_aggregates(world, nullptr));
+                           start_aggregates(world, nullptr, sample));
 }
 
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,

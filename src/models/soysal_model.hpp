@@ -4,6 +4,7 @@
 // the stationary distribution; with their expected NOA, free agents ("searching": the model
 // does not tell GO, APPROACH and LEAVE apart) and largest aggregate.
 #include "config/world_spec.hpp"
+#include "models/initial_state.hpp"
 #include "models/model_series.hpp"
 #include "models/soysal_rates.hpp"
 
@@ -23,8 +24,10 @@ inline constexpr int kPartitionReportPoints = 50;
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
                                     const std::string& variant,
                                     const std::vector<double>& start = {});
-// The world's own rates and start (model.initial_state, not measured).
-VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant);
+// The world's own rates and start (model.initial_state, not measured; `sample` as for
+// start_aggregates).
+VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant,
+                                    const PlacementSample* sample = nullptr);
 
 std::string leaving_variant_name(LeavingVariant variant);
 

@@ -27,6 +27,7 @@
 #include "rates/rates_json.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
+#include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 
 namespace py = pybind11;
@@ -39,8 +40,11 @@ class RunOutput {
   using BoundToPython = void;
 
   RunOutput(World world, MeasuredRun run)
-      : spec_(world.spec), changes_(std::move(world.changes)), run_(std::move(run)) {
-    if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates);
+      : spec_(world.spec),
+        changes_(std::move(world.changes)),
+        run_(std::move(run)),
+        start_(placement_start(*spec_, 0)) {
+    if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates, start());
   }
 
   World world() const { return {spec_, changes_}; }
@@ -62,8 +66,9 @@ class RunOutput {
   // model.csv of `swarmagg run`: with the measured variants when the run measured rates.
   std::string model_csv_text() const {
     const std::optional<MeasuredTerms> terms = run_terms();
-    return call_interruptibly(
-        [&] { return model_csv(predict(*spec_, terms ? &*terms : nullptr), spec_->engine.dt); });
+    return call_interruptibly([&] {
+      return model_csv(predict(*spec_, terms ? &*terms : nullptr, start()), spec_->engine.dt);
+    });
   }
   bool measured() const { return run_.rates.has_value(); }
   std::string rates_csv_text() const { return rates_csv(rows()); }
@@ -75,6 +80,9 @@ class RunOutput {
     return rate_rows_;
   }
 
+  // The models' start (run/placement_sample.hpp).
+  const PlacementSample* start() const { return start_ ? &*start_ : nullptr; }
+
   std::optional<MeasuredTerms> run_terms() const {
     if (!run_.rates) return std::nullopt;
     return measured_terms(rate_rows_);
@@ -85,7 +93,8 @@ class RunOutput {
     write_run_folder(*spec_, run_.result, folder.path());
     try {
       const std::optional<MeasuredTerms> terms = run_terms();
-      write_model_outputs(*spec_, predict(*spec_, terms ? &*terms : nullptr), folder.path());
+      write_model_outputs(*spec_, predict(*spec_, terms ? &*terms : nullptr, start()),
+                          folder.path());
     } catch (const InputError&) {
       return nlohmann::json::array();  // a world without a model: the CLI writes none either
     }
@@ -95,6 +104,7 @@ class RunOutput {
   std::shared_ptr<const WorldSpec> spec_;
   std::vector<std::string> changes_;
   MeasuredRun run_;
+  std::optional<PlacementSample> start_;
   std::vector<RateRow> rate_rows_;
 };
 

@@ -10,10 +10,10 @@
 
 namespace swarmagg {
 
-std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally& tally,
-                                        const std::filesystem::path& folder, RatePlots plots) {
+void write_rate_outputs(const WorldSpec& world, const RateTally& tally,
+                        const std::vector<RateRow>& rows, const std::filesystem::path& folder,
+                        RatePlots plots) {
   std::filesystem::create_directories(folder);
-  const std::vector<RateRow> rows = measured_rate_rows(world, tally);
   write_file_atomic(folder / "rates.csv", rates_csv(rows));
   write_file_atomic(folder / "rates.json", rates_json(world, tally, rows));
   if (plots == RatePlots::ScriptsOnly) {
@@ -23,7 +23,6 @@ std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally&
   } else {
     std::cerr << "note: gnuplot not found: no rate plots (install gnuplot-nox)\n";
   }
-  return rows;
 }
 
 }  // namespace swarmagg

@@ -14,9 +14,10 @@ namespace swarmagg {
 // runs of `reproduce` and `run --no-plots`: `gnuplot rates-<term>.gp` in the folder draws it).
 enum class RatePlots { Draw, ScriptsOnly };
 
-// Returns the rows written. Without gnuplot the plots are skipped with a note on stderr.
-std::vector<RateRow> write_rate_outputs(const WorldSpec& world, const RateTally& tally,
-                                        const std::filesystem::path& folder,
-                                        RatePlots plots = RatePlots::Draw);
+// Writes `rows` (measured_rate_rows of the tally). Without gnuplot the plots are skipped with
+// a note on stderr.
+void write_rate_outputs(const WorldSpec& world, const RateTally& tally,
+                        const std::vector<RateRow>& rows, const std::filesystem::path& folder,
+                        RatePlots plots = RatePlots::Draw);
 
 }  // namespace swarmagg

@@ -163,13 +163,26 @@ void add_return_rows(const WorldSpec& world, const RateTally& tally, std::vector
   }
 }
 
-void add_initial_rows(const WorldSpec& world, const RateTally& tally, std::vector<RateRow>& rows) {
-  const bool expected = world.robots.random_placement();
-  const FirstDecision first = expected ? expected_first_decision(world) : FirstDecision{};
+// The models' start by size: the sample, or the second-order formula's pairs and triples.
+std::vector<double> initial_predictions(const WorldSpec& world, int agents,
+                                        const PlacementSample* sample) {
+  if (sample) return sample->aggregates;
+  std::vector<double> predicted(static_cast<std::size_t>(agents) + 1, 0.0);
+  const FirstDecision first = expected_first_decision(world);
+  if (agents >= 2) predicted[2] = first.pairs;
+  if (agents >= 3) predicted[3] = first.triples;
+  return predicted;
+}
+
+void add_initial_rows(const WorldSpec& world, const RateTally& tally, const PlacementSample* sample,
+                      std::vector<RateRow>& rows) {
+  const bool expected = sample || world.robots.random_placement();
+  const std::vector<double> start =
+      expected ? initial_predictions(world, tally.agents, sample) : std::vector<double>{};
   const std::string model = is_soysal(world) ? "soysal" : "bayindir";
   for (int m = 2; m <= tally.agents; ++m) {
     const auto index = static_cast<std::size_t>(m);
-    const double predicted = m == 2 ? first.pairs : m == 3 ? first.triples : 0.0;
+    const double predicted = index < start.size() ? start[index] : 0.0;
     if (tally.initial_aggregates[index] == 0 && m > 2 && predicted == 0.0) continue;
     RateRow row{.term = "initial",
                 .size = m,
@@ -247,7 +260,8 @@ void add_geometry_rows(const WorldSpec& world, const RateTally& tally, std::vect
 
 }  // namespace
 
-std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally) {
+std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally,
+                                        const PlacementSample* placement_start) {
   std::vector<RateRow> rows{creation_row(world, tally)};
   const ControllerRules rules = controller_rules(world);
   if (rules.model == ModelFamily::Encounters) return rows;
@@ -257,7 +271,7 @@ std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally&
     add_leave_rows(world, tally, rows);
     add_return_rows(world, tally, rows);
   }
-  add_initial_rows(world, tally, rows);
+  add_initial_rows(world, tally, placement_start, rows);
   add_geometry_rows(world, tally, rows);
   return rows;
 }

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "config/world_spec.hpp"
+#include "models/initial_state.hpp"
 #include "models/measured_terms.hpp"
 #include "rates/poisson_interval.hpp"
 #include "rates/rate_tally.hpp"
@@ -42,7 +43,11 @@ struct RateRow {
   std::vector<ModelTerm> models = {};  // one per model variant that predicts the term
 };
 
-std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally);
+// The `initial` rows' model value is the models' start: `placement_start` when the models
+// start from a sample of placements (run/placement_sample.hpp), else the second-order
+// formula (random placements only).
+std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally,
+                                        const PlacementSample* placement_start = nullptr);
 
 // The terms a measured model variant uses: rates with enough events, and the measured
 // initial state (events / exposure, whatever the count: a mean count of 0 is a measurement).

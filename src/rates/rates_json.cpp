@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "config/world_writer.hpp"
 #include "controllers/controller_registry.hpp"
 #include "models/measured_rates.hpp"
 #include "rates/geometry_fits.hpp"
@@ -47,6 +48,7 @@ std::string rates_json(const WorldSpec& world, const RateTally& tally,
   const bool collision = controller_rules(world).model == ModelFamily::Encounters;
   nlohmann::json json = {
       {"world", world.name},
+      {"resolved_world", world_to_yaml(world)},
       {"replicates", tally.replicates},
       {"dt", world.engine.dt},
       {"exposure_steps", tally.steps},

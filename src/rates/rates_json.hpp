@@ -1,7 +1,9 @@
 #pragma once
 // rates.json (docs/models.md): every measured term with its 95% interval and, per model variant,
 // the model's value and the ratio measured / model with its interval; the initial state;
-// which terms are not measured yet and why; what the measured variant took from the model.
+// which terms are not measured yet and why; what the measured variant took from the model;
+// the resolved world they were measured in (`resolved_world`, world_to_yaml), so that rates
+// fed to another world's model can be told (rates/rates_origin.hpp).
 #include <string>
 #include <vector>
 

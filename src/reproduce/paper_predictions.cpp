@@ -6,15 +6,16 @@
 namespace swarmagg {
 
 std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
-                                                 const MeasuredTerms* measured) {
-  std::vector<VariantPrediction> predictions = predict(world, measured);
+                                                 const MeasuredTerms* measured,
+                                                 const PlacementSample* sample) {
+  std::vector<VariantPrediction> predictions = predict(world, measured, sample);
   if (controller_rules(world).model == ModelFamily::Soysal || world.model.kappa == Kappa::Paper) {
     return predictions;
   }
   WorldSpec fitted = world;
   fitted.model.kappa = Kappa::Paper;
   fitted.model.stochastic_replicates = 0;  // only its expected collision variant is kept
-  for (VariantPrediction& prediction : predict(fitted, measured)) {
+  for (VariantPrediction& prediction : predict(fitted, measured, sample)) {
     if (prediction.model == "bayindir" && prediction.variant == "collision") {
       prediction.variant = kPaperFitVariant;
       prediction.chosen = false;

@@ -7,6 +7,7 @@
 
 #include "analysis/variant_error.hpp"
 #include "config/world_spec.hpp"
+#include "models/initial_state.hpp"
 #include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
 
@@ -14,8 +15,10 @@ namespace swarmagg {
 
 inline constexpr const char* kPaperFitVariant = "collision-paper";
 
-// With `measured` terms, the measured variants too (models/predictions.hpp).
+// With `measured` terms, the measured variants too; `sample` as predict() needs it
+// (models/predictions.hpp).
 std::vector<VariantPrediction> paper_predictions(const WorldSpec& world,
-                                                 const MeasuredTerms* measured = nullptr);
+                                                 const MeasuredTerms* measured,
+                                                 const PlacementSample* sample);
 
 }  // namespace swarmagg

@@ -9,6 +9,7 @@
 #include "reproduce/paper_predictions.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
+#include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg {
@@ -52,9 +53,12 @@ bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
   // models follow the run, and world.resolved.yaml, written last by write_run_folder, marks
   // the folder complete with the rates and model outputs beside it.
   const MeasuredRun run = run_world_measuring(spec, options, true);
-  const MeasuredTerms terms =
-      measured_terms(write_rate_outputs(spec, *run.rates, folder, rate_plots));
-  write_model_outputs(spec, paper_predictions(spec, &terms), folder);
+  const std::optional<PlacementSample> start = placement_start(spec, options.threads);
+  const PlacementSample* sample = start ? &*start : nullptr;
+  const std::vector<RateRow> rows = measured_rate_rows(spec, *run.rates, sample);
+  write_rate_outputs(spec, *run.rates, rows, folder, rate_plots);
+  const MeasuredTerms terms = measured_terms(rows);
+  write_model_outputs(spec, paper_predictions(spec, &terms, sample), folder);
   write_run_folder(spec, run.result, folder);
   write_model_errors(folder);
   return false;

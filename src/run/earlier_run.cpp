@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <system_error>
+
+#include "config/world_difference.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg {
 namespace {
@@ -30,6 +34,27 @@ void remove_earlier_output(const std::filesystem::path& path, std::vector<std::s
   if (error) failures.push_back(path.string() + ": " + error.message());
 }
 
+void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::string>& failures) {
+  for (const std::string& term : rate_terms(out / "rates.csv")) {
+    for (const char* extension : {".png", ".gp", ".csv"})
+      remove_earlier_output(out / ("rates-" + term + extension), failures);
+  }
+}
+
+void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
+                               const std::string& command, bool force) {
+  std::ifstream in(out / "world.resolved.yaml");
+  if (!in || force) return;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::string> differences = system_differences(text, spec);
+  if (differences.empty()) return;
+  throw InputError(out.string() + "/ holds a run of another world (" +
+                   differences_text(differences) + "): `" + command +
+                   "` would write this world's outputs beside that run, whose plots would draw "
+                   "them as its own. Pass "
+                   "--out DIR, or --force to write there anyway");
+}
+
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
   std::vector<std::string> failures;
   const auto remove = [&](const std::filesystem::path& path) {
@@ -38,10 +63,7 @@ std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
   std::error_code missing;
   if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing)) return failures;
   remove(out / "world.resolved.yaml");
-  for (const std::string& term : rate_terms(out / "rates.csv")) {
-    for (const char* extension : {".png", ".gp", ".csv"})
-      remove(out / ("rates-" + term + extension));
-  }
+  clear_earlier_rates(out, failures);
   for (const char* name :
        {"timeseries.csv", "summary.json", "partitions.csv", "model.csv", "rates.csv", "rates.json",
         "noa.png", "states.png", "sizes.png", "partitions.png", "model-timeseries", "plots"}) {

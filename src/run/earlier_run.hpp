@@ -13,11 +13,23 @@
 #include <string>
 #include <vector>
 
+#include "config/world_spec.hpp"
+
 namespace swarmagg {
 
 // Returns what could not be removed ("path: reason"), for the caller to warn about: the new
 // run's outputs are written anyway.
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out);
+
+// Removes the rates-<term> files (.png, .gp, .csv) of the terms the rates.csv in `out` lists,
+// before a `rates` writes its own: a term it does not measure would keep an earlier plot.
+void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::string>& failures);
+
+// `command` (model, rates) writes beside a run: refused (InputError, naming the keys that
+// differ) when `out` holds a run of another system (config/world_difference.hpp) unless
+// `force`: the run's plots would draw the new outputs as if they were its own.
+void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
+                               const std::string& command, bool force);
 
 // Removes `path` (a folder whole); what could not be removed goes to `failures` as
 // "path: reason". The removal every command's --force shares.

@@ -36,10 +36,14 @@ std::vector<AggregateShape> final_shapes(const Replicate& replicate) {
 
 }  // namespace
 
+int resolve_threads(const WorldSpec& spec, int requested) {
+  const int threads = requested > 0 ? requested : spec.run.threads;
+  if (threads > 0) return threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
-  int threads = requested > 0 ? requested : spec.run.threads;
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(threads, 1);
+  const int threads = resolve_threads(spec, requested);
   const int at_once = std::clamp(threads, 1, spec.run.replicates);
   return {at_once, std::max(1, threads / at_once)};
 }

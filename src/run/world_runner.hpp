@@ -41,6 +41,9 @@ struct RunOptions {
   ObserverFactory observers;
 };
 
+// `requested`, else the world's run.threads, else the machine's cores.
+int resolve_threads(const WorldSpec& spec, int requested);
+
 // The threads a run uses: `requested`, else the world's run.threads, else the machine's
 // cores. Replicates run in parallel first; threads beyond one per replicate go inside the
 // replicates' steps (a single large world then uses them all). Results do not depend on it.

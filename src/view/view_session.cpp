@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
+#include "run/placement_sample.hpp"
 #include "run/state_hash.hpp"
 
 namespace swarmagg {
@@ -25,7 +26,7 @@ std::vector<NoaPoint> model_curve(const WorldSpec& spec) {
   expected.model.stochastic_replicates = 0;
   std::vector<NoaPoint> curve;
   try {
-    for (const VariantPrediction& p : predict(expected)) {
+    for (const VariantPrediction& p : predict_world(expected, nullptr, 0)) {
       if (!p.chosen || p.stochastic) continue;
       for (const ModelRow& row : p.series) {
         if (row.noa) curve.push_back({static_cast<double>(row.step) * spec.engine.dt, *row.noa});

@@ -114,4 +114,69 @@ TEST_F(OutputPaths, AnEarlierRunIsReplacedOnlyWithForce) {
                         "    \"run.replicates=1\"\n  ]"));
 }
 
+// model and rates write beside a run by default; beside a run of another system their
+// outputs would pass for that run's (its noa.png drawing a 10-agent model over 60 agents).
+TEST_F(OutputPaths, ModelAndRatesRefuseARunOfAnotherWorldUnlessForced) {
+  const fs::path out = dir_ / "run";
+  ASSERT_EQ(swarmagg("run worlds/examples/demo.yaml --replicates 1 --no-plots --quiet "
+                     "--set run.duration=5 --out " +
+                     out.string())
+                .exit_code,
+            0);
+  const std::string earlier = swarmagg::testing::read_all(out / "model.csv");
+  for (const std::string command : {"model", "rates"}) {
+    const Outcome refused = swarmagg(command + " worlds/examples/demo.yaml --set robots.count=10 " +
+                                     "--set run.duration=5 --quiet --out " + out.string());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr("another world (robots.count: 60 there, 10 here)"));
+    EXPECT_THAT(refused.output, HasSubstr("--force"));
+  }
+  EXPECT_EQ(swarmagg::testing::read_all(out / "model.csv"), earlier);
+  EXPECT_FALSE(fs::exists(out / "rates.csv"));
+  // The same system run longer or with other outputs is the same world.
+  const Outcome longer = swarmagg(
+      "model worlds/examples/demo.yaml --set run.duration=9 --quiet "
+      "--set run.replicates=3 --out " +
+      out.string());
+  EXPECT_EQ(longer.exit_code, 0) << longer.output;
+  const Outcome forced = swarmagg(
+      "model worlds/examples/demo.yaml --set robots.count=10 --quiet "
+      "--force --out " +
+      out.string());
+  EXPECT_EQ(forced.exit_code, 0) << forced.output;
+}
+
+TEST_F(OutputPaths, AModelLeavesNoVariantOfAnEarlierModelBehind) {
+  const fs::path rates = dir_ / "rates";
+  const fs::path out = dir_ / "model";
+  const std::string world = "worlds/examples/demo.yaml --set run.duration=20 --quiet ";
+  ASSERT_EQ(swarmagg("rates " + world + "--replicates 2 --out " + rates.string()).exit_code, 0);
+  ASSERT_EQ(swarmagg("model " + world + "--rates " + (rates / "rates.csv").string() + " --out " +
+                     out.string())
+                .exit_code,
+            0);
+  ASSERT_TRUE(fs::exists(out / "model-timeseries" / "bayindir-measured.csv"));
+  ASSERT_EQ(swarmagg("model " + world + "--out " + out.string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "model-timeseries" / "bayindir-measured.csv"));
+  EXPECT_TRUE(fs::exists(out / "model-timeseries" / "bayindir-original.csv"));
+}
+
+TEST_F(OutputPaths, RatesOfAnotherWorldAreFedToAModelWithAWarning) {
+  const fs::path rates = dir_ / "rates";
+  ASSERT_EQ(swarmagg("rates worlds/examples/demo.yaml --set run.duration=20 --quiet --set "
+                     "robots.count=30 --replicates 2 --out " +
+                     rates.string())
+                .exit_code,
+            0);
+  const std::string feed = " --rates " + (rates / "rates.csv").string() + " --quiet --out ";
+  const Outcome other = swarmagg("model worlds/examples/demo.yaml" + feed + (dir_ / "a").string());
+  EXPECT_EQ(other.exit_code, 0) << other.output;
+  EXPECT_THAT(other.output,
+              HasSubstr("was measured in another world (robots.count: 30 there, 60 here)"));
+  const Outcome same = swarmagg("model worlds/examples/demo.yaml --set robots.count=30" + feed +
+                                (dir_ / "b").string());
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  EXPECT_THAT(same.output, Not(HasSubstr("another world")));
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "model_test_worlds.hpp"
@@ -44,18 +45,39 @@ TEST(InitialState, JoiningTurnsThreeAgentComponentsIntoTriples) {
 
 TEST(InitialState, TheKeyChoosesTheStart) {
   WorldSpec world = testing::bayindir_world(100, 0.0, false, false);
-  EXPECT_GT(start_aggregates(world, nullptr).at(2), 0.0);
+  EXPECT_GT(start_aggregates(world, nullptr, nullptr).at(2), 0.0);
   world.model.initial_state = InitialState::AllSearching;
-  EXPECT_TRUE(start_aggregates(world, nullptr).empty());
+  EXPECT_TRUE(start_aggregates(world, nullptr, nullptr).empty());
   world.model.initial_state = InitialState::Measured;
-  EXPECT_THROW(start_aggregates(world, nullptr), InputError);
+  EXPECT_THROW(start_aggregates(world, nullptr, nullptr), InputError);
   MeasuredTerms measured;
   measured.initial = {{2, 3.5}};
-  EXPECT_DOUBLE_EQ(start_aggregates(world, &measured).at(2), 3.5);
+  EXPECT_DOUBLE_EQ(start_aggregates(world, &measured, nullptr).at(2), 3.5);
   world.model.initial_state = InitialState::Placement;
+  PlacementSample sample;
+  sample.aggregates = std::vector<double>(101, 0.0);
+  sample.aggregates[2] = 4.25;
+  EXPECT_DOUBLE_EQ(start_aggregates(world, nullptr, &sample).at(2), 4.25);
+  EXPECT_THROW(start_aggregates(world, nullptr, nullptr), std::logic_error);
+  world.model.initial_state = InitialState::PlacementSecondOrder;
   world.robots.placement = {{1, 1, 0}, {3, 1, 0}};
   world.robots.count = 2;
-  EXPECT_TRUE(start_aggregates(world, nullptr).empty());  // given positions: no expectation
+  EXPECT_TRUE(
+      start_aggregates(world, nullptr, nullptr).empty());  // given positions: no expectation
+}
+
+TEST(InitialState, OnlyWorldsWithAnAggregationModelStartFromASample) {
+  WorldSpec world = testing::bayindir_world(100, 0.0, false, false);
+  world.model.initial_state = InitialState::Placement;
+  EXPECT_TRUE(starts_from_placement_sample(world));
+  world.controller.type = "soysal";
+  EXPECT_TRUE(starts_from_placement_sample(world));
+  world.controller.type = "collision";
+  EXPECT_FALSE(starts_from_placement_sample(world));
+  EXPECT_TRUE(start_aggregates(world, nullptr, nullptr).empty());
+  world.controller.type = "bayindir";
+  world.model.initial_state = InitialState::AllSearching;
+  EXPECT_FALSE(starts_from_placement_sample(world));
 }
 
 }  // namespace

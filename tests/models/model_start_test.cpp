@@ -15,7 +15,7 @@ namespace {
 TEST(ModelStart, BayindirHoldsTheFirstDecisionsAggregatesAtStepOne) {
   const WorldSpec world = testing::bayindir_world(150, 0.0, true, false);
   const BayindirRates rates = bayindir_rates(world, CreationVariant::Collision);
-  const std::vector<double> start = start_aggregates(world, nullptr);
+  const std::vector<double> start = start_aggregates(world, nullptr, nullptr);
   const std::vector<ModelRow> rows = bayindir_expected_series(rates, {0, 1, 2}, start);
   EXPECT_EQ(*rows[0].noa, 0.0);
   EXPECT_NEAR(*rows[1].noa, start[2] + start[3], 1e-12);
@@ -46,7 +46,7 @@ TEST(ModelStart, StochasticFirstDecisionsAverageToTheExpectation) {
 
 TEST(ModelStart, SoysalStartsFromPoissonCountsOfThePlacementPairs) {
   const WorldSpec world = testing::soysal_world(5, 150.0);
-  const std::vector<double> start = start_aggregates(world, nullptr);
+  const std::vector<double> start = start_aggregates(world, nullptr, nullptr);
   ASSERT_GT(start[2], 0.0);
   const VariantPrediction prediction = soysal_prediction(
       world, soysal_rates(world, LeavingVariant::Peripheral), "peripheral", start);

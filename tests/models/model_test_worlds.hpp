@@ -1,6 +1,7 @@
 #pragma once
 // Worlds for the model tests, set like the paper's experiments (docs/reproducing.md): s = 4, r = 1,
-// v = 1, dt = 0.1.
+// v = 1, dt = 0.1. The models start from the second-order formula: the default start, a
+// sample of placements, needs the simulation (tests/run/placement_sample_test.cpp).
 #include "config/world_spec.hpp"
 
 namespace swarmagg::testing {
@@ -14,6 +15,7 @@ inline WorldSpec bayindir_world(int agents, double p_leave, bool join, bool leav
   world.controller.p_leave = p_leave;
   world.controller.join = join;
   world.controller.leave = leave;
+  world.model.initial_state = InitialState::PlacementSecondOrder;
   return world;
 }
 
@@ -25,6 +27,7 @@ inline WorldSpec soysal_world(int agents, double side, double p0 = 2e-5,
   world.controller.type = "soysal";
   world.controller.p0 = p0;
   world.controller.leave_law = law;
+  world.model.initial_state = InitialState::PlacementSecondOrder;
   return world;
 }
 

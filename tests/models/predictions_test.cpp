@@ -96,10 +96,22 @@ TEST(Predictions, CollisionWorldsPredictEncounters) {
 
 TEST(Predictions, CaveatsNameDeparturesFromTheModelAssumptions) {
   WorldSpec world = testing::bayindir_world(120, 5e-4, true, false);
+  world.model.initial_state = InitialState::Placement;
   EXPECT_TRUE(model_caveats(world).empty());
   world.controller.isolated_wait = IsolatedWait::Stay;
   world.arena.topology = Topology::Walls;
   EXPECT_EQ(model_caveats(world).size(), 2u);
+}
+
+TEST(Predictions, TheSecondOrderStartIsFlaggedWhereAgentsStartCrowded) {
+  // 120 agents on 180 x 180: each starts with 119 pi (4^2 - 2^2) / 180^2 = 0.14 others within s.
+  WorldSpec world = testing::bayindir_world(120, 5e-4, true, false);
+  const std::vector<std::string> caveats = model_caveats(world);
+  ASSERT_EQ(caveats.size(), 1u);
+  EXPECT_NE(caveats[0].find("placement_second_order"), std::string::npos);
+  EXPECT_NE(caveats[0].find(" 0.14 others"), std::string::npos);
+  world.robots.count = 60;  // 0.068 others
+  EXPECT_TRUE(model_caveats(world).empty());
 }
 
 }  // namespace

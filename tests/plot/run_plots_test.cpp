@@ -16,6 +16,7 @@
 #include "plot/sweep_plots.hpp"
 #include "png_pixels.hpp"
 #include "run/model_outputs.hpp"
+#include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 #include "run/world_runner.hpp"
 
@@ -29,7 +30,7 @@ std::filesystem::path run_into(const std::string& world, const std::vector<std::
   const WorldSpec spec =
       load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/" + world, overrides);
   write_run_folder(spec, run_world(spec, RunOptions{}), out, overrides);
-  write_model_outputs(spec, predict(spec), out);
+  write_model_outputs(spec, predict_world(spec, nullptr, 1), out);
   return out;
 }
 
@@ -46,18 +47,26 @@ class RunPlotsTest : public ::testing::Test {
     root_ = std::filesystem::temp_directory_path() /
             ("swarmagg_run_plots_" + std::to_string(::getpid()));
     std::filesystem::remove_all(root_);
-    bayindir_ = run_into(
-        "examples/demo.yaml",
-        {"robots.count=30", "run.duration=80", "run.replicates=3", "model.stochastic_replicates=2"},
-        root_ / "bayindir");
-    soysal_ = run_into("paper/soysal-5-constant.yaml",
-                       {"run.duration=2000", "controller.p0=0.002", "run.replicates=2"},
-                       root_ / "soysal");
+    // A throw here would leave every test of the suite "skipped", which CTest counts as not
+    // failed: each test fails on it instead.
+    try {
+      bayindir_ = run_into("examples/demo.yaml",
+                           {"robots.count=30", "run.duration=80", "run.replicates=3",
+                            "model.stochastic_replicates=2"},
+                           root_ / "bayindir");
+      soysal_ = run_into("paper/soysal-5-constant.yaml",
+                         {"run.duration=2000", "controller.p0=0.002", "run.replicates=2"},
+                         root_ / "soysal");
+    } catch (const std::exception& e) {
+      setup_error_ = e.what();
+    }
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(root_); }
   void SetUp() override {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+    ASSERT_TRUE(setup_error_.empty()) << "the runs failed: " << setup_error_;
   }
+  static inline std::string setup_error_;
   static inline std::filesystem::path root_, bayindir_, soysal_;
 };
 

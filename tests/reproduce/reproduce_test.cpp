@@ -93,7 +93,13 @@ class ReproduceTest : public ::testing::Test {
            ("swarmagg_reproduce_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(out_);
     std::ostringstream summary;
-    first_ = new ReproduceOutcome(reproduce(reduced_options(out_), summary));
+    // A throw here would leave every test of the suite "skipped", which CTest counts as not
+    // failed: each test fails on it instead.
+    try {
+      first_ = new ReproduceOutcome(reproduce(reduced_options(out_), summary));
+    } catch (const std::exception& e) {
+      setup_error_ = e.what();
+    }
     summary_ = summary.str();
   }
   static void TearDownTestSuite() {
@@ -102,7 +108,9 @@ class ReproduceTest : public ::testing::Test {
   }
   void SetUp() override {
     if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+    ASSERT_TRUE(setup_error_.empty()) << "reproduce failed: " << setup_error_;
   }
+  static inline std::string setup_error_;
   static inline std::filesystem::path out_;
   static inline ReproduceOutcome* first_ = nullptr;
   static inline std::string summary_;

@@ -1,0 +1,77 @@
+#include "config/world_difference.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <utility>
+
+#include "config/world_writer.hpp"
+
+namespace swarmagg {
+namespace {
+
+constexpr const char* kSystemSections[] = {"arena", "robots", "controller", "engine"};
+constexpr std::size_t kDifferencesNamed = 3;
+
+using FlatKeys = std::vector<std::pair<std::string, std::string>>;
+
+// Every scalar (and every sequence, as its flow text) under `node`, by dotted key.
+void flatten(const YAML::Node& node, const std::string& key, FlatKeys& keys) {
+  if (node.IsMap()) {
+    for (const auto& entry : node) flatten(entry.second, key + "." + entry.first.Scalar(), keys);
+    return;
+  }
+  YAML::Emitter text;
+  text.SetSeqFormat(YAML::Flow);
+  text.SetMapFormat(YAML::Flow);
+  text << node;
+  keys.emplace_back(key, text.c_str());
+}
+
+FlatKeys system_keys(const YAML::Node& world) {
+  FlatKeys keys;
+  for (const char* section : kSystemSections) {
+    if (world[section]) flatten(world[section], section, keys);
+  }
+  return keys;
+}
+
+const std::string* value_of(const FlatKeys& keys, const std::string& key) {
+  for (const auto& [name, value] : keys) {
+    if (name == key) return &value;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here) {
+  FlatKeys theirs;
+  try {
+    theirs = system_keys(YAML::Load(there));
+  } catch (const YAML::Exception&) {
+    return {"the world text: unreadable"};
+  }
+  const FlatKeys ours = system_keys(YAML::Load(world_to_yaml(here)));
+  std::vector<std::string> differences;
+  for (const auto& [key, value] : ours) {
+    const std::string* other = value_of(theirs, key);
+    const std::string there_text = other ? *other : "none";
+    if (there_text != value)
+      differences.push_back(key + ": " + there_text + " there, " + value + " here");
+  }
+  for (const auto& [key, value] : theirs) {
+    if (!value_of(ours, key)) differences.push_back(key + ": " + value + " there, none here");
+  }
+  return differences;
+}
+
+std::string differences_text(const std::vector<std::string>& differences) {
+  std::string text;
+  for (std::size_t i = 0; i < differences.size() && i < kDifferencesNamed; ++i)
+    text += (i ? "; " : "") + differences[i];
+  if (differences.size() > kDifferencesNamed)
+    text += "; and " + std::to_string(differences.size() - kDifferencesNamed) + " more";
+  return text;
+}
+
+}  // namespace swarmagg

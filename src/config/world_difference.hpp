@@ -1,0 +1,22 @@
+#pragma once
+// Whether two worlds are the same system: the same arena, robots, controller and engine, the
+// keys a run's results depend on apart from its length, replicates, seed and outputs. Used
+// where a command meets outputs of another world (a run folder it writes into, rates it
+// reads) and must not mix the two silently.
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+
+namespace swarmagg {
+
+// The keys whose values differ, as "key: <there> there, <here> here", in the order of the
+// resolved world text; empty when the two are the same system. `there` is a resolved world
+// text (world.resolved.yaml, or world_to_yaml); one that cannot be read differs as "the
+// world text: unreadable".
+std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here);
+
+// The first few differences joined for a message ("robots.count: 60 there, 10 here; ...").
+std::string differences_text(const std::vector<std::string>& differences);
+
+}  // namespace swarmagg

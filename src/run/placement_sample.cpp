@@ -1,0 +1,90 @@
+#include "run/placement_sample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include "core/rng.hpp"
+#include "models/predictions.hpp"
+#include "run/parallel_for.hpp"
+#include "run/replicate.hpp"
+#include "run/world_runner.hpp"
+
+namespace swarmagg {
+namespace {
+
+constexpr int kSampledAgents = 1 << 18;
+constexpr int kFewestPlacements = 8;
+constexpr int kMostPlacements = 4096;
+// Keeps the placements apart from every run's replicates (CounterRng::for_replicate of the
+// world's seed).
+constexpr std::uint64_t kPlacementStream = 0x9A7C3E1D5B2F4861ull;
+
+// The sizes of the aggregates after the first decision of placement `index`.
+std::vector<std::int32_t> first_decision(const WorldSpec& world, int index) {
+  Replicate replicate(world, index);
+  replicate.step();
+  const std::span<const std::int32_t> sizes = replicate.aggregates().sizes();
+  return {sizes.begin(), sizes.end()};
+}
+
+}  // namespace
+
+int placements_to_sample(int agents) {
+  return std::clamp(kSampledAgents / std::max(agents, 1), kFewestPlacements, kMostPlacements);
+}
+
+PlacementSample sample_placements(const WorldSpec& world, int threads) {
+  WorldSpec placing = world;
+  placing.run.seed = mix64(world.run.seed ^ kPlacementStream);
+  const int count = world.robots.random_placement() ? placements_to_sample(world.robots.count) : 1;
+  std::vector<std::vector<std::int32_t>> sizes(static_cast<std::size_t>(count));
+  parallel_for(sizes.size(), threads,
+               [&](std::size_t i) { sizes[i] = first_decision(placing, static_cast<int>(i)); });
+  // Sums of whole counts, taken in placement order: the same for any thread count.
+  std::vector<std::uint64_t> totals(static_cast<std::size_t>(world.robots.count) + 1, 0);
+  double noa_sum = 0.0, noa_square_sum = 0.0;
+  for (const std::vector<std::int32_t>& placement : sizes) {
+    for (const std::int32_t size : placement) ++totals[static_cast<std::size_t>(size)];
+    const auto noa = static_cast<double>(placement.size());
+    noa_sum += noa;
+    noa_square_sum += noa * noa;
+  }
+  PlacementSample sample;
+  sample.placements = count;
+  sample.aggregates.resize(totals.size(), 0.0);
+  for (std::size_t m = 2; m < totals.size(); ++m)
+    sample.aggregates[m] = static_cast<double>(totals[m]) / count;
+  if (count > 1) {
+    const double mean = noa_sum / count;
+    const double variance = std::max(0.0, (noa_square_sum - count * mean * mean) / (count - 1));
+    sample.noa_standard_error = std::sqrt(variance / count);
+  }
+  return sample;
+}
+
+std::optional<PlacementSample> placement_start(const WorldSpec& world, int threads) {
+  if (!starts_from_placement_sample(world)) return std::nullopt;
+  return sample_placements(world, resolve_threads(world, threads));
+}
+
+std::string placement_start_note(const PlacementSample& sample) {
+  double noa = 0.0;
+  for (const double aggregates : sample.aggregates) noa += aggregates;
+  char numbers[96];
+  std::snprintf(numbers, sizeof numbers, "%.4g +- %.2g", noa, sample.noa_standard_error);
+  const std::string placements = sample.placements == 1
+                                     ? "of the given positions"
+                                     : "of " + std::to_string(sample.placements) + " placements";
+  return "the models start from the first decision " + placements + ": " + numbers +
+         " aggregates (model.initial_state: placement)";
+}
+
+std::vector<VariantPrediction> predict_world(const WorldSpec& world, const MeasuredTerms* measured,
+                                             int threads) {
+  const std::optional<PlacementSample> sample = placement_start(world, threads);
+  return predict(world, measured, sample ? &*sample : nullptr);
+}
+
+}  // namespace swarmagg

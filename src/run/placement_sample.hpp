@@ -1,0 +1,37 @@
+#pragma once
+// Where the models start by default (model.initial_state: placement; models/initial_state.hpp):
+// the mean aggregates after the first decision of placements drawn as runs draw theirs,
+// with the world's own engine and controller. The placements come from a stream of the
+// world's seed that no replicate of a run uses, so the models' start is a prediction made
+// apart from the run it is compared with. Given positions are a single placement (their
+// first decision is certain).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/world_spec.hpp"
+#include "models/initial_state.hpp"
+#include "models/measured_terms.hpp"
+#include "models/model_series.hpp"
+
+namespace swarmagg {
+
+// Placements drawn for a random placement of `agents` agents: about 2^18 agents in all, so that
+// the start's NOA carries a standard error of about 1 % in the paper's worlds, from 8 (large
+// swarms, where one placement already averages over many groups) to 4096 (small ones).
+int placements_to_sample(int agents);
+
+// The sample (on `threads` threads; the result does not depend on them).
+PlacementSample sample_placements(const WorldSpec& world, int threads);
+
+// The sample the world's models need (starts_from_placement_sample), or none.
+std::optional<PlacementSample> placement_start(const WorldSpec& world, int threads);
+
+// One sentence for the user: where the models start, from how many placements.
+std::string placement_start_note(const PlacementSample& sample);
+
+// predict() (models/predictions.hpp) from the world's own start.
+std::vector<VariantPrediction> predict_world(const WorldSpec& world, const MeasuredTerms* measured,
+                                             int threads);
+
+}  // namespace swarmagg
