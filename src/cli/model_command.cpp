@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
 #include "config/world_difference.hpp"
+#include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
 #include "output/output_check.hpp"
@@ -39,6 +40,11 @@ int model_command(const ModelCommandOptions& options) {
   std::optional<MeasuredTerms> measured;
   if (!options.rates.empty()) {
     measured = measured_terms(read_rates_csv(options.rates));
+    try {
+      check_measured_terms(spec, *measured);
+    } catch (const InputError& e) {
+      throw InputError(options.rates + ": " + e.what());
+    }
     const std::vector<std::string> differences = rates_world_differences(options.rates, spec);
     if (!differences.empty()) {
       std::cerr << "warning: " << options.rates << " was measured in another world ("

@@ -1,6 +1,9 @@
 #include "models/measured_rates.hpp"
 
+#include <cstdio>
+
 #include "controllers/controller_registry.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg {
 
@@ -104,6 +107,32 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
         "; joins are the new joins there; the model's leave law elsewhere)";
   }
   return note;
+}
+
+void check_measured_terms(const WorldSpec& world, const MeasuredTerms& terms) {
+  const double dt = world.engine.dt;
+  const auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return std::string(text);
+  };
+  const auto refuse = [&](const std::string& term, double rate, const std::string& limit) {
+    throw InputError("measured " + term + " rate " + number(rate) + " per tu is " + limit +
+                     " in a step of dt = " + number(dt) +
+                     ": not a rate a run of this world can measure");
+  };
+  if (terms.creation && *terms.creation * dt > 1.0)
+    refuse("creation", *terms.creation, "more than one pair-up per searcher pair");
+  for (const auto* growth : {&terms.growth, &terms.new_growth}) {
+    for (const auto& [size, rate] : *growth) {
+      if (rate * dt > 1.0)
+        refuse("growth " + std::to_string(size), rate, "more than one join per searcher");
+    }
+  }
+  for (const auto& [size, rate] : terms.attempt) {
+    if (rate * dt > size)
+      refuse("attempt " + std::to_string(size), rate, "more LEAVE attempts than members");
+  }
 }
 
 }  // namespace swarmagg

@@ -27,6 +27,12 @@ SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& t
 // the world leaves, `terms:leave_sizes_measured` (counts of sizes).
 std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const MeasuredTerms& terms);
 
+// Throws InputError for terms no run of `world` can measure: more than one pair-up per
+// searcher pair, or join per searcher and aggregate, in a step of dt; more LEAVE attempts per
+// step than an aggregate has members. Finite but impossible rates (hand-edited, or measured in a
+// world with another dt) would drive the expected model below zero agents, to NaN.
+void check_measured_terms(const WorldSpec& world, const MeasuredTerms& terms);
+
 // The same in words, one sentence, for the command line and rates.json.
 std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& terms);
 

@@ -1,9 +1,11 @@
 #include "models/predictions.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "controllers/controller_registry.hpp"
+#include "core/errors.hpp"
 #include "models/bayindir_expected.hpp"
 #include "models/bayindir_stochastic.hpp"
 #include "models/initial_state.hpp"
@@ -152,12 +154,30 @@ std::string stationary_summary(const VariantPrediction& prediction) {
          format(" (p = %.3g)", most_likely->value);
 }
 
-}  // namespace
+// The expected models step mean counts by whole steps: rates of several events per agent and
+// step overshoot, counts fall below zero and then to NaN. Said instead of written.
+void check_counts(const WorldSpec& world, const std::vector<VariantPrediction>& predictions) {
+  const double tolerance = 1e-9 * world.robots.count;
+  for (const VariantPrediction& prediction : predictions) {
+    for (const ModelRow& row : prediction.series) {
+      const bool broken = (row.noa && !(std::isfinite(*row.noa) && *row.noa >= -tolerance)) ||
+                          (row.searching && !(*row.searching >= -tolerance));
+      if (!broken) continue;
+      throw InputError("model: the " + prediction.model + " `" + prediction.variant +
+                       "` variant left the range of the agents at step " +
+                       std::to_string(row.step) + " (NOA " + format("%.4g", row.noa.value_or(0.0)) +
+                       ", searching " + format("%.4g", row.searching.value_or(0.0)) +
+                       "): its rates give more events per step than there are agents");
+    }
+  }
+}
 
-std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured,
-                                       const PlacementSample* sample) {
+std::vector<VariantPrediction> predict_variants(const WorldSpec& world,
+                                                const MeasuredTerms* measured,
+                                                const PlacementSample* sample) {
   const ModelFamily model = controller_rules(world).model;
   if (model == ModelFamily::None) return {};
+  if (measured) check_measured_terms(world, *measured);
   const std::vector<double> start = start_aggregates(world, measured, sample);
   if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured, start);
   std::vector<VariantPrediction> predictions;
@@ -175,6 +195,15 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
     const std::vector<TidyValue> notes = measured_term_notes(world, *measured);
     predictions.back().extra.insert(predictions.back().extra.end(), notes.begin(), notes.end());
   }
+  return predictions;
+}
+
+}  // namespace
+
+std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured,
+                                       const PlacementSample* sample) {
+  std::vector<VariantPrediction> predictions = predict_variants(world, measured, sample);
+  check_counts(world, predictions);
   return predictions;
 }
 

@@ -86,9 +86,23 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
     if (!cells.at(1).empty()) row.size = static_cast<int>(whole_number(1, 1, kMaxSize));
     row.estimate.events = static_cast<std::uint64_t>(whole_number(2, 0, kMaxEvents));
     row.estimate.exposure = number(3, false);
+    // A return fraction counts returns among attempts: above 1 the model would lose a
+    // negative number of agents per attempt.
+    const bool fraction = row.term == "return";
+    if (fraction && static_cast<double>(row.estimate.events) > row.estimate.exposure) {
+      throw InputError(cell(2) +
+                       ": a return row's events (returns) cannot exceed its exposure "
+                       "(LEAVE attempts), got " +
+                       cells.at(2) + " of " + cells.at(3));
+    }
     for (const auto& [column, field] :
          {std::pair{4, &row.estimate.rate}, {5, &row.estimate.low}, {6, &row.estimate.high}}) {
       const double value = number(static_cast<std::size_t>(column), true);
+      if (fraction && value > 1.0) {
+        throw InputError(cell(static_cast<std::size_t>(column)) +
+                         ": expected a fraction from 0 to 1 (returns per LEAVE attempt), got '" +
+                         cells.at(static_cast<std::size_t>(column)) + "'");
+      }
       if (!std::isnan(value)) *field = value;
     }
     if (!rows.empty() && rows.back().term == row.term && rows.back().size == row.size) {

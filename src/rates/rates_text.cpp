@@ -1,5 +1,7 @@
 #include "rates/rates_text.hpp"
 
+#include <cstdint>
+
 #include "output/format_text.hpp"
 
 namespace swarmagg {
@@ -9,12 +11,20 @@ std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
   for (const RateRow& row : rows) {
     const RateEstimate& e = row.estimate;
     std::string line = row.term + (row.size ? " " + std::to_string(*row.size) : "") + ": ";
+    // A fraction (returns per LEAVE attempt) needs attempts, not events: "0 of 19" is a
+    // measurement, where "from 0 events" read as one too few to report.
+    const bool fraction = row.term == "return";
+    const auto trials = static_cast<std::uint64_t>(e.exposure);
     if (!e.rate) {
-      line += "too few events (" + std::to_string(e.events) + ")";
+      line += fraction ? "too few attempts (" + std::to_string(trials) + ")"
+                       : "too few events (" + std::to_string(e.events) + ")";
     } else {
       const bool geometry = row.term == "radius" || row.term == "rim";
-      line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high) + " from " +
-              std::to_string(e.events) + (geometry ? " observations" : " events");
+      line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high);
+      line += fraction
+                  ? ": " + std::to_string(e.events) + " of " + std::to_string(trials) +
+                        " attempts returned"
+                  : " from " + std::to_string(e.events) + (geometry ? " observations" : " events");
       for (const ModelTerm& m : row.models) {
         if (m.rate <= 0.0) continue;
         line +=

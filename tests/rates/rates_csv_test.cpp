@@ -65,6 +65,10 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
       {"creation,,,400000,0.0003,0.00025,0.00036,,,\n", "a whole number from 0"},
       {"growth,0,12,400000,0.0003,0.00025,0.00036,,,\n", "column 'size'"},
       {"creation,,120,400000,0.0003,0.00025,0.00036,bayindir,original,-1\n", "column 'model_rate'"},
+      // A return fraction above 1, or more returns than attempts.
+      {"return,2,12,20,5,0.3,0.8,,,\n", "column 'rate': expected a fraction from 0 to 1"},
+      {"return,2,12,20,0.6,0.3,1.5,,,\n", "column 'ci_high'"},
+      {"return,2,30,20,0.6,0.3,0.8,,,\n", "cannot exceed its exposure"},
   };
   for (const auto& [row, column] : damaged) {
     try {

@@ -1,0 +1,79 @@
+#include "models/measured_rates.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "model_test_worlds.hpp"
+#include "models/predictions.hpp"
+
+namespace swarmagg {
+namespace {
+
+// What a run of a 60-agent world measures, roughly (dt = 0.1).
+MeasuredTerms plausible_terms() {
+  MeasuredTerms terms;
+  terms.creation = 3e-4;
+  terms.growth = {{2, 3e-3}, {3, 4e-3}};
+  terms.attempt = {{2, 0.02}, {3, 0.03}};
+  terms.returned = {{2, 0.4}};
+  return terms;
+}
+
+TEST(MeasuredRates, PlausibleTermsPassAndEveryVariantStaysFinite) {
+  WorldSpec world = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  world.run.duration = 200.0;
+  const MeasuredTerms terms = plausible_terms();
+  EXPECT_NO_THROW(check_measured_terms(world, terms));
+  for (const VariantPrediction& p : predict(world, &terms)) {
+    for (const ModelRow& row : p.series) ASSERT_TRUE(!row.noa || std::isfinite(*row.noa));
+  }
+}
+
+// Rates no run can measure drove the expected model to NaN NOA with exit 0.
+TEST(MeasuredRates, RatesAboveOneEventPerStepAreRefusedByName) {
+  WorldSpec world = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  world.run.duration = 200.0;
+  const auto refused = [&](MeasuredTerms terms, const std::string& what) {
+    try {
+      predict(world, &terms);
+      ADD_FAILURE() << "accepted " << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  MeasuredTerms terms = plausible_terms();
+  terms.creation = 1e9;
+  refused(terms, "measured creation rate 1e+09 per tu is more than one pair-up");
+  terms = plausible_terms();
+  terms.growth[3] = 11.0;  // 1.1 joins per searcher and aggregate per step of 0.1
+  refused(terms, "measured growth 3 rate 11");
+  terms = plausible_terms();
+  terms.attempt[2] = 25.0;  // 2.5 attempts per step from a pair
+  refused(terms, "measured attempt 2 rate 25 per tu is more LEAVE attempts than members");
+  terms = plausible_terms();
+  terms.attempt[2] = 19.0;  // 1.9 of its 2 members a step: possible
+  EXPECT_NO_THROW(check_measured_terms(world, terms));
+}
+
+// Possible per pair, 0.9 joins per searcher and aggregate in a step are still more joins
+// than there are searchers once aggregates are many: the expected model overshoots.
+TEST(MeasuredRates, AModelThatOvershootsTheAgentsIsRefusedNotWrittenAsNan) {
+  WorldSpec world = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  world.run.duration = 200.0;
+  MeasuredTerms terms = plausible_terms();
+  terms.growth = {{2, 9.0}, {3, 9.0}, {4, 9.0}};
+  EXPECT_NO_THROW(check_measured_terms(world, terms));
+  try {
+    predict(world, &terms);
+    ADD_FAILURE() << "wrote an overshooting model";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the bayindir `measured` variant left the range"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace swarmagg
