@@ -64,6 +64,15 @@ std::optional<std::string> standard_output_failure() {
   return std::nullopt;
 }
 
+// `code`, or 1 with a message when standard output did not reach its reader.
+int standard_output_checked(int code) {
+  if (const auto failure = standard_output_failure()) {
+    std::cerr << "swarmagg: error: cannot write to standard output" << *failure << "\n";
+    return 1;
+  }
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,19 +106,16 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    const int code = app.exit(e);  // --help and --version print to standard output
+    if (code == 0) return standard_output_checked(0);
+    return 2;
   }
   try {
     const int code = action ? action() : 0;
     // A signal that came during work that does not look for one (the models, gnuplot) still
     // ends the command as interrupted, not as a success.
     throw_if_interrupted();
-    if (const auto failure = standard_output_failure()) {
-      std::cerr << "swarmagg: error: cannot write to standard output" << *failure << "\n";
-      return 1;
-    }
-    return code;
+    return standard_output_checked(code);
   } catch (const Interrupted& e) {
     return interrupted(e.signal_number());
   } catch (const InputError& e) {

@@ -140,8 +140,12 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
   if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
   // A killed run's temporaries are garbage (they would only count against the disk the new
-  // run needs): gone before it starts.
-  if (options.force) remove_stale_temporaries(out);
+  // run needs): gone before it starts, from every folder a run writes into.
+  if (options.force) {
+    for (const std::filesystem::path& folder :
+         {out, out / "plots", out / "model-timeseries", frames})
+      remove_stale_temporaries(folder);
+  }
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");

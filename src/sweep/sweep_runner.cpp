@@ -58,6 +58,7 @@ int thread_count(int requested, std::size_t runs) {
 
 void run_parallel(const std::vector<SweepRun>& runs, const SweepOptions& options,
                   ProgressLine& progress, int threads) {
+  if (runs.empty()) return;  // a resumed sweep with every run complete: no "0/0 runs" line
   auto run_one = [&](std::size_t i) {
     throw_if_interrupted();
     run_into_folder(runs[i], sweep_run_folder(options.out, runs[i]), options.plots, progress);

@@ -59,7 +59,8 @@ TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
 // A world printed onto a full disk is not a success.
 TEST(Cli, OutputThatCannotBeWrittenIsAFailure) {
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
-  for (const char* command : {"validate worlds/examples/demo.yaml", "keys"}) {
+  for (const char* command :
+       {"validate worlds/examples/demo.yaml", "keys", "--help", "run --help", "--version"}) {
     const Outcome o = swarmagg::testing::run_swarmagg(command, "", "/dev/full");
     EXPECT_EQ(o.exit_code, 1) << command;
     EXPECT_THAT(o.output, HasSubstr("cannot write to standard output")) << command;

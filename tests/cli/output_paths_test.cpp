@@ -179,4 +179,30 @@ TEST_F(OutputPaths, RatesOfAnotherWorldAreFedToAModelWithAWarning) {
   EXPECT_THAT(same.output, Not(HasSubstr("another world")));
 }
 
+// A run killed outright leaves hidden temporaries wherever it was writing; --force clears
+// them (those of no living process) from every folder a run writes into.
+TEST_F(OutputPaths, ForceRemovesAKilledRunsTemporariesFromEveryFolderItWrites) {
+  const fs::path out = dir_ / "run";
+  const std::string tiny =
+      "run worlds/examples/demo.yaml --replicates 1 --no-plots --quiet "
+      "--set run.duration=5 --out " +
+      out.string();
+  ASSERT_EQ(swarmagg(tiny).exit_code, 0);
+  // Process 999999998 lies above any pid_max: nobody is writing these.
+  const std::vector<fs::path> left = {
+      out / ".summary.json.999999998.0.tmp", out / "plots" / ".noa.png.999999998.1.tmp",
+      out / "model-timeseries" / ".bayindir-original.csv.999999998.2.tmp",
+      out / "frames" / ".frame_000010.png.999999998.3.tmp"};
+  for (const fs::path& file : left) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << "partial";
+  }
+  const fs::path someone_elses =
+      out / "frames" / (".frame_000020.png." + std::to_string(::getpid()) + ".0.tmp");
+  std::ofstream(someone_elses) << "being written";
+  ASSERT_EQ(swarmagg(tiny + " --force").exit_code, 0);
+  for (const fs::path& file : left) EXPECT_FALSE(fs::exists(file)) << file;
+  EXPECT_TRUE(fs::exists(someone_elses));  // a living process's
+}
+
 }  // namespace

@@ -173,6 +173,17 @@ TEST_F(SweepCommandTest, TheMergedSweepGetsItsPlotsAndEachRunOnlyWhenAsked) {
   EXPECT_TRUE(std::filesystem::exists(dir_ / "drawn" / "final-noa-vs-robots.count.png"));
 }
 
+TEST_F(SweepCommandTest, AResumedSweepWithNothingLeftPrintsNoEmptyProgressLine) {
+  const std::string sweep =
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  robots.count: [10, 20]\nreplicates: 1\n");
+  const std::string out = (dir_ / "out").string();
+  ASSERT_EQ(swarmagg({"sweep", sweep, "--out", out, "--no-plots"}), 0) << output();
+  ASSERT_EQ(swarmagg({"sweep", sweep, "--out", out, "--no-plots", "--progress", "always"}), 0)
+      << output();
+  EXPECT_THAT(output(), HasSubstr("already complete"));
+  EXPECT_THAT(output(), ::testing::Not(HasSubstr("0/0 runs")));
+}
+
 TEST_F(SweepCommandTest, ShardsThenMergeMatchTheUnshardedSweep) {
   const std::string sweep = sweep_file(testing::kGridSweep);
   ASSERT_EQ(swarmagg({"sweep", sweep, "--out", (dir_ / "full").string(), "--no-plots"}), 0)
