@@ -7,7 +7,7 @@
 //  - growth / join, by the size m joined: growths per searcher per size-m aggregate per tu;
 //    models: 2 rho_m v / A (docs/models.md), Soysal's P_e(m) / dt;
 //  - initial, by size m: aggregates of size m right after the first decision per replicate
-//    (exposure: replicates), against the placement expectation (models/initial_state.hpp).
+//    (exposure: replicates), against the models' start (models/initial_state.hpp).
 //  - attempt / escape, by the size m left: LEAVE attempts (escapes: attempts that ended
 //    with no waiting member of the aggregate left within s) per size-m aggregate per tu;
 //    models: attempts m P_l(m) / dt, escapes the variant's loss (Bayindir p min(m,
