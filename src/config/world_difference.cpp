@@ -4,7 +4,9 @@
 
 #include <utility>
 
+#include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg {
 namespace {
@@ -42,12 +44,32 @@ const std::string* value_of(const FlatKeys& keys, const std::string& key) {
   return nullptr;
 }
 
+// The text as this version writes it: read as a world, so that keys an older version did not
+// write get their defaults and numbers one spelling. A text this version cannot load (a key
+// it does not know) is compared as it stands.
+std::string as_written_here(const std::string& text) {
+  try {
+    return world_to_yaml(load_world_text(text, "the earlier world"));
+  } catch (const InputError&) {
+    return text;
+  }
+}
+
+// Keys that change nothing in the world: the Box2D settings of two kinematic worlds.
+bool inert(const std::string& key, const FlatKeys& a, const FlatKeys& b) {
+  const auto kinematic = [](const FlatKeys& keys) {
+    const std::string* type = value_of(keys, "engine.type");
+    return type && *type == "kinematic";
+  };
+  return key.starts_with("engine.box2d.") && kinematic(a) && kinematic(b);
+}
+
 }  // namespace
 
 std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here) {
   FlatKeys theirs;
   try {
-    theirs = system_keys(YAML::Load(there));
+    theirs = system_keys(YAML::Load(as_written_here(there)));
   } catch (const YAML::Exception&) {
     return {"the world text: unreadable"};
   }
@@ -56,7 +78,7 @@ std::vector<std::string> system_differences(const std::string& there, const Worl
   for (const auto& [key, value] : ours) {
     const std::string* other = value_of(theirs, key);
     const std::string there_text = other ? *other : "none";
-    if (there_text != value)
+    if (there_text != value && !inert(key, ours, theirs))
       differences.push_back(key + ": " + there_text + " there, " + value + " here");
   }
   for (const auto& [key, value] : theirs) {

@@ -1,14 +1,18 @@
 #include "models/bayindir_expected.hpp"
 
+#include <algorithm>
+#include <string>
+
+#include "core/errors.hpp"
 #include "models/output_grid.hpp"
 
 namespace swarmagg {
 
-void advance_expected(const BayindirRates& rates, BayindirState& state) {
+double advance_expected(const BayindirRates& rates, BayindirState& state) {
   const double y = state.searching;
   const double creations = rates.creation.at(y);
   state.totals.encounters += creations;
-  if (!rates.forms_aggregates) return;
+  if (!rates.forms_aggregates) return 0.0;
 
   std::vector<double>& count = state.aggregates;
   double growths = 0.0, dissipations = 0.0, shrinks = 0.0;
@@ -16,20 +20,26 @@ void advance_expected(const BayindirRates& rates, BayindirState& state) {
   // from below (creation into n_2, then G_{m-1}) is carried, and S_m goes into n_{m-1},
   // which has already been updated from its old value.
   double inflow_from_below = creations;
+  double lowest = 0.0;
   for (int m = 2; m <= state.agents(); ++m) {
     const double grow = count[m] * y * rates.growth[m];
     const double lose = count[m] * rates.loss[m];
     count[m] += inflow_from_below - grow - lose;
-    if (m >= 3) count[m - 1] += lose;
+    if (m >= 3) {
+      count[m - 1] += lose;
+      lowest = std::min(lowest, count[m - 1]);  // n_{m-1} is final now
+    }
     inflow_from_below = grow;
     growths += grow;
     (m == 2 ? dissipations : shrinks) += lose;
   }
+  if (state.agents() >= 2) lowest = std::min(lowest, count[state.agents()]);
   state.searching = y - 2.0 * creations - growths + 2.0 * dissipations + shrinks;
   state.totals.creations += creations;
   state.totals.growths += growths;
   state.totals.dissipations += dissipations;
   state.totals.shrinks += shrinks;
+  return lowest;
 }
 
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
@@ -43,9 +53,18 @@ std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
       [&](std::int64_t step) {
         if (step == 0 && !start.empty() && rates.forms_aggregates) {
           state = BayindirState::after_first_decision(rates.agents, start);
-        } else {
-          advance_expected(rates, state);
+          return;
         }
+        const double lowest = advance_expected(rates, state);
+        const double tolerance = 1e-9 * rates.agents;
+        if (lowest >= -tolerance && state.searching >= -tolerance &&
+            state.searching <= rates.agents + tolerance)
+          return;
+        throw InputError("the expected model left the range of the agents at step " +
+                         std::to_string(step + 1) + " (searching " +
+                         std::to_string(state.searching) + ", the smallest aggregate count " +
+                         std::to_string(lowest) +
+                         "): its rates give more events per step than there are agents");
       },
       [&](std::int64_t step) {
         rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));

@@ -13,12 +13,16 @@
 
 namespace swarmagg {
 
-void advance_expected(const BayindirRates& rates, BayindirState& state);
+// Returns the smallest n_m after the step: rates of nearly one event per agent and step (or
+// more) overshoot, and a count falls below zero.
+double advance_expected(const BayindirRates& rates, BayindirState& state);
 
 // The state at each step of `grid` (increasing, from 0), starting from all searching. With
 // `start` (the aggregates after the first decision, models/initial_state.hpp) the first step
 // forms exactly those instead of the rates' creations. The state at the last step also goes
-// to `last` when given (its size distribution).
+// to `last` when given (its size distribution). Throws InputError, naming the step, where a
+// step leaves the range of the agents (a count below zero, or more searchers than agents):
+// the counts would go on to NaN.
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
                                                const std::vector<double>& start = {},

@@ -50,9 +50,12 @@ VariantPrediction bayindir_expected(const WorldSpec& world, const BayindirRates&
                                     const std::vector<std::int64_t>& grid,
                                     const std::vector<double>& start) {
   BayindirState last;
-  VariantPrediction prediction{.model = "bayindir",
-                               .variant = variant,
-                               .series = bayindir_expected_series(rates, grid, start, &last)};
+  VariantPrediction prediction{.model = "bayindir", .variant = variant};
+  try {
+    prediction.series = bayindir_expected_series(rates, grid, start, &last);
+  } catch (const InputError& e) {
+    throw InputError("model: the bayindir `" + variant + "` variant: " + e.what());
+  }
   if (!rates.forms_aggregates) return prediction;
   add_size_distribution(prediction, grid.back(), last.aggregates);
   std::vector<double> expected_noa;
@@ -154,27 +157,10 @@ std::string stationary_summary(const VariantPrediction& prediction) {
          format(" (p = %.3g)", most_likely->value);
 }
 
-// The expected models step mean counts by whole steps: rates of several events per agent and
-// step overshoot, counts fall below zero and then to NaN. Said instead of written.
-void check_counts(const WorldSpec& world, const std::vector<VariantPrediction>& predictions) {
-  const double tolerance = 1e-9 * world.robots.count;
-  for (const VariantPrediction& prediction : predictions) {
-    for (const ModelRow& row : prediction.series) {
-      const bool broken = (row.noa && !(std::isfinite(*row.noa) && *row.noa >= -tolerance)) ||
-                          (row.searching && !(*row.searching >= -tolerance));
-      if (!broken) continue;
-      throw InputError("model: the " + prediction.model + " `" + prediction.variant +
-                       "` variant left the range of the agents at step " +
-                       std::to_string(row.step) + " (NOA " + format("%.4g", row.noa.value_or(0.0)) +
-                       ", searching " + format("%.4g", row.searching.value_or(0.0)) +
-                       "): its rates give more events per step than there are agents");
-    }
-  }
-}
+}  // namespace
 
-std::vector<VariantPrediction> predict_variants(const WorldSpec& world,
-                                                const MeasuredTerms* measured,
-                                                const PlacementSample* sample) {
+std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured,
+                                       const PlacementSample* sample) {
   const ModelFamily model = controller_rules(world).model;
   if (model == ModelFamily::None) return {};
   if (measured) check_measured_terms(world, *measured);
@@ -195,15 +181,6 @@ std::vector<VariantPrediction> predict_variants(const WorldSpec& world,
     const std::vector<TidyValue> notes = measured_term_notes(world, *measured);
     predictions.back().extra.insert(predictions.back().extra.end(), notes.begin(), notes.end());
   }
-  return predictions;
-}
-
-}  // namespace
-
-std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTerms* measured,
-                                       const PlacementSample* sample) {
-  std::vector<VariantPrediction> predictions = predict_variants(world, measured, sample);
-  check_counts(world, predictions);
   return predictions;
 }
 

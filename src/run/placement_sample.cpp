@@ -20,10 +20,14 @@ constexpr int kMostPlacements = 4096;
 // Keeps the placements apart from every run's replicates (CounterRng::for_replicate of the
 // world's seed).
 constexpr std::uint64_t kPlacementStream = 0x9A7C3E1D5B2F4861ull;
+// From this many agents placements are taken one at a time, each step on every thread: a
+// replicate of 10^6 agents holds about 0.9 GB, and one per thread would multiply that.
+constexpr int kOneAtATimeFrom = 1 << 16;
 
 // The sizes of the aggregates after the first decision of placement `index`.
-std::vector<std::int32_t> first_decision(const WorldSpec& world, int index) {
+std::vector<std::int32_t> first_decision(const WorldSpec& world, int index, int step_threads) {
   Replicate replicate(world, index);
+  replicate.set_threads(step_threads);
   replicate.step();
   const std::span<const std::int32_t> sizes = replicate.aggregates().sizes();
   return {sizes.begin(), sizes.end()};
@@ -40,8 +44,10 @@ PlacementSample sample_placements(const WorldSpec& world, int threads) {
   placing.run.seed = mix64(world.run.seed ^ kPlacementStream);
   const int count = world.robots.random_placement() ? placements_to_sample(world.robots.count) : 1;
   std::vector<std::vector<std::int32_t>> sizes(static_cast<std::size_t>(count));
-  parallel_for(sizes.size(), threads,
-               [&](std::size_t i) { sizes[i] = first_decision(placing, static_cast<int>(i)); });
+  const bool one_at_a_time = world.robots.count >= kOneAtATimeFrom;
+  parallel_for(sizes.size(), one_at_a_time ? 1 : threads, [&](std::size_t i) {
+    sizes[i] = first_decision(placing, static_cast<int>(i), one_at_a_time ? threads : 1);
+  });
   // Sums of whole counts, taken in placement order: the same for any thread count.
   std::vector<std::uint64_t> totals(static_cast<std::size_t>(world.robots.count) + 1, 0);
   double noa_sum = 0.0, noa_square_sum = 0.0;

@@ -33,6 +33,31 @@ TEST(WorldDifference, NamesEachSystemKeyThatDiffersWithBothValues) {
             "controller.p_leave: 0.001 there, 0.002 here; and 1 more");
 }
 
+// A world.resolved.yaml of an older version lacks keys added since, and a hand-written one
+// spells numbers its own way: read as worlds, they are the same system.
+TEST(WorldDifference, MissingDefaultsAndOtherSpellingsAreTheSameSystem) {
+  std::string older = world_to_yaml(demo());
+  const std::size_t contact = older.find("  contact: slide\n");
+  ASSERT_NE(contact, std::string::npos);
+  older.erase(contact, std::string("  contact: slide\n").size());
+  EXPECT_TRUE(system_differences(older, demo()).empty());
+  const std::string spelt =
+      "name: demo\narena: {width: 120.0, height: 1.2e2}\nrobots: {count: 60, radius: 1.0, "
+      "detection_radius: 4, speed: 1}\ncontroller: {type: bayindir, p_leave: 1e-3, join: true, "
+      "leave: true, leave_timeout: 10}\n";
+  EXPECT_TRUE(system_differences(spelt, demo()).empty())
+      << differences_text(system_differences(spelt, demo()));
+}
+
+TEST(WorldDifference, Box2dSettingsMatterOnlyToBox2dWorlds) {
+  const std::string there = world_to_yaml(demo());
+  EXPECT_TRUE(system_differences(there, demo({"engine.box2d.velocity_iterations=4"})).empty());
+  const std::string box2d = world_to_yaml(demo({"engine.type=box2d"}));
+  EXPECT_EQ(
+      system_differences(box2d, demo({"engine.type=box2d", "engine.box2d.velocity_iterations=4"})),
+      std::vector<std::string>{"engine.box2d.velocity_iterations: 8 there, 4 here"});
+}
+
 TEST(WorldDifference, GivenPositionsAndUnreadableTextsDiffer) {
   WorldSpec placed = demo({"robots.count=2"});
   placed.robots.placement = {{1, 1, 0}, {5, 1, 0}};

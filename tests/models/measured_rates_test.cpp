@@ -62,16 +62,25 @@ TEST(MeasuredRates, RatesAboveOneEventPerStepAreRefusedByName) {
 TEST(MeasuredRates, AModelThatOvershootsTheAgentsIsRefusedNotWrittenAsNan) {
   WorldSpec world = testing::bayindir_world(60, 1e-3, true, true, 120.0);
   world.run.duration = 200.0;
-  MeasuredTerms terms = plausible_terms();
-  terms.growth = {{2, 9.0}, {3, 9.0}, {4, 9.0}};
-  EXPECT_NO_THROW(check_measured_terms(world, terms));
-  try {
-    predict(world, &terms);
-    ADD_FAILURE() << "wrote an overshooting model";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("the bayindir `measured` variant left the range"),
-              std::string::npos)
-        << e.what();
+  MeasuredTerms growing = plausible_terms();
+  growing.growth = {{2, 9.0}, {3, 9.0}, {4, 9.0}};
+  // 1.5 attempts per step from a pair, none returning: a pair loses more than it has, in a
+  // step between two recorded ones (record_every 100), so the rows alone would not show it.
+  MeasuredTerms leaving = plausible_terms();
+  leaving.attempt[2] = 15.0;
+  leaving.returned.clear();
+  world.run.record_every = 100;
+  for (const MeasuredTerms& terms : {growing, leaving}) {
+    EXPECT_NO_THROW(check_measured_terms(world, terms));
+    try {
+      predict(world, &terms);
+      ADD_FAILURE() << "wrote an overshooting model";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the bayindir `measured` variant: the expected model "
+                                           "left the range of the agents at step "),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 

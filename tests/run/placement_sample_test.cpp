@@ -94,6 +94,17 @@ TEST(PlacementSample, IsTheSameForAnyThreadCount) {
   EXPECT_EQ(one.noa_standard_error, two.noa_standard_error);
 }
 
+// Large swarms are placed one at a time, each step on every thread: the same sample.
+TEST(PlacementSample, IsTheSameForAnyThreadCountInALargeSwarm) {
+  const WorldSpec world =
+      example_world("demo.yaml", {"robots.count=70000", "arena.width=4100", "arena.height=4100"});
+  const PlacementSample one = sample_placements(world, 1);
+  EXPECT_EQ(one.placements, 8);
+  EXPECT_GT(in_sample(one, 2, 70000), 1000.0);
+  const PlacementSample two = sample_placements(world, 2);
+  EXPECT_EQ(one.aggregates, two.aggregates);
+}
+
 TEST(PlacementSample, GivenPositionsAreOnePlacementWithACertainFirstDecision) {
   // Three agents in a row within s of the middle one (a pair, and the third joins it) and a
   // pair far away.
@@ -112,15 +123,19 @@ TEST(PlacementSample, IsTakenOnlyWhereTheModelsStartFromIt) {
   EXPECT_TRUE(placement_start(world, 1).has_value());
   world.model.initial_state = InitialState::AllSearching;
   EXPECT_FALSE(placement_start(world, 1).has_value());
-  // And the predictions start from it: NOA at step 1 is the sample's.
+  // And every variant starts from it: its NOA at step 1 is the sample's.
   world.model.initial_state = InitialState::Placement;
   world.model.stochastic_replicates = 0;
+  world.run.record_every = 1;
+  world.run.duration = 1.0;
   const PlacementSample sample = sample_placements(world, 1);
   const std::vector<VariantPrediction> predictions = predict_world(world, nullptr, 1);
   ASSERT_FALSE(predictions.empty());
-  const std::vector<VariantPrediction> from_sample = predict(world, nullptr, &sample);
-  ASSERT_EQ(predictions.size(), from_sample.size());
-  EXPECT_EQ(predictions.front().series.at(1).noa, from_sample.front().series.at(1).noa);
+  for (const VariantPrediction& prediction : predictions) {
+    ASSERT_EQ(prediction.series.at(1).step, 1);
+    EXPECT_DOUBLE_EQ(*prediction.series.at(1).noa, in_sample(sample, 2, world.robots.count))
+        << prediction.variant;
+  }
 }
 
 }  // namespace
