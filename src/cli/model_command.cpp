@@ -4,10 +4,10 @@
 #include <chrono>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
-#include "config/world_difference.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -30,6 +30,31 @@ struct ModelCommandOptions {
   bool force = false;
 };
 
+// The terms of `rates_csv`, refused (InputError naming the file) when no run of `spec` could
+// have measured them, with a warning for each reason to doubt they belong to it.
+MeasuredTerms read_measured_terms(const std::string& rates_csv, const WorldSpec& spec) {
+  const std::vector<RateRow> rows = read_rates_csv(rates_csv);
+  MeasuredTerms terms = measured_terms(rows);
+  try {
+    check_measured_terms(spec, terms);
+  } catch (const InputError& e) {
+    throw InputError(rates_csv + ": " + e.what());
+  }
+  for (const std::string& doubt : rates_origin_doubts(rates_csv, rows, spec))
+    std::cerr << "warning: " << rates_csv << ": " << doubt << "\n";
+  return terms;
+}
+
+// Where a measured start begins, as placement_start_note says it for a sampled one.
+std::string measured_start_note(const MeasuredTerms& terms, const std::string& rates_csv) {
+  double noa = 0.0;
+  for (const auto& [size, count] : terms.initial) noa += count;
+  std::ostringstream text;
+  text << "the models start from the first decision measured in " << rates_csv << ": " << noa
+       << " aggregates (model.initial_state: measured)";
+  return text.str();
+}
+
 int model_command(const ModelCommandOptions& options) {
   const WorldSpec spec = options.world.load();
   const std::filesystem::path out =
@@ -38,20 +63,8 @@ int model_command(const ModelCommandOptions& options) {
   refuse_another_worlds_run(out, spec, "model", options.force);
   const auto start = std::chrono::steady_clock::now();
   std::optional<MeasuredTerms> measured;
-  if (!options.rates.empty()) {
-    measured = measured_terms(read_rates_csv(options.rates));
-    try {
-      check_measured_terms(spec, *measured);
-    } catch (const InputError& e) {
-      throw InputError(options.rates + ": " + e.what());
-    }
-    const std::vector<std::string> differences = rates_world_differences(options.rates, spec);
-    if (!differences.empty()) {
-      std::cerr << "warning: " << options.rates << " was measured in another world ("
-                << differences_text(differences)
-                << "): the measured variants feed its terms into this world's model\n";
-    }
-  }
+  if (!options.rates.empty()) measured = read_measured_terms(options.rates, spec);
+  check_predictable(spec);  // before the placements are drawn (seconds for a large swarm)
   const std::optional<PlacementSample> sample = placement_start(spec, 0);
   const std::vector<VariantPrediction> predictions =
       predict(spec, measured ? &*measured : nullptr, sample ? &*sample : nullptr);
@@ -61,6 +74,8 @@ int model_command(const ModelCommandOptions& options) {
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
   if (measured) std::cerr << "note: " << measured_variant_note(spec, *measured) << "\n";
   if (sample) std::cerr << "note: " << placement_start_note(*sample) << "\n";
+  if (measured && spec.model.initial_state == InitialState::Measured)
+    std::cerr << "note: " << measured_start_note(*measured, options.rates) << "\n";
   for (const VariantPrediction& prediction : predictions) {
     std::cout << prediction_summary(prediction) << "\n";
   }

@@ -5,6 +5,7 @@
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
+#include "run/interrupt.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -24,6 +25,7 @@ int plot_command(const PlotCommandOptions& options) {
   if (!options.out.empty()) check_output_folder(out, "--out");
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
   const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
+  throw_if_interrupted();  // gnuplot's half-drawn plots are the interruption's
   for (const std::string& failure : outcome.failures) std::cerr << "swarmagg: " << failure << "\n";
   if (!options.quiet) {
     std::cout << "drew " << outcome.drawn.size() << " plot(s) into " << out.string() << "/:";

@@ -89,6 +89,15 @@ void print_summary(const WorldSpec& spec, const RunResult& result,
             << "outputs in " << out.string() << "/\n";
 }
 
+bool predictable(const WorldSpec& spec) {
+  try {
+    check_predictable(spec);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 // A world the models cannot describe (say, a partition model of too many agents) still
 // keeps its simulation outputs: the run only notes why model.csv is missing.
 void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
@@ -108,6 +117,8 @@ void draw_plots(const std::filesystem::path& out, bool quiet) {
     return;
   }
   const PlotOutcome outcome = draw_run_plots(out, out);
+  // Ctrl-C reaches gnuplot too: its half-drawn plots are the interruption's, not a full disk's.
+  throw_if_interrupted();
   for (const std::string& failure : outcome.failures) std::cerr << "warning: " << failure << "\n";
   if (quiet || outcome.drawn.empty()) return;
   std::cout << "plots:";
@@ -188,8 +199,11 @@ int run_command(const RunCommandOptions& options) {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
   write_run_folder(spec, result, out, options.world.changes());
-  const std::optional<PlacementSample> start =
-      run.rates || !options.no_model ? placement_start(spec, 0) : std::nullopt;
+  // The models' start, for the rates' `initial` rows and the models (unless they refuse the
+  // world: then it would be drawn for nothing, seconds for a large swarm).
+  const std::optional<PlacementSample> start = run.rates || (!options.no_model && predictable(spec))
+                                                   ? placement_start(spec, 0)
+                                                   : std::nullopt;
   const PlacementSample* sample = start ? &*start : nullptr;
   std::optional<MeasuredTerms> measured;
   std::vector<RateRow> rows;

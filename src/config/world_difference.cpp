@@ -71,8 +71,9 @@ std::vector<std::string> system_differences(const std::string& there, const Worl
   try {
     theirs = system_keys(YAML::Load(as_written_here(there)));
   } catch (const YAML::Exception&) {
-    return {"the world text: unreadable"};
+    theirs.clear();
   }
+  if (theirs.empty()) return {"the world text: unreadable"};
   const FlatKeys ours = system_keys(YAML::Load(world_to_yaml(here)));
   std::vector<std::string> differences;
   for (const auto& [key, value] : ours) {

@@ -12,8 +12,10 @@ namespace swarmagg {
 
 // The keys whose values differ, as "key: <there> there, <here> here", in the order of the
 // resolved world text; empty when the two are the same system. `there` is a resolved world
-// text (world.resolved.yaml, or world_to_yaml); one that cannot be read differs as "the
-// world text: unreadable".
+// text (world.resolved.yaml, or world_to_yaml), read as a world where it can be (so keys an
+// older version did not write take their defaults); one that cannot be read, or holds none of
+// the sections, differs as "the world text: unreadable". Box2D settings do not tell two
+// kinematic worlds apart.
 std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here);
 
 // The first few differences joined for a message ("robots.count: 60 there, 10 here; ...").

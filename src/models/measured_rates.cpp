@@ -109,30 +109,58 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
   return note;
 }
 
+namespace {
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return text;
+}
+
+// The measured first decision must fit the world's agents: a start of other sizes (or of more
+// agents) comes from another world or a damaged file.
+void check_measured_start(const WorldSpec& world, const MeasuredTerms& terms) {
+  const int agents = world.robots.count;
+  double placed = 0.0;
+  for (const auto& [size, count] : terms.initial) {
+    if (size > agents) {
+      throw InputError("measured initial state: aggregates of " + std::to_string(size) +
+                       " agents in a world of " + std::to_string(agents));
+    }
+    placed += size * count;
+  }
+  if (placed > agents * (1.0 + 1e-9)) {
+    throw InputError("measured initial state: its aggregates hold " + number(placed) +
+                     " agents on average, more than the world's " + std::to_string(agents));
+  }
+}
+
+}  // namespace
+
 void check_measured_terms(const WorldSpec& world, const MeasuredTerms& terms) {
   const double dt = world.engine.dt;
-  const auto number = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", x);
-    return std::string(text);
-  };
   const auto refuse = [&](const std::string& term, double rate, const std::string& limit) {
     throw InputError("measured " + term + " rate " + number(rate) + " per tu is " + limit +
                      " in a step of dt = " + number(dt) +
                      ": not a rate a run of this world can measure");
   };
+  // Named as the rates.csv of the world's model names them.
+  const bool soysal = controller_rules(world).model == ModelFamily::Soysal;
   if (terms.creation && *terms.creation * dt > 1.0)
-    refuse("creation", *terms.creation, "more than one pair-up per searcher pair");
+    refuse(soysal ? "pairup" : "creation", *terms.creation,
+           "more than one pair-up per searcher pair");
   for (const auto* growth : {&terms.growth, &terms.new_growth}) {
+    const std::string name = growth == &terms.new_growth ? "join_new" : soysal ? "join" : "growth";
     for (const auto& [size, rate] : *growth) {
       if (rate * dt > 1.0)
-        refuse("growth " + std::to_string(size), rate, "more than one join per searcher");
+        refuse(name + " " + std::to_string(size), rate, "more than one join per searcher");
     }
   }
   for (const auto& [size, rate] : terms.attempt) {
     if (rate * dt > size)
       refuse("attempt " + std::to_string(size), rate, "more LEAVE attempts than members");
   }
+  if (world.model.initial_state == InitialState::Measured) check_measured_start(world, terms);
 }
 
 }  // namespace swarmagg

@@ -29,8 +29,10 @@ std::vector<TidyValue> measured_term_notes(const WorldSpec& world, const Measure
 
 // Throws InputError for terms no run of `world` can measure: more than one pair-up per
 // searcher pair, or join per searcher and aggregate, in a step of dt; more LEAVE attempts per
-// step than an aggregate has members. Finite but impossible rates (hand-edited, or measured in a
-// world with another dt) would drive the expected model below zero agents, to NaN.
+// step than an aggregate has members; under model.initial_state: measured, a start with
+// aggregates larger than the world or holding more agents than it has. Finite but impossible
+// rates (hand-edited, or measured in a world with another dt) would drive the expected model
+// below zero agents, to NaN.
 void check_measured_terms(const WorldSpec& world, const MeasuredTerms& terms);
 
 // The same in words, one sentence, for the command line and rates.json.

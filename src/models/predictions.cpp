@@ -184,6 +184,12 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
   return predictions;
 }
 
+void check_predictable(const WorldSpec& world) {
+  const ModelFamily model = controller_rules(world).model;
+  if (model != ModelFamily::Bayindir && model != ModelFamily::Encounters) return;
+  for (const CreationVariant variant : kCreationVariants) bayindir_rates(world, variant);
+}
+
 std::vector<std::string> model_caveats(const WorldSpec& world) {
   std::vector<std::string> caveats;
   const ControllerSpec& controller = world.controller;

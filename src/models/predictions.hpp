@@ -27,6 +27,10 @@ std::vector<VariantPrediction> predict(const WorldSpec& world,
                                        const MeasuredTerms* measured = nullptr,
                                        const PlacementSample* sample = nullptr);
 
+// Throws the InputError predict() would throw for the world's own rates (per-step
+// probabilities above 1, say), at once: callers check before costly preparations.
+void check_predictable(const WorldSpec& world);
+
 // Where the world departs from the models' assumptions, one sentence each.
 std::vector<std::string> model_caveats(const WorldSpec& world);
 

@@ -1,6 +1,8 @@
 #include "rates/rates_csv.hpp"
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
@@ -26,6 +28,12 @@ std::string measured_columns(const RateRow& row) {
   return row.term + "," + (row.size ? std::to_string(*row.size) : "") + "," +
          std::to_string(e.events) + "," + csv_number(e.exposure) + "," + optional_number(e.rate) +
          "," + optional_number(e.low) + "," + optional_number(e.high);
+}
+
+// Repeated lines of a term (one per model variant) carry the same measurement.
+bool same_measurement(const RateEstimate& a, const RateEstimate& b) {
+  return a.events == b.events && a.exposure == b.exposure && a.rate == b.rate && a.low == b.low &&
+         a.high == b.high;
 }
 
 }  // namespace
@@ -56,6 +64,7 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
                      "`");
   }
   std::vector<RateRow> rows;
+  std::map<std::pair<std::string, int>, std::size_t> first_line;  // by term and size
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     const std::vector<std::string>& cells = table.rows[i];
     // As CsvTable names a cell: file:line: column 'name'.
@@ -105,9 +114,28 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
       }
       if (!std::isnan(value)) *field = value;
     }
-    if (!rows.empty() && rows.back().term == row.term && rows.back().size == row.size) {
+    if (row.estimate.events > 0 && !(row.estimate.exposure > 0.0)) {
+      throw InputError(cell(3) + ": " + cells.at(2) + " events over an exposure of " + cells.at(3) +
+                       ": expected an exposure above 0");
+    }
+    // A term is written once per model variant that predicts it, on consecutive lines with
+    // the same measurement; any other repeat is a second measurement, and which to take is
+    // unknown.
+    const auto key = std::make_pair(row.term, row.size.value_or(0));
+    if (const auto earlier = first_line.find(key); earlier != first_line.end()) {
+      const bool continues = rows.back().term == row.term && rows.back().size == row.size;
+      if (!continues || !same_measurement(rows.back().estimate, row.estimate)) {
+        throw InputError(file.string() + ":" + std::to_string(table.line_of.at(i)) +
+                         ": repeats term '" + row.term + "'" +
+                         (row.size ? " size " + std::to_string(*row.size) : std::string()) +
+                         " of line " + std::to_string(earlier->second) +
+                         (continues ? " with another measurement (events, exposure or rate)"
+                                    : " after other terms"));
+      }
       row = rows.back();
       rows.pop_back();
+    } else {
+      first_line.emplace(key, table.line_of.at(i));
     }
     if (cells.size() > 9 && !cells[7].empty()) {
       row.models.push_back({cells[7], cells[8], number(9, false)});

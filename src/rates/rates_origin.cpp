@@ -4,18 +4,56 @@
 #include <nlohmann/json.hpp>
 
 #include "config/world_difference.hpp"
+#include "control_interface/controller_rules.hpp"
+#include "controllers/controller_registry.hpp"
 
 namespace swarmagg {
+namespace {
 
-std::vector<std::string> rates_world_differences(const std::filesystem::path& rates_csv,
-                                                 const WorldSpec& world) {
-  std::ifstream in(rates_csv.parent_path() / "rates.json");
-  if (!in) return {};
+std::string world_doubt(const std::filesystem::path& rates_csv, const WorldSpec& world) {
+  const std::filesystem::path json_file = rates_csv.parent_path() / "rates.json";
+  std::ifstream in(json_file);
+  if (!in) return "";
   const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (json.is_discarded() || !json.contains("resolved_world") ||
-      !json["resolved_world"].is_string())
-    return {};
-  return system_differences(json["resolved_world"].get<std::string>(), world);
+  if (json.is_discarded() || !json.is_object()) {
+    return json_file.string() +
+           " beside it cannot be read: which world these rates come from "
+           "is unknown";
+  }
+  if (!json.contains("resolved_world") || !json["resolved_world"].is_string()) return "";
+  const std::vector<std::string> differences =
+      system_differences(json["resolved_world"].get<std::string>(), world);
+  if (differences.empty()) return "";
+  return "it was measured in another world (" + differences_text(differences) +
+         "): the measured variants feed its terms into this world's model";
+}
+
+std::string model_doubt(const std::vector<RateRow>& rows, const WorldSpec& world) {
+  const ModelFamily family = controller_rules(world).model;
+  if (family != ModelFamily::Bayindir && family != ModelFamily::Soysal) return "";
+  const std::string ours = family == ModelFamily::Soysal ? "soysal" : "bayindir";
+  std::string theirs;
+  for (const RateRow& row : rows) {
+    for (const ModelTerm& term : row.models) {
+      if (term.model == ours) return "";
+      theirs = term.model;
+    }
+  }
+  if (theirs.empty()) return "";
+  return "its rows were written for the " + theirs + " model, this world's is the " + ours +
+         " model";
+}
+
+}  // namespace
+
+std::vector<std::string> rates_origin_doubts(const std::filesystem::path& rates_csv,
+                                             const std::vector<RateRow>& rows,
+                                             const WorldSpec& world) {
+  std::vector<std::string> doubts;
+  for (const std::string& doubt : {world_doubt(rates_csv, world), model_doubt(rows, world)}) {
+    if (!doubt.empty()) doubts.push_back(doubt);
+  }
+  return doubts;
 }
 
 }  // namespace swarmagg

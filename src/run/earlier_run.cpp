@@ -43,8 +43,15 @@ void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::stri
 
 void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
                                const std::string& command, bool force) {
-  std::ifstream in(out / "world.resolved.yaml");
-  if (!in || force) return;
+  const std::filesystem::path resolved = out / "world.resolved.yaml";
+  std::error_code error;
+  if (force || !std::filesystem::exists(resolved, error)) return;
+  if (!std::filesystem::is_regular_file(resolved, error)) {
+    throw InputError(resolved.string() + " is not a file: `" + command +
+                     "` cannot tell whose folder this is. Pass --out DIR, or --force to write "
+                     "there anyway");
+  }
+  std::ifstream in(resolved);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::vector<std::string> differences = system_differences(text, spec);
   if (differences.empty()) return;

@@ -1,8 +1,8 @@
 #pragma once
 // The macroscopic predictions written beside a run (docs/reference/outputs.md): model.csv (tidy,
 // every variant) and model-timeseries/<model>-<variant>.csv (the simulation's timeseries.csv
-// columns, so model and simulation plot together). Variants an earlier model of the folder
-// wrote and this one does not are removed from model-timeseries/.
+// columns, so model and simulation plot together). Variant files the earlier model.csv of the
+// folder lists and this model does not write are removed from model-timeseries/ (no others).
 #include <filesystem>
 #include <vector>
 

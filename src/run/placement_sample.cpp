@@ -7,6 +7,7 @@
 
 #include "core/rng.hpp"
 #include "models/predictions.hpp"
+#include "run/interrupt.hpp"
 #include "run/parallel_for.hpp"
 #include "run/replicate.hpp"
 #include "run/world_runner.hpp"
@@ -26,6 +27,7 @@ constexpr int kOneAtATimeFrom = 1 << 16;
 
 // The sizes of the aggregates after the first decision of placement `index`.
 std::vector<std::int32_t> first_decision(const WorldSpec& world, int index, int step_threads) {
+  throw_if_interrupted();  // thousands of placements, or a few large ones, take a while
   Replicate replicate(world, index);
   replicate.set_threads(step_threads);
   replicate.step();

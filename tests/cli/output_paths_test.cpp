@@ -156,9 +156,11 @@ TEST_F(OutputPaths, AModelLeavesNoVariantOfAnEarlierModelBehind) {
                 .exit_code,
             0);
   ASSERT_TRUE(fs::exists(out / "model-timeseries" / "bayindir-measured.csv"));
+  std::ofstream(out / "model-timeseries" / "bayindir-mine.csv") << "yours\n";
   ASSERT_EQ(swarmagg("model " + world + "--out " + out.string()).exit_code, 0);
   EXPECT_FALSE(fs::exists(out / "model-timeseries" / "bayindir-measured.csv"));
   EXPECT_TRUE(fs::exists(out / "model-timeseries" / "bayindir-original.csv"));
+  EXPECT_TRUE(fs::exists(out / "model-timeseries" / "bayindir-mine.csv"));  // not a model's
 }
 
 TEST_F(OutputPaths, RatesOfAnotherWorldAreFedToAModelWithAWarning) {
@@ -172,11 +174,26 @@ TEST_F(OutputPaths, RatesOfAnotherWorldAreFedToAModelWithAWarning) {
   const Outcome other = swarmagg("model worlds/examples/demo.yaml" + feed + (dir_ / "a").string());
   EXPECT_EQ(other.exit_code, 0) << other.output;
   EXPECT_THAT(other.output,
-              HasSubstr("was measured in another world (robots.count: 30 there, 60 here)"));
+              HasSubstr("it was measured in another world (robots.count: 30 there, 60 here)"));
   const Outcome same = swarmagg("model worlds/examples/demo.yaml --set robots.count=30" + feed +
                                 (dir_ / "b").string());
   EXPECT_EQ(same.exit_code, 0) << same.output;
   EXPECT_THAT(same.output, Not(HasSubstr("another world")));
+  // Without a rates.json to tell the world, the rows still tell the model they were written for.
+  const fs::path soysal = dir_ / "soysal";
+  ASSERT_EQ(swarmagg("rates worlds/paper/soysal-5-constant.yaml --set run.duration=200 --quiet "
+                     "--replicates 1 --out " +
+                     soysal.string())
+                .exit_code,
+            0);
+  std::ofstream(soysal / "rates.json") << "{{{ damaged";
+  const Outcome crossed =
+      swarmagg("model worlds/examples/demo.yaml --rates " + (soysal / "rates.csv").string() +
+               " --quiet --out " + (dir_ / "c").string());
+  EXPECT_EQ(crossed.exit_code, 0) << crossed.output;
+  EXPECT_THAT(crossed.output, HasSubstr("rates.json beside it cannot be read"));
+  EXPECT_THAT(crossed.output, HasSubstr("its rows were written for the soysal model, this "
+                                        "world's is the bayindir model"));
 }
 
 // A run killed outright leaves hidden temporaries wherever it was writing; --force clears

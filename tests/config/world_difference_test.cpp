@@ -65,8 +65,11 @@ TEST(WorldDifference, GivenPositionsAndUnreadableTextsDiffer) {
       system_differences(world_to_yaml(demo({"robots.count=2"})), placed);
   ASSERT_EQ(differences.size(), 1u);
   EXPECT_EQ(differences[0].rfind("robots.placement: random there, [", 0), 0u) << differences[0];
-  EXPECT_EQ(system_differences("arena: [unclosed", demo()),
-            std::vector<std::string>{"the world text: unreadable"});
+  for (const char* unreadable : {"arena: [unclosed", "", "just text"}) {
+    EXPECT_EQ(system_differences(unreadable, demo()),
+              std::vector<std::string>{"the world text: unreadable"})
+        << unreadable;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "core/errors.hpp"
 #include "model_test_worlds.hpp"
@@ -55,6 +56,43 @@ TEST(MeasuredRates, RatesAboveOneEventPerStepAreRefusedByName) {
   terms = plausible_terms();
   terms.attempt[2] = 19.0;  // 1.9 of its 2 members a step: possible
   EXPECT_NO_THROW(check_measured_terms(world, terms));
+}
+
+TEST(MeasuredRates, AMeasuredStartMustFitTheWorldsAgents) {
+  WorldSpec world = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  world.model.initial_state = InitialState::Measured;
+  MeasuredTerms terms = plausible_terms();
+  terms.initial = {{2, 3.6}, {3, 0.35}};
+  EXPECT_NO_THROW(check_measured_terms(world, terms));
+  const auto refused = [&](const std::map<int, double>& initial, const std::string& what) {
+    MeasuredTerms start = terms;
+    start.initial = initial;
+    try {
+      check_measured_terms(world, start);
+      ADD_FAILURE() << "accepted " << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  refused({{2, 3.6}, {61, 0.1}}, "aggregates of 61 agents in a world of 60");
+  refused({{2, 31.0}}, "hold 62 agents on average, more than the world's 60");
+  // Not the world's start: nothing to check.
+  world.model.initial_state = InitialState::Placement;
+  terms.initial = {{61, 1.0}};
+  EXPECT_NO_THROW(check_measured_terms(world, terms));
+}
+
+TEST(MeasuredRates, SoysalTermsAreNamedAsItsRatesCsvNamesThem) {
+  const WorldSpec world = testing::soysal_world(5, 150.0);
+  MeasuredTerms terms;
+  terms.creation = 10.01;
+  try {
+    check_measured_terms(world, terms);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("measured pairup rate 10.01"), std::string::npos)
+        << e.what();
+  }
 }
 
 // Possible per pair, 0.9 joins per searcher and aggregate in a step are still more joins

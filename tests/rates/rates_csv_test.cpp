@@ -69,6 +69,10 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
       {"return,2,12,20,5,0.3,0.8,,,\n", "column 'rate': expected a fraction from 0 to 1"},
       {"return,2,12,20,0.6,0.3,1.5,,,\n", "column 'ci_high'"},
       {"return,2,30,20,0.6,0.3,0.8,,,\n", "cannot exceed its exposure"},
+      // Events over no exposure; the same term measured twice.
+      {"initial,2,10,0,,,,,,\n", "expected an exposure above 0"},
+      {"creation,,121,400000,0.0003,0.00025,0.00036,bayindir,collision,3e-4\n",
+       "repeats term 'creation' of line 2 with another measurement"},
   };
   for (const auto& [row, column] : damaged) {
     try {
@@ -79,6 +83,27 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
       EXPECT_NE(message.find("swarmagg-damaged-rates.csv:3"), std::string::npos) << message;
       EXPECT_NE(message.find(column), std::string::npos) << message;
     }
+  }
+}
+
+TEST(RatesCsv, ATermIsReadOncePerVariantOnConsecutiveLines) {
+  const std::string header =
+      "term,size,events,exposure,rate,ci_low,ci_high,model,variant,model_rate\n";
+  const std::string initial = "initial,2,35,10,3.5,2.4,4.9,bayindir,original,3.4\n";
+  const std::string again = "initial,2,35,10,3.5,2.4,4.9,bayindir,collision,3.4\n";
+  const std::string other = "growth,2,40,1000,0.04,0.03,0.05,bayindir,original,0.05\n";
+  const std::vector<RateRow> rows =
+      read_rates_csv(write_temp("swarmagg-variants-rates.csv", header + initial + again + other));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].models.size(), 2u);
+  try {
+    read_rates_csv(write_temp("swarmagg-repeat-rates.csv", header + initial + other + again));
+    ADD_FAILURE() << "accepted a term measured twice";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":4: repeats term 'initial' size 2 of line 2 after "
+                                         "other terms"),
+              std::string::npos)
+        << e.what();
   }
 }
 
