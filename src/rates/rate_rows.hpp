@@ -46,6 +46,11 @@ struct RateRow {
 // The `initial` rows' model value is the models' start: `placement_start` when the models
 // start from a sample of placements (run/placement_sample.hpp), else the second-order
 // formula (random placements only).
+// Every term a rates.csv of this version can hold (the `term` column; rates-<term>.png).
+inline constexpr const char* kRateTerms[] = {"creation",    "pairup",  "growth", "join",
+                                             "join_new",    "attempt", "escape", "return",
+                                             "return_time", "initial", "radius", "rim"};
+
 std::vector<RateRow> measured_rate_rows(const WorldSpec& world, const RateTally& tally,
                                         const PlacementSample* placement_start = nullptr);
 

@@ -7,6 +7,7 @@
 
 #include "config/world_difference.hpp"
 #include "core/errors.hpp"
+#include "rates/rate_rows.hpp"
 
 namespace swarmagg {
 namespace {
@@ -35,7 +36,11 @@ void remove_earlier_output(const std::filesystem::path& path, std::vector<std::s
 }
 
 void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::string>& failures) {
-  for (const std::string& term : rate_terms(out / "rates.csv")) {
+  // The terms of the earlier rates.csv, and every term this version writes: a rates.csv that
+  // is gone or damaged would otherwise leave another model's plots beside the new ones.
+  std::vector<std::string> terms = rate_terms(out / "rates.csv");
+  terms.insert(terms.end(), std::begin(kRateTerms), std::end(kRateTerms));
+  for (const std::string& term : terms) {
     for (const char* extension : {".png", ".gp", ".csv"})
       remove_earlier_output(out / ("rates-" + term + extension), failures);
   }

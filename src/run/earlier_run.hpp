@@ -21,8 +21,9 @@ namespace swarmagg {
 // run's outputs are written anyway.
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out);
 
-// Removes the rates-<term> files (.png, .gp, .csv) of the terms the rates.csv in `out` lists,
-// before a `rates` writes its own: a term it does not measure would keep an earlier plot.
+// Removes the rates-<term> files (.png, .gp, .csv) of the terms the rates.csv in `out` lists
+// and of every term this version writes (kRateTerms), before a `rates` writes its own: a term
+// it does not measure would keep an earlier plot.
 void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::string>& failures);
 
 // `command` (model, rates) writes beside a run: refused (InputError, naming the keys that

@@ -222,4 +222,23 @@ TEST_F(OutputPaths, ForceRemovesAKilledRunsTemporariesFromEveryFolderItWrites) {
   EXPECT_TRUE(fs::exists(someone_elses));  // a living process's
 }
 
+// Another model's plots go even when the earlier rates.csv that listed them is gone.
+TEST_F(OutputPaths, RatesLeaveNoEarlierRatePlotBehind) {
+  const fs::path out = dir_ / "rates";
+  fs::create_directories(out);
+  for (const char* file : {"rates-pairup.png", "rates-pairup.gp", "rates-join.csv"})
+    std::ofstream(out / file) << "an earlier Soysal world's";
+  std::ofstream(out / "rates.csv") << "damaged\n";
+  std::ofstream(out / "rates-mine.txt") << "yours";
+  ASSERT_EQ(swarmagg("rates worlds/examples/demo.yaml --set run.duration=20 --replicates 1 "
+                     "--quiet --out " +
+                     out.string())
+                .exit_code,
+            0);
+  for (const char* file : {"rates-pairup.png", "rates-pairup.gp", "rates-join.csv"})
+    EXPECT_FALSE(fs::exists(out / file)) << file;
+  EXPECT_TRUE(fs::exists(out / "rates-mine.txt"));
+  EXPECT_TRUE(fs::exists(out / "rates.csv"));
+}
+
 }  // namespace

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "config/world_loader.hpp"
 #include "models/aggregate_shape.hpp"
@@ -240,6 +242,23 @@ TEST(RateCollector, SamplesTheGeometryOfEveryAggregateAtTheRecordedSteps) {
     }
   }
   EXPECT_GE(small_sizes, 3);
+}
+
+// `rates` clears earlier plots by kRateTerms: every term a run writes must be listed there.
+TEST(RateCollector, EveryTermWrittenIsAKnownRateTerm) {
+  for (const auto& [file, leave] :
+       {std::pair<std::string, std::string>{"full-0.0025.yaml", "controller.p_leave=0.01"},
+        {"soysal-5-constant.yaml", "controller.p0=0.01"}}) {
+    const WorldSpec spec = paper_world(file, {"run.duration=400", "run.replicates=2", leave});
+    const std::vector<RateRow> rows = measured_rate_rows(spec, measure(spec));
+    std::set<std::string> terms;
+    for (const RateRow& row : rows) terms.insert(row.term);
+    EXPECT_GE(terms.size(), 6u) << file;
+    for (const std::string& term : terms) {
+      EXPECT_NE(std::find(std::begin(kRateTerms), std::end(kRateTerms), term), std::end(kRateTerms))
+          << term << " in " << file;
+    }
+  }
 }
 
 }  // namespace
