@@ -122,4 +122,10 @@ std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms
   return {};
 }
 
+const std::map<Partition, double>* start_partitions(const WorldSpec& world,
+                                                    const PlacementSample* sample) {
+  if (!sample || world.model.initial_state != InitialState::Placement) return nullptr;
+  return &sample->partitions;
+}
+
 }  // namespace swarmagg

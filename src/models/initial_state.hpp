@@ -26,10 +26,12 @@
 // exp(-3 (N-1) q)) and every larger component: with (N-1) q = 0.16 (60 agents on 120 x 120)
 // the pairs match the runs' but the triples come out 28 % high, and from (N-1) q of about 0.3
 // the counts are wrong altogether (docs/models.md).
+#include <map>
 #include <vector>
 
 #include "config/world_spec.hpp"
 #include "models/measured_terms.hpp"
+#include "models/partitions.hpp"
 
 namespace swarmagg {
 
@@ -53,7 +55,12 @@ struct PlacementSample {
   std::vector<double> aggregates;   // [m], m = 0..N: mean aggregates of size m
   int placements = 0;               // placements drawn
   double noa_standard_error = 0.0;  // of the mean number of aggregates
+  // The fraction of placements whose first decision left each partition of N (parts
+  // decreasing, free agents as parts of 1), for swarms of at most kSampledPartitionsUpTo
+  // agents: the partition model starts from it exactly.
+  std::map<Partition, double> partitions;
 };
+inline constexpr int kSampledPartitionsUpTo = 30;
 
 // Whether the world's models start from a PlacementSample: `placement`, for a controller that
 // forms aggregates.
@@ -68,5 +75,9 @@ bool starts_from_placement_sample(const WorldSpec& world);
 // positions from all searching.
 std::vector<double> start_aggregates(const WorldSpec& world, const MeasuredTerms* measured,
                                      const PlacementSample* sample);
+
+// The sample's partitions where the world starts from the sample (`placement`), else none.
+const std::map<Partition, double>* start_partitions(const WorldSpec& world,
+                                                    const PlacementSample* sample);
 
 }  // namespace swarmagg

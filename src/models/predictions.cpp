@@ -166,18 +166,19 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
   if (measured) check_measured_terms(world, *measured);
   const std::vector<double> start = start_aggregates(world, measured, sample);
   if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured, start);
+  const std::map<Partition, double>* partitions = start_partitions(world, sample);
+  const auto soysal = [&](const SoysalRates& rates, const std::string& variant) {
+    return soysal_prediction(world, rates, variant, start, partitions);
+  };
   std::vector<VariantPrediction> predictions;
   for (const LeavingVariant variant : {LeavingVariant::Original, LeavingVariant::Peripheral}) {
-    predictions.push_back(soysal_prediction(world, soysal_rates(world, variant),
-                                            leaving_variant_name(variant), start));
+    predictions.push_back(soysal(soysal_rates(world, variant), leaving_variant_name(variant)));
     predictions.back().chosen = variant == world.model.leaving;
   }
   if (knows_returns(world))
-    predictions.push_back(
-        soysal_prediction(world, returns_soysal_rates(world), kReturnsVariant, start));
+    predictions.push_back(soysal(returns_soysal_rates(world), kReturnsVariant));
   if (measured) {
-    predictions.push_back(
-        soysal_prediction(world, measured_soysal_rates(world, *measured), "measured", start));
+    predictions.push_back(soysal(measured_soysal_rates(world, *measured), "measured"));
     const std::vector<TidyValue> notes = measured_term_notes(world, *measured);
     predictions.back().extra.insert(predictions.back().extra.end(), notes.begin(), notes.end());
   }

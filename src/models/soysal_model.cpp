@@ -87,6 +87,19 @@ Eigen::VectorXd first_decision_distribution(const PartitionChain& chain,
   return weights / total;
 }
 
+// The sampled partitions' probabilities, over the chain's states (every partition of N is one).
+Eigen::VectorXd sampled_first_decision_distribution(const PartitionChain& chain,
+                                                    const std::map<Partition, double>& sampled) {
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.states.size()));
+  for (std::size_t i = 0; i < chain.states.size(); ++i) {
+    const auto found = sampled.find(chain.states[i]);
+    if (found != sampled.end()) weights(static_cast<Eigen::Index>(i)) = found->second;
+  }
+  const double total = weights.sum();
+  if (!(total > 0.0)) return Eigen::VectorXd::Unit(weights.size(), chain.all_free);
+  return weights / total;
+}
+
 // by_size[m]: the expected number of aggregates of size m under `distribution`.
 std::vector<double> expected_sizes(const std::vector<Partition>& states,
                                    const Eigen::RowVectorXd& distribution, int agents) {
@@ -123,11 +136,14 @@ std::string leaving_variant_name(LeavingVariant variant) {
 VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant,
                                     const PlacementSample* sample) {
   return soysal_prediction(world, soysal_rates(world, variant), leaving_variant_name(variant),
-                           start_aggregates(world, nullptr, sample));
+                           start_aggregates(world, nullptr, sample),
+                           start_partitions(world, sample));
 }
 
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
-                                    const std::string& variant, const std::vector<double>& start) {
+                                    const std::string& variant, const std::vector<double>& start,
+                                    const std::map<Partition, double>* start_partitions) {
+  const bool sampled = start_partitions && !start_partitions->empty();
   const int agents = world.robots.count;
   if (const long long states = partition_count(agents); states > kLargestPartitionChain) {
     const bool beyond = states == std::numeric_limits<long long>::max();
@@ -146,14 +162,15 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
                                               chain.all_free),
                .start_step = 0,
                .steps = world.steps()};
-  if (start.empty()) {
+  if (start.empty() && !sampled) {
     distributions = transient_distributions(chain.generator, chain.all_free, grid, stationary);
   } else {
     // Step 0 is all free; from step 1 on the chain runs from the first decision's distribution.
     std::vector<std::int64_t> after_first(grid.size());
     for (std::size_t j = 0; j < grid.size(); ++j)
       after_first[j] = std::max<std::int64_t>(0, grid[j] - 1);
-    run.start = first_decision_distribution(chain, start);
+    run.start = sampled ? sampled_first_decision_distribution(chain, *start_partitions)
+                        : first_decision_distribution(chain, start);
     run.start_step = 1;
     distributions = transient_distributions(chain.generator, run.start, after_first, stationary);
     for (std::size_t j = 0; j < grid.size(); ++j) {

@@ -3,9 +3,12 @@
 // partitions at the steps of sparse_grid (from all agents free) and, when agents can leave,
 // the stationary distribution; with their expected NOA, free agents ("searching": the model
 // does not tell GO, APPROACH and LEAVE apart) and largest aggregate.
+#include <map>
+
 #include "config/world_spec.hpp"
 #include "models/initial_state.hpp"
 #include "models/model_series.hpp"
+#include "models/partitions.hpp"
 #include "models/soysal_rates.hpp"
 
 namespace swarmagg {
@@ -21,9 +24,13 @@ inline constexpr int kPartitionReportPoints = 50;
 // models/initial_state.hpp) the distribution at step 1 is that of independent Poisson
 // counts of aggregates of each size with those means (restricted to partitions of N, and
 // renormalized), and the chain runs from there.
+// With `start_partitions` (PlacementSample::partitions: the probability of each partition
+// after the first decision, as sampled) the chain starts from that distribution exactly
+// instead (`start` is then not read).
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
                                     const std::string& variant,
-                                    const std::vector<double>& start = {});
+                                    const std::vector<double>& start = {},
+                                    const std::map<Partition, double>* start_partitions = nullptr);
 // The world's own rates and start (model.initial_state, not measured; `sample` as for
 // start_aggregates).
 VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <map>
 
 #include "core/rng.hpp"
 #include "models/predictions.hpp"
@@ -35,6 +37,17 @@ std::vector<std::int32_t> first_decision(const WorldSpec& world, int index, int 
   return {sizes.begin(), sizes.end()};
 }
 
+// The partition of `agents` that aggregates of these sizes leave: their sizes, decreasing, and
+// a part of 1 for every agent in none.
+Partition partition_of(std::vector<std::int32_t> sizes, int agents) {
+  std::sort(sizes.begin(), sizes.end(), std::greater<>());
+  Partition partition(sizes.begin(), sizes.end());
+  int placed = 0;
+  for (const int size : sizes) placed += size;
+  partition.insert(partition.end(), static_cast<std::size_t>(agents - placed), 1);
+  return partition;
+}
+
 }  // namespace
 
 int placements_to_sample(int agents) {
@@ -52,15 +65,20 @@ PlacementSample sample_placements(const WorldSpec& world, int threads) {
   });
   // Sums of whole counts, taken in placement order: the same for any thread count.
   std::vector<std::uint64_t> totals(static_cast<std::size_t>(world.robots.count) + 1, 0);
+  std::map<Partition, int> partitions;
+  const bool small = world.robots.count <= kSampledPartitionsUpTo;
   double noa_sum = 0.0, noa_square_sum = 0.0;
   for (const std::vector<std::int32_t>& placement : sizes) {
     for (const std::int32_t size : placement) ++totals[static_cast<std::size_t>(size)];
     const auto noa = static_cast<double>(placement.size());
     noa_sum += noa;
     noa_square_sum += noa * noa;
+    if (small) ++partitions[partition_of(placement, world.robots.count)];
   }
   PlacementSample sample;
   sample.placements = count;
+  for (const auto& [partition, times] : partitions)
+    sample.partitions[partition] = static_cast<double>(times) / count;
   sample.aggregates.resize(totals.size(), 0.0);
   for (std::size_t m = 2; m < totals.size(); ++m)
     sample.aggregates[m] = static_cast<double>(totals[m]) / count;

@@ -138,5 +138,51 @@ TEST(PlacementSample, IsTakenOnlyWhereTheModelsStartFromIt) {
   }
 }
 
+WorldSpec paper_world(const std::string& file, const std::vector<std::string>& overrides) {
+  return load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/paper/" + file, overrides);
+}
+
+// Small swarms keep each placement's partition; their mean sizes are the sample's.
+TEST(PlacementSample, SmallSwarmsKeepTheDistributionOfPartitions) {
+  const WorldSpec world =
+      paper_world("soysal-10-constant.yaml", {"arena.width=40", "arena.height=40"});
+  const PlacementSample sample = sample_placements(world, 2);
+  double total = 0.0;
+  std::vector<double> by_size(11, 0.0);
+  for (const auto& [partition, probability] : sample.partitions) {
+    int agents = 0;
+    for (const int part : partition) {
+      agents += part;
+      if (part >= 2) by_size[static_cast<std::size_t>(part)] += probability;
+    }
+    EXPECT_EQ(agents, 10);
+    total += probability;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_GT(sample.partitions.size(), 5u);
+  for (std::size_t m = 2; m < by_size.size(); ++m)
+    EXPECT_NEAR(by_size[m], sample.aggregates[m], 1e-12) << m;
+  EXPECT_TRUE(sample_placements(paper_world("full-0.0005.yaml", {}), 2).partitions.empty());
+}
+
+// A certain pair starts the partition model in 2+1+1+1 for sure; independent Poisson counts
+// of its mean (one pair) would put 0.4 there.
+TEST(PlacementSample, ThePartitionModelStartsFromTheSampledPartitions) {
+  WorldSpec world = paper_world("soysal-5-constant.yaml", {"run.record_every=1", "run.duration=1"});
+  world.robots.placement = {{10, 10, 0}, {13, 10, 0}, {80, 80, 0}, {120, 40, 0}, {40, 120, 0}};
+  const PlacementSample sample = sample_placements(world, 1);
+  ASSERT_EQ(sample.partitions.size(), 1u);
+  EXPECT_EQ(sample.partitions.begin()->first, (Partition{2, 1, 1, 1}));
+  const std::vector<VariantPrediction> predictions = predict(world, nullptr, &sample);
+  ASSERT_FALSE(predictions.empty());
+  for (const VariantPrediction& prediction : predictions) {
+    double at_one = -1.0;
+    for (const TidyValue& value : prediction.extra) {
+      if (value.quantity == "partition:2+1+1+1" && value.step == 1) at_one = value.value;
+    }
+    EXPECT_GT(at_one, 0.999) << prediction.variant;
+  }
+}
+
 }  // namespace
 }  // namespace swarmagg
