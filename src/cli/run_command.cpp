@@ -150,6 +150,13 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
   if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
+  // The run ends by writing this file: a folder in its place would fail it after the run.
+  if (std::error_code error;
+      std::filesystem::exists(out / "world.resolved.yaml", error) &&
+      !std::filesystem::is_regular_file(out / "world.resolved.yaml", error)) {
+    throw InputError((out / "world.resolved.yaml").string() +
+                     " is not a file: remove it, or pass --out DIR");
+  }
   // A killed run's temporaries are garbage (they would only count against the disk the new
   // run needs): gone before it starts, from every folder a run writes into.
   if (options.force) {

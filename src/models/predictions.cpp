@@ -163,6 +163,7 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
                                        const PlacementSample* sample) {
   const ModelFamily model = controller_rules(world).model;
   if (model == ModelFamily::None) return {};
+  check_predictable(world);  // a refused world is refused for what it is, sample or none
   if (measured) check_measured_terms(world, *measured);
   const std::vector<double> start = start_aggregates(world, measured, sample);
   if (model != ModelFamily::Soysal) return bayindir_predictions(world, measured, start);
@@ -187,6 +188,7 @@ std::vector<VariantPrediction> predict(const WorldSpec& world, const MeasuredTer
 
 void check_predictable(const WorldSpec& world) {
   const ModelFamily model = controller_rules(world).model;
+  if (model == ModelFamily::Soysal) check_partition_chain_size(world);
   if (model != ModelFamily::Bayindir && model != ModelFamily::Encounters) return;
   for (const CreationVariant variant : kCreationVariants) bayindir_rates(world, variant);
 }

@@ -87,7 +87,9 @@ Eigen::VectorXd first_decision_distribution(const PartitionChain& chain,
   return weights / total;
 }
 
-// The sampled partitions' probabilities, over the chain's states (every partition of N is one).
+// The sampled partitions' probabilities, over the chain's states: the partitions reachable
+// from all free. A sampled partition outside them (possible only where some pair-up or join
+// rate is 0) is left out, and the rest renormalised.
 Eigen::VectorXd sampled_first_decision_distribution(const PartitionChain& chain,
                                                     const std::map<Partition, double>& sampled) {
   Eigen::VectorXd weights = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.states.size()));
@@ -140,10 +142,7 @@ VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant varia
                            start_partitions(world, sample));
 }
 
-VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
-                                    const std::string& variant, const std::vector<double>& start,
-                                    const std::map<Partition, double>* start_partitions) {
-  const bool sampled = start_partitions && !start_partitions->empty();
+void check_partition_chain_size(const WorldSpec& world) {
   const int agents = world.robots.count;
   if (const long long states = partition_count(agents); states > kLargestPartitionChain) {
     const bool beyond = states == std::numeric_limits<long long>::max();
@@ -151,6 +150,14 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
                      (beyond ? "more than " : "") + std::to_string(states) + " states; at most " +
                      std::to_string(kLargestPartitionChain) + " (N <= 30) are supported");
   }
+}
+
+VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
+                                    const std::string& variant, const std::vector<double>& start,
+                                    const std::map<Partition, double>* start_partitions) {
+  const bool sampled = start_partitions && !start_partitions->empty();
+  check_partition_chain_size(world);
+  const int agents = world.robots.count;
   const PartitionChain chain = build_partition_chain(rates);
   VariantPrediction prediction{.model = "soysal", .variant = variant};
   const StateObservables values = observables_of(chain.states);

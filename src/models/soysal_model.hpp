@@ -19,6 +19,10 @@ inline constexpr int kLargestPartitionChain = 6000;
 // About this many log-spaced and as many evenly spaced reporting steps.
 inline constexpr int kPartitionReportPoints = 50;
 
+// The first refusal of soysal_prediction, alone: InputError when N has more than
+// kLargestPartitionChain partitions.
+void check_partition_chain_size(const WorldSpec& world);
+
 // Throws InputError when N has more than kLargestPartitionChain partitions. The chain starts
 // from all free (step 0); with `start` (expected aggregates [m] after the first decision,
 // models/initial_state.hpp) the distribution at step 1 is that of independent Poisson

@@ -67,6 +67,22 @@ TEST(Cli, OutputThatCannotBeWrittenIsAFailure) {
   }
 }
 
+// A world the models refuse keeps its run: the run notes why model.csv is missing, and `model`
+// refuses at once, before any placement is drawn.
+TEST(Cli, AWorldTheModelsRefuseStillRunsAndModelRefusesIt) {
+  const std::string world = "worlds/paper/soysal-5-constant.yaml --set robots.count=40 ";
+  const std::string out = ::testing::TempDir() + "swarmagg-refused-model";
+  const Outcome ran = swarmagg::testing::run_swarmagg(
+      "run " + world + "--set run.duration=1 --replicates 1 --no-plots --force --out " + out);
+  EXPECT_EQ(ran.exit_code, 0) << ran.output;
+  EXPECT_THAT(ran.output, HasSubstr("note: no model.csv: model: the partition model of 40 agents"));
+  const Outcome model =
+      swarmagg::testing::run_swarmagg("model " + world + "--out " + out + "-model");
+  EXPECT_EQ(model.exit_code, 2) << model.output;
+  EXPECT_THAT(model.output, HasSubstr("the partition model of 40 agents"));
+  std::filesystem::remove_all(out);
+}
+
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"run /nonexistent.yaml", "/nonexistent.yaml"},
