@@ -24,8 +24,10 @@ std::set<std::string> earlier_variant_files(const std::filesystem::path& out) {
     if (model_end == std::string::npos) continue;
     const std::size_t variant_end = line.find(',', model_end + 1);
     if (variant_end == std::string::npos) continue;
-    files.insert(line.substr(0, model_end) + "-" +
-                 line.substr(model_end + 1, variant_end - model_end - 1) + ".csv");
+    const std::string file = line.substr(0, model_end) + "-" +
+                             line.substr(model_end + 1, variant_end - model_end - 1) + ".csv";
+    // A name that is not one file of model-timeseries/ is no variant of ours.
+    if (file.find('/') == std::string::npos && !file.starts_with(".")) files.insert(file);
   }
   return files;
 }
