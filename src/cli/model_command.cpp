@@ -60,7 +60,7 @@ int model_command(const ModelCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
-  refuse_another_worlds_run(out, spec, "model", options.force);
+  refuse_another_worlds_outputs(out, spec, "model", options.force);
   const auto start = std::chrono::steady_clock::now();
   std::optional<MeasuredTerms> measured;
   if (!options.rates.empty()) measured = read_measured_terms(options.rates, spec);
@@ -98,8 +98,9 @@ void add_model_command(CLI::App& app, Action& action) {
                       "Measured terms (rates.csv of `swarmagg rates` or `run --rates`): adds the "
                       "`measured` variants and the measured initial state");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
-  command->add_flag("--force", options->force,
-                    "Write into a folder that holds a run of another world (refused otherwise)");
+  command->add_flag(
+      "--force", options->force,
+      "Write into a folder that holds a run or rates of another world (refused otherwise)");
   command->callback([options, &action] { action = [options] { return model_command(*options); }; });
 }
 

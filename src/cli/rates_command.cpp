@@ -32,7 +32,7 @@ int rates_command(const RatesCommandOptions& options) {
   const std::filesystem::path out =
       options.out.empty() ? default_run_folder(spec) : std::filesystem::path(options.out);
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
-  refuse_another_worlds_run(out, spec, "rates", options.force);
+  refuse_another_worlds_outputs(out, spec, "rates", options.force);
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = options.progress.shown(options.quiet);
@@ -63,8 +63,9 @@ void add_rates_command(CLI::App& app, Action& action) {
       "--out", options->out,
       "Output folder for rates.csv, rates.json and plots (default runs/<world name>)");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
-  command->add_flag("--force", options->force,
-                    "Write into a folder that holds a run of another world (refused otherwise)");
+  command->add_flag(
+      "--force", options->force,
+      "Write into a folder that holds a run or rates of another world (refused otherwise)");
   options->progress.add_to(*command);
   command->callback([options, &action] { action = [options] { return rates_command(*options); }; });
 }

@@ -12,17 +12,14 @@ namespace {
 
 std::string world_doubt(const std::filesystem::path& rates_csv, const WorldSpec& world) {
   const std::filesystem::path json_file = rates_csv.parent_path() / "rates.json";
-  std::ifstream in(json_file);
-  if (!in) return "";
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (json.is_discarded() || !json.is_object()) {
+  const RatesJsonWorld recorded = rates_json_world(json_file);
+  if (recorded.found == RatesJsonWorld::Found::None) return "";
+  if (recorded.found == RatesJsonWorld::Found::Unreadable) {
     return json_file.string() +
            " beside it cannot be read: which world these rates come from "
            "is unknown";
   }
-  if (!json.contains("resolved_world") || !json["resolved_world"].is_string()) return "";
-  const std::vector<std::string> differences =
-      system_differences(json["resolved_world"].get<std::string>(), world);
+  const std::vector<std::string> differences = system_differences(recorded.resolved_world, world);
   if (differences.empty()) return "";
   return "it was measured in another world (" + differences_text(differences) +
          "): the measured variants feed its terms into this world's model";
@@ -45,6 +42,15 @@ std::string model_doubt(const std::vector<RateRow>& rows, const WorldSpec& world
 }
 
 }  // namespace
+
+RatesJsonWorld rates_json_world(const std::filesystem::path& json_file) {
+  std::ifstream in(json_file);
+  if (!in) return {};
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+  if (json.is_discarded() || !json.is_object()) return {RatesJsonWorld::Found::Unreadable, ""};
+  if (!json.contains("resolved_world") || !json["resolved_world"].is_string()) return {};
+  return {RatesJsonWorld::Found::World, json["resolved_world"].get<std::string>()};
+}
 
 std::vector<std::string> rates_origin_doubts(const std::filesystem::path& rates_csv,
                                              const std::vector<RateRow>& rows,

@@ -12,6 +12,15 @@
 
 namespace swarmagg {
 
+// The world a rates.json records (`resolved_world`): none when the file is missing or records
+// none (rates copied without it, an older version's), or the file cannot be read.
+struct RatesJsonWorld {
+  enum class Found { None, Unreadable, World };
+  Found found = Found::None;
+  std::string resolved_world;  // with Found::World
+};
+RatesJsonWorld rates_json_world(const std::filesystem::path& json_file);
+
 // One sentence per reason to doubt that `rows` (read from `rates_csv`) belong to `world`: its
 // sibling rates.json records another world (config/world_difference.hpp) or cannot be read,
 // or the rows were written for the other model (Soysal's pairup/join against Bayindir's

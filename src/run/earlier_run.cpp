@@ -8,6 +8,7 @@
 #include "config/world_difference.hpp"
 #include "core/errors.hpp"
 #include "rates/rate_rows.hpp"
+#include "rates/rates_origin.hpp"
 
 namespace swarmagg {
 namespace {
@@ -25,6 +26,49 @@ std::vector<std::string> rate_terms(const std::filesystem::path& rates_csv) {
       terms.push_back(term);
   }
   return terms;
+}
+
+std::string pass_out_or_force() {
+  return " Pass --out DIR, or --force to write there anyway";
+}
+
+void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
+                               const std::string& command) {
+  const std::filesystem::path resolved = out / "world.resolved.yaml";
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(resolved, error)) {
+    throw InputError(resolved.string() + " is not a file: `" + command +
+                     "` cannot tell whose folder this is." + pass_out_or_force());
+  }
+  std::ifstream in(resolved);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::string> differences = system_differences(text, spec);
+  if (differences.empty()) return;
+  throw InputError(out.string() + "/ holds a run of another world (" +
+                   differences_text(differences) + "): `" + command +
+                   "` would write this world's outputs beside that run, whose plots would draw "
+                   "them as its own." +
+                   pass_out_or_force());
+}
+
+// A folder `rates` wrote (no run in it) records its world in rates.json: another world's
+// rates would be replaced by `rates`, or sit beside this world's model.
+void refuse_another_worlds_rates(const std::filesystem::path& out, const WorldSpec& spec,
+                                 const std::string& command) {
+  const RatesJsonWorld recorded = rates_json_world(out / "rates.json");
+  if (recorded.found == RatesJsonWorld::Found::None) return;
+  if (recorded.found == RatesJsonWorld::Found::Unreadable) {
+    throw InputError((out / "rates.json").string() + " cannot be read: `" + command +
+                     "` cannot tell whose rates the folder holds." + pass_out_or_force());
+  }
+  const std::vector<std::string> differences = system_differences(recorded.resolved_world, spec);
+  if (differences.empty()) return;
+  const std::string consequence = command == "rates"
+                                      ? "` would replace them with this world's"
+                                      : "` would write this world's outputs beside them";
+  throw InputError(out.string() + "/ holds rates of another world (" +
+                   differences_text(differences) + "): `" + command + consequence + "." +
+                   pass_out_or_force());
 }
 
 }  // namespace
@@ -46,25 +90,14 @@ void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::stri
   }
 }
 
-void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
-                               const std::string& command, bool force) {
+void refuse_another_worlds_outputs(const std::filesystem::path& out, const WorldSpec& spec,
+                                   const std::string& command, bool force) {
+  if (force) return;
   const std::filesystem::path resolved = out / "world.resolved.yaml";
   std::error_code error;
-  if (force || !std::filesystem::exists(resolved, error)) return;
-  if (!std::filesystem::is_regular_file(resolved, error)) {
-    throw InputError(resolved.string() + " is not a file: `" + command +
-                     "` cannot tell whose folder this is. Pass --out DIR, or --force to write "
-                     "there anyway");
-  }
-  std::ifstream in(resolved);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::vector<std::string> differences = system_differences(text, spec);
-  if (differences.empty()) return;
-  throw InputError(out.string() + "/ holds a run of another world (" +
-                   differences_text(differences) + "): `" + command +
-                   "` would write this world's outputs beside that run, whose plots would draw "
-                   "them as its own. Pass "
-                   "--out DIR, or --force to write there anyway");
+  if (std::filesystem::exists(resolved, error))
+    return refuse_another_worlds_run(out, spec, command);
+  refuse_another_worlds_rates(out, spec, command);
 }
 
 std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {

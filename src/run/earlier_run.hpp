@@ -26,11 +26,13 @@ std::vector<std::string> clear_earlier_run(const std::filesystem::path& out);
 // it does not measure would keep an earlier plot.
 void clear_earlier_rates(const std::filesystem::path& out, std::vector<std::string>& failures);
 
-// `command` (model, rates) writes beside a run: refused (InputError, naming the keys that
-// differ) when `out` holds a run of another system (config/world_difference.hpp) unless
-// `force`: the run's plots would draw the new outputs as if they were its own.
-void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
-                               const std::string& command, bool force);
+// `command` (model, rates) writes into `out`: refused (InputError, naming the keys that
+// differ) unless `force` when `out` holds a run of another system (config/world_difference.hpp),
+// whose plots would draw the new outputs as if they were its own, or rates `rates` measured in
+// another system (their rates.json says which), which `rates` would replace and beside which
+// `model` would write.
+void refuse_another_worlds_outputs(const std::filesystem::path& out, const WorldSpec& spec,
+                                   const std::string& command, bool force);
 
 // Removes `path` (a folder whole); what could not be removed goes to `failures` as
 // "path: reason". The removal every command's --force shares.

@@ -146,6 +146,37 @@ TEST_F(OutputPaths, ModelAndRatesRefuseARunOfAnotherWorldUnlessForced) {
   EXPECT_EQ(forced.exit_code, 0) << forced.output;
 }
 
+// A folder `rates` wrote holds no run, but its rates.json says which world they were measured
+// in: another world's rates are neither replaced nor joined by a model without --force.
+TEST_F(OutputPaths, ModelAndRatesRefuseRatesOfAnotherWorldUnlessForced) {
+  const fs::path out = dir_ / "rates";
+  const std::string world = "worlds/examples/demo.yaml --set run.duration=5 --quiet ";
+  ASSERT_EQ(swarmagg("rates " + world + "--replicates 1 --out " + out.string()).exit_code, 0);
+  const std::string earlier = swarmagg::testing::read_all(out / "rates.csv");
+  for (const std::string command : {"model", "rates"}) {
+    const Outcome refused =
+        swarmagg(command + " " + world + "--set robots.count=10 --out " + out.string());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_THAT(refused.output,
+                HasSubstr("holds rates of another world (robots.count: 60 there, 10 here)"));
+    EXPECT_THAT(refused.output, HasSubstr("--force"));
+  }
+  EXPECT_EQ(swarmagg::testing::read_all(out / "rates.csv"), earlier);
+  EXPECT_FALSE(fs::exists(out / "model.csv"));
+  // The same system measured again is the same world; --force writes over another's.
+  EXPECT_EQ(swarmagg("rates " + world + "--replicates 2 --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(swarmagg("model " + world + "--out " + out.string()).exit_code, 0);
+  const Outcome forced =
+      swarmagg("rates " + world + "--set robots.count=10 --force --out " + out.string());
+  EXPECT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_NE(swarmagg::testing::read_all(out / "rates.csv"), earlier);
+  // A rates.json that cannot be read cannot tell whose rates they are.
+  std::ofstream(out / "rates.json") << "{{{ damaged";
+  const Outcome unreadable = swarmagg("rates " + world + "--out " + out.string());
+  EXPECT_EQ(unreadable.exit_code, 2) << unreadable.output;
+  EXPECT_THAT(unreadable.output, HasSubstr("rates.json cannot be read"));
+}
+
 TEST_F(OutputPaths, AModelLeavesNoVariantOfAnEarlierModelBehind) {
   const fs::path rates = dir_ / "rates";
   const fs::path out = dir_ / "model";
