@@ -32,6 +32,17 @@ std::string pass_out_or_force() {
   return " Pass --out DIR, or --force to write there anyway";
 }
 
+// Refuses when the resolved world text `there` (what `out` holds, `held`) is another system.
+void refuse_another_system(const std::string& there, const WorldSpec& spec,
+                           const std::filesystem::path& out, const std::string& held,
+                           const std::string& command, const std::string& consequence) {
+  const std::vector<std::string> differences = system_differences(there, spec);
+  if (differences.empty()) return;
+  throw InputError(out.string() + "/ holds " + held + " of another world (" +
+                   differences_text(differences) + "): `" + command + consequence + "." +
+                   pass_out_or_force());
+}
+
 void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec& spec,
                                const std::string& command) {
   const std::filesystem::path resolved = out / "world.resolved.yaml";
@@ -42,13 +53,9 @@ void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec
   }
   std::ifstream in(resolved);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::vector<std::string> differences = system_differences(text, spec);
-  if (differences.empty()) return;
-  throw InputError(out.string() + "/ holds a run of another world (" +
-                   differences_text(differences) + "): `" + command +
-                   "` would write this world's outputs beside that run, whose plots would draw "
-                   "them as its own." +
-                   pass_out_or_force());
+  refuse_another_system(text, spec, out, "a run", command,
+                        "` would write this world's outputs beside that run, whose plots would "
+                        "draw them as its own");
 }
 
 // A folder `rates` wrote (no run in it) records its world in rates.json: another world's
@@ -61,14 +68,9 @@ void refuse_another_worlds_rates(const std::filesystem::path& out, const WorldSp
     throw InputError((out / "rates.json").string() + " cannot be read: `" + command +
                      "` cannot tell whose rates the folder holds." + pass_out_or_force());
   }
-  const std::vector<std::string> differences = system_differences(recorded.resolved_world, spec);
-  if (differences.empty()) return;
-  const std::string consequence = command == "rates"
-                                      ? "` would replace them with this world's"
-                                      : "` would write this world's outputs beside them";
-  throw InputError(out.string() + "/ holds rates of another world (" +
-                   differences_text(differences) + "): `" + command + consequence + "." +
-                   pass_out_or_force());
+  refuse_another_system(recorded.resolved_world, spec, out, "rates", command,
+                        command == "rates" ? "` would replace them with this world's"
+                                           : "` would write this world's outputs beside them");
 }
 
 }  // namespace
