@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
@@ -15,6 +16,7 @@
 #include "rates/rates_csv.hpp"
 #include "rates/rates_origin.hpp"
 #include "run/earlier_run.hpp"
+#include "run/interrupt.hpp"
 #include "run/model_outputs.hpp"
 #include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
@@ -27,6 +29,7 @@ struct ModelCommandOptions {
   std::string out;
   std::string rates;
   bool quiet = false;
+  ProgressOption progress;
   bool force = false;
 };
 
@@ -65,11 +68,13 @@ int model_command(const ModelCommandOptions& options) {
   std::optional<MeasuredTerms> measured;
   if (!options.rates.empty()) measured = read_measured_terms(options.rates, spec);
   check_predictable(spec);  // before the placements are drawn (seconds for a large swarm)
+  // Ctrl-C then stops the placements or the variants' walks, and the folder keeps its outputs.
+  install_interrupt_handlers();
   const std::optional<PlacementSample> sample = placement_start(spec, 0);
-  const std::vector<VariantPrediction> predictions =
-      predict(spec, measured ? &*measured : nullptr, sample ? &*sample : nullptr);
+  const std::vector<VariantPrediction> predictions = write_model_outputs(
+      spec, pending_predictions(spec, measured ? &*measured : nullptr, sample ? &*sample : nullptr),
+      out, options.progress.shown(options.quiet));
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  write_model_outputs(spec, predictions, out);
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
   if (measured) std::cerr << "note: " << measured_variant_note(spec, *measured) << "\n";
@@ -98,6 +103,7 @@ void add_model_command(CLI::App& app, Action& action) {
                       "Measured terms (rates.csv of `swarmagg rates` or `run --rates`): adds the "
                       "`measured` variants and the measured initial state");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  options->progress.add_to(*command);
   command->add_flag(
       "--force", options->force,
       "Write into a folder that holds a run or rates of another world (refused otherwise)");

@@ -1,8 +1,9 @@
 #pragma once
-// --progress auto|always|never, shared by the commands that simulate. auto: progress unless
-// --quiet; always: even with --quiet; never: none. On a terminal it is one line rewritten in
-// place, in a log a plain line every 10 % or 30 s (run/progress_line.hpp). The phases after
-// the simulation (models, plots, merging) say what they do on the same stream.
+// --progress auto|always|never, shared by the commands that simulate or compute the models
+// (`model`: run/model_progress.hpp). auto: progress unless --quiet; always: even with
+// --quiet; never: none. On a terminal it is one line rewritten in place, in a log a plain
+// line every 10 % or 30 s (run/progress_line.hpp). The phases after the simulation (models,
+// plots, merging) say what they do on the same stream.
 #include <string>
 
 namespace CLI {

@@ -101,9 +101,10 @@ bool predictable(const WorldSpec& spec) {
 // A world the models cannot describe (say, a partition model of too many agents) still
 // keeps its simulation outputs: the run only notes why model.csv is missing.
 void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
-                       const MeasuredTerms* measured, const PlacementSample* sample) {
+                       const MeasuredTerms* measured, const PlacementSample* sample,
+                       bool show_progress) {
   try {
-    write_model_outputs(spec, predict(spec, measured, sample), out);
+    write_model_outputs(spec, pending_predictions(spec, measured, sample), out, show_progress);
   } catch (const InputError& e) {
     std::cerr << "note: no model.csv: " << e.what() << "\n";
   }
@@ -224,7 +225,8 @@ int run_command(const RunCommandOptions& options) {
   }
   if (!options.no_model) {
     options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
-    write_predictions(spec, out, measured ? &*measured : nullptr, sample);
+    write_predictions(spec, out, measured ? &*measured : nullptr, sample,
+                      options.progress.shown(options.quiet));
     write_model_errors(out);
   }
   if (!options.quiet && options.rates) {

@@ -42,34 +42,45 @@ double advance_expected(const BayindirRates& rates, BayindirState& state) {
   return lowest;
 }
 
+void advance_expected_series(const BayindirRates& rates, BayindirState& state, std::int64_t step,
+                             const std::vector<double>& start) {
+  if (step == 0 && !start.empty() && rates.forms_aggregates) {
+    state = BayindirState::after_first_decision(rates.agents, start);
+    return;
+  }
+  const double lowest = advance_expected(rates, state);
+  const double tolerance = 1e-9 * rates.agents;
+  if (lowest >= -tolerance && state.searching >= -tolerance &&
+      state.searching <= rates.agents + tolerance)
+    return;
+  throw InputError("the expected model left the range of the agents at step " +
+                   std::to_string(step + 1) + " (searching " + std::to_string(state.searching) +
+                   ", the smallest aggregate count " + std::to_string(lowest) +
+                   "): its rates give more events per step than there are agents");
+}
+
+BayindirState walk_expected_series(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid,
+    const std::vector<double>& start,
+    const std::function<void(const BayindirState&, std::int64_t step)>& record,
+    const WalkProgress& progress) {
+  BayindirState state = BayindirState::all_searching(rates.agents);
+  walk_grid(
+      grid, [&](std::int64_t step) { advance_expected_series(rates, state, step, start); },
+      [&](std::int64_t step) { record(state, step); }, progress);
+  return state;
+}
+
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
                                                const std::vector<double>& start,
                                                BayindirState* last) {
-  BayindirState state = BayindirState::all_searching(rates.agents);
   std::vector<ModelRow> rows;
-  walk_grid(
-      grid,
-      [&](std::int64_t step) {
-        if (step == 0 && !start.empty() && rates.forms_aggregates) {
-          state = BayindirState::after_first_decision(rates.agents, start);
-          return;
-        }
-        const double lowest = advance_expected(rates, state);
-        const double tolerance = 1e-9 * rates.agents;
-        if (lowest >= -tolerance && state.searching >= -tolerance &&
-            state.searching <= rates.agents + tolerance)
-          return;
-        throw InputError("the expected model left the range of the agents at step " +
-                         std::to_string(step + 1) + " (searching " +
-                         std::to_string(state.searching) + ", the smallest aggregate count " +
-                         std::to_string(lowest) +
-                         "): its rates give more events per step than there are agents");
-      },
-      [&](std::int64_t step) {
+  const BayindirState final_state =
+      walk_expected_series(rates, grid, start, [&](const BayindirState& state, std::int64_t step) {
         rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
       });
-  if (last) *last = state;
+  if (last) *last = final_state;
   return rows;
 }
 

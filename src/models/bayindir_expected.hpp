@@ -6,10 +6,12 @@
 //   n_m' = n_m + G_{m-1} - G_m + S_{m+1} - S_m.
 // Every event moves agents between y and the n_m, so y + sum m n_m = N is conserved.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "models/bayindir_rates.hpp"
 #include "models/bayindir_state.hpp"
+#include "models/output_grid.hpp"
 
 namespace swarmagg {
 
@@ -17,12 +19,23 @@ namespace swarmagg {
 // more) overshoot, and a count falls below zero.
 double advance_expected(const BayindirRates& rates, BayindirState& state);
 
-// The state at each step of `grid` (increasing, from 0), starting from all searching. With
-// `start` (the aggregates after the first decision, models/initial_state.hpp) the first step
-// forms exactly those instead of the rates' creations. The state at the last step also goes
-// to `last` when given (its size distribution). Throws InputError, naming the step, where a
-// step leaves the range of the agents (a count below zero, or more searchers than agents):
-// the counts would go on to NaN.
+// Step `step` of a series that starts from all searching. With `start` (the aggregates after
+// the first decision, models/initial_state.hpp) step 0 forms exactly those instead of the
+// rates' creations. Throws InputError, naming the step, where it leaves the range of the
+// agents (a count below zero, or more searchers than agents): the counts would go on to NaN.
+void advance_expected_series(const BayindirRates& rates, BayindirState& state, std::int64_t step,
+                             const std::vector<double>& start);
+
+// Hands record(state, step) the state at each step of `grid` (increasing, from 0), stepped
+// by advance_expected_series from all searching; returns the state at the last step.
+BayindirState walk_expected_series(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid,
+    const std::vector<double>& start,
+    const std::function<void(const BayindirState&, std::int64_t step)>& record,
+    const WalkProgress& progress = {});
+
+// The rows of walk_expected_series. The state at the last step also goes to `last` when
+// given (its size distribution).
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
                                                const std::vector<double>& start = {},

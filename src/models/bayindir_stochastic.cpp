@@ -79,29 +79,59 @@ BayindirState draw_first_decision(int agents, const std::vector<double>& start,
 
 namespace {
 
-// Runs the replicates and hands `record` each replicate's state at every grid point.
-template <typename Record>
-void walk_replicates(const BayindirRates& rates, const std::vector<std::int64_t>& grid,
-                     std::uint64_t seed, int replicates, std::uint64_t stream,
-                     const std::vector<double>& start, Record&& record) {
-  for (int replicate = 0; replicate < replicates; ++replicate) {
-    const CounterRng rng = CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
-    BayindirState state = BayindirState::all_searching(rates.agents);
-    walk_grid(
-        grid,
-        [&](std::int64_t step) {
-          UniformStream uniforms(rng, static_cast<std::uint64_t>(step), stream);
-          if (step == 0 && !start.empty() && rates.forms_aggregates) {
-            state = draw_first_decision(rates.agents, start, uniforms);
-          } else {
-            advance_stochastic(rates, state, uniforms);
-          }
-        },
-        [&](std::int64_t step) { record(state, replicate, step); });
+// Step `step` of one replicate, keyed by `rng` (its replicate) and `stream` (its variant).
+void advance_replicate(const BayindirRates& rates, BayindirState& state, const CounterRng& rng,
+                       std::int64_t step, std::uint64_t stream, const std::vector<double>& start) {
+  UniformStream uniforms(rng, static_cast<std::uint64_t>(step), stream);
+  if (step == 0 && !start.empty() && rates.forms_aggregates) {
+    state = draw_first_decision(rates.agents, start, uniforms);
+  } else {
+    advance_stochastic(rates, state, uniforms);
   }
 }
 
+CounterRng replicate_rng(std::uint64_t seed, int replicate) {
+  return CounterRng::for_replicate(seed, static_cast<std::uint64_t>(replicate));
+}
+
 }  // namespace
+
+void walk_stochastic_replicates(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid, std::uint64_t seed,
+    int replicates, std::uint64_t stream, const std::vector<double>& start,
+    const std::function<void(const BayindirState&, int replicate, std::int64_t step)>& record,
+    const WalkProgress& progress) {
+  for (int replicate = 0; replicate < replicates; ++replicate) {
+    const CounterRng rng = replicate_rng(seed, replicate);
+    BayindirState state = BayindirState::all_searching(rates.agents);
+    walk_grid(
+        grid, [&](std::int64_t step) { advance_replicate(rates, state, rng, step, stream, start); },
+        [&](std::int64_t step) { record(state, replicate, step); }, progress);
+  }
+}
+
+void walk_stochastic_side_by_side(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid, std::uint64_t seed,
+    int replicates, std::uint64_t stream, const std::vector<double>& start,
+    const std::function<void(std::span<const BayindirState>, std::int64_t step)>& record,
+    const WalkProgress& progress) {
+  const auto count = static_cast<std::size_t>(std::max(replicates, 0));
+  std::vector<CounterRng> rngs;
+  for (int replicate = 0; replicate < replicates; ++replicate)
+    rngs.push_back(replicate_rng(seed, replicate));
+  std::vector<BayindirState> states(count, BayindirState::all_searching(rates.agents));
+  WalkProgress replicate_steps;
+  if (progress) {
+    replicate_steps = [&](std::int64_t steps) { progress(steps * replicates); };
+  }
+  walk_grid(
+      grid,
+      [&](std::int64_t step) {
+        for (std::size_t k = 0; k < count; ++k)
+          advance_replicate(rates, states[k], rngs[k], step, stream, start);
+      },
+      [&](std::int64_t step) { record(states, step); }, replicate_steps);
+}
 
 std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  const std::vector<std::int64_t>& grid,
@@ -110,26 +140,12 @@ std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  const std::vector<double>& start) {
   std::vector<ModelRow> rows;
   rows.reserve(grid.size() * static_cast<std::size_t>(std::max(replicates, 0)));
-  walk_replicates(
+  walk_stochastic_replicates(
       rates, grid, seed, replicates, stream, start,
       [&](const BayindirState& state, int replicate, std::int64_t step) {
         rows.push_back(to_model_row(state, rates.forms_aggregates, false, replicate, step));
       });
   return rows;
-}
-
-std::vector<double> bayindir_stochastic_noa(const BayindirRates& rates,
-                                            const std::vector<std::int64_t>& grid,
-                                            std::uint64_t seed, int replicates,
-                                            std::uint64_t stream,
-                                            const std::vector<double>& start) {
-  std::vector<double> noa;
-  noa.reserve(grid.size() * static_cast<std::size_t>(std::max(replicates, 0)));
-  walk_replicates(rates, grid, seed, replicates, stream, start,
-                  [&](const BayindirState& state, int, std::int64_t) {
-                    noa.push_back(rates.forms_aggregates ? state.noa() : 0.0);
-                  });
-  return noa;
 }
 
 }  // namespace swarmagg

@@ -10,11 +10,14 @@
 // draw encounters ~ Binomial(y(y-1)/2, C / (y(y-1)/2)). Draws come from the counter-based
 // generator keyed by (run.seed, replicate), so results are reproducible per seed.
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "models/bayindir_rates.hpp"
 #include "models/bayindir_state.hpp"
 #include "models/binomial_draw.hpp"
+#include "models/output_grid.hpp"
 
 namespace swarmagg {
 
@@ -26,21 +29,32 @@ void advance_stochastic(const BayindirRates& rates, BayindirState& state, Unifor
 BayindirState draw_first_decision(int agents, const std::vector<double>& start,
                                   UniformStream& uniforms);
 
-// `replicates` independent runs from all searching; rows ordered by replicate, then step.
-// `stream` separates the draws of different variants of one world. With `start`, the first
-// step draws the aggregates of the first decision (draw_first_decision) instead of creations.
+// `replicates` independent runs from all searching, one after another: record(state,
+// replicate, step) gets each replicate's state at every step of `grid`, replicate by
+// replicate. `stream` separates the draws of different variants of one world. With `start`,
+// the first step draws the aggregates of the first decision (draw_first_decision) instead of
+// creations. `progress` counts the steps of every replicate.
+void walk_stochastic_replicates(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid, std::uint64_t seed,
+    int replicates, std::uint64_t stream, const std::vector<double>& start,
+    const std::function<void(const BayindirState&, int replicate, std::int64_t step)>& record,
+    const WalkProgress& progress = {});
+
+// The same runs side by side: record(states, step) gets every replicate's state at each step
+// of `grid`, in replicate order, for what needs the replicates together (statistics over
+// them). Each replicate and step draws from its own key of the counter-based generator, so
+// the states are those of walk_stochastic_replicates.
+void walk_stochastic_side_by_side(
+    const BayindirRates& rates, const std::vector<std::int64_t>& grid, std::uint64_t seed,
+    int replicates, std::uint64_t stream, const std::vector<double>& start,
+    const std::function<void(std::span<const BayindirState>, std::int64_t step)>& record,
+    const WalkProgress& progress = {});
+
+// The rows of walk_stochastic_replicates, ordered by replicate, then step.
 std::vector<ModelRow> bayindir_stochastic_series(const BayindirRates& rates,
                                                  const std::vector<std::int64_t>& grid,
                                                  std::uint64_t seed, int replicates,
                                                  std::uint64_t stream,
                                                  const std::vector<double>& start = {});
-
-// The NOA alone of the same runs, [replicate * grid.size() + point]: what a noise floor
-// needs, without a full row per point.
-std::vector<double> bayindir_stochastic_noa(const BayindirRates& rates,
-                                            const std::vector<std::int64_t>& grid,
-                                            std::uint64_t seed, int replicates,
-                                            std::uint64_t stream,
-                                            const std::vector<double>& start = {});
 
 }  // namespace swarmagg

@@ -56,9 +56,9 @@ Statistics stochastic_statistics(std::string_view column) {
   return Statistics::None;
 }
 
-void append_replicate_statistics(std::string& out, const VariantPrediction& prediction,
-                                 std::int64_t step, double dt, std::string_view column,
-                                 const std::vector<double>& values) {
+void append_column_statistics(std::string& out, const VariantPrediction& prediction,
+                              std::int64_t step, double dt, std::string_view column,
+                              const std::vector<double>& values) {
   const Statistics statistics = stochastic_statistics(column);
   if (statistics == Statistics::None) return;
   const std::string name(column);
@@ -72,69 +72,80 @@ void append_replicate_statistics(std::string& out, const VariantPrediction& pred
   }
 }
 
-void append_expected_series(std::string& out, const VariantPrediction& prediction, double dt) {
-  for (const ModelRow& row : prediction.series) {
-    for (const ModelColumn& column : kModelColumns) {
-      const auto& value = row.*column.field;
-      if (value && in_expected_rows(column.name)) {
-        append_tidy_row(out, prediction, row.step, dt, column.name, *value);
-      }
-    }
-  }
-}
-
-void append_stochastic_series(std::string& out, const VariantPrediction& prediction, double dt) {
-  std::map<std::int64_t, std::vector<const ModelRow*>> replicates_at;
-  for (const ModelRow& row : prediction.series) replicates_at[row.step].push_back(&row);
-  for (const auto& [step, rows] : replicates_at) {
-    for (const ModelColumn& column : kModelColumns) {
-      std::vector<double> values;
-      for (const ModelRow* row : rows) {
-        if (const auto& value = row->*column.field) values.push_back(*value);
-      }
-      if (!values.empty()) {
-        append_replicate_statistics(out, prediction, step, dt, column.name, values);
-      }
-    }
-  }
-}
-
 }  // namespace
 
-std::string model_csv(const std::vector<VariantPrediction>& predictions, double dt) {
-  std::string out = "model,variant,step,time,quantity,value\n";
-  for (const VariantPrediction& prediction : predictions) {
-    if (prediction.stochastic) {
-      append_stochastic_series(out, prediction, dt);
-    } else {
-      append_expected_series(out, prediction, dt);
-    }
-    for (const TidyValue& value : prediction.extra) {
-      append_tidy_row(out, prediction, value.step, dt, value.quantity, value.value);
+void append_expected_row(std::string& out, const VariantPrediction& variant, const ModelRow& row,
+                         double dt) {
+  for (const ModelColumn& column : kModelColumns) {
+    const auto& value = row.*column.field;
+    if (value && in_expected_rows(column.name)) {
+      append_tidy_row(out, variant, row.step, dt, column.name, *value);
     }
   }
-  return out;
 }
 
-std::string model_timeseries_csv(const VariantPrediction& prediction, double dt) {
+void append_replicate_statistics(std::string& out, const VariantPrediction& variant,
+                                 std::span<const ModelRow* const> rows, double dt) {
+  if (rows.empty()) return;
+  for (const ModelColumn& column : kModelColumns) {
+    std::vector<double> values;
+    for (const ModelRow* row : rows) {
+      if (const auto& value = row->*column.field) values.push_back(*value);
+    }
+    if (!values.empty()) {
+      append_column_statistics(out, variant, rows.front()->step, dt, column.name, values);
+    }
+  }
+}
+
+void append_extra_values(std::string& out, const VariantPrediction& variant, double dt) {
+  for (const TidyValue& value : variant.extra) {
+    append_tidy_row(out, variant, value.step, dt, value.quantity, value.value);
+  }
+}
+
+std::string model_timeseries_header() {
   std::string out = "replicate,step,time";
   for (const ModelColumn& column : kModelColumns) {
     out += ',';
     out += column.name;
   }
   out += '\n';
-  for (const ModelRow& row : prediction.series) {
-    out += std::to_string(row.replicate);
+  return out;
+}
+
+void append_timeseries_row(std::string& out, const ModelRow& row, double dt) {
+  out += std::to_string(row.replicate);
+  out += ',';
+  out += std::to_string(row.step);
+  out += ',';
+  append_time(out, row.step, dt);
+  for (const ModelColumn& column : kModelColumns) {
     out += ',';
-    out += std::to_string(row.step);
-    out += ',';
-    append_time(out, row.step, dt);
-    for (const ModelColumn& column : kModelColumns) {
-      out += ',';
-      if (const auto& value = row.*column.field) append_number(out, *value);
-    }
-    out += '\n';
+    if (const auto& value = row.*column.field) append_number(out, *value);
   }
+  out += '\n';
+}
+
+std::string model_csv(const std::vector<VariantPrediction>& predictions, double dt) {
+  std::string out = kModelCsvHeader;
+  for (const VariantPrediction& prediction : predictions) {
+    if (prediction.stochastic) {
+      std::map<std::int64_t, std::vector<const ModelRow*>> replicates_at;
+      for (const ModelRow& row : prediction.series) replicates_at[row.step].push_back(&row);
+      for (const auto& [step, rows] : replicates_at)
+        append_replicate_statistics(out, prediction, rows, dt);
+    } else {
+      for (const ModelRow& row : prediction.series) append_expected_row(out, prediction, row, dt);
+    }
+    append_extra_values(out, prediction, dt);
+  }
+  return out;
+}
+
+std::string model_timeseries_csv(const VariantPrediction& prediction, double dt) {
+  std::string out = model_timeseries_header();
+  for (const ModelRow& row : prediction.series) append_timeseries_row(out, row, dt);
   return out;
 }
 

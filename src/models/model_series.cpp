@@ -2,11 +2,11 @@
 
 namespace swarmagg {
 
-void add_size_distribution(VariantPrediction& prediction, std::int64_t step,
+void add_size_distribution(std::vector<TidyValue>& extra, std::int64_t step,
                            const std::vector<double>& by_size) {
   for (std::size_t m = 2; m < by_size.size(); ++m) {
     if (by_size[m] < kNegligibleAggregates) continue;
-    prediction.extra.push_back({kAggregatesOfSize + std::to_string(m), step, by_size[m]});
+    extra.push_back({kAggregatesOfSize + std::to_string(m), step, by_size[m]});
   }
 }
 

@@ -60,9 +60,9 @@ struct VariantPrediction {
   std::vector<TidyValue> extra = {};
 };
 
-// Appends the "aggregates:<m>" values at `step`; by_size[m] is the expected number of
-// aggregates of size m (indices 0 and 1 ignored).
-void add_size_distribution(VariantPrediction& prediction, std::int64_t step,
+// Appends the "aggregates:<m>" values at `step` to a variant's `extra`; by_size[m] is the
+// expected number of aggregates of size m (indices 0 and 1 ignored).
+void add_size_distribution(std::vector<TidyValue>& extra, std::int64_t step,
                            const std::vector<double>& by_size);
 
 }  // namespace swarmagg

@@ -1,8 +1,10 @@
 #include "models/noise_floor.hpp"
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
+#include "models/bayindir_expected.hpp"
 #include "models/bayindir_stochastic.hpp"
 #include "models/binomial_draw.hpp"
 
@@ -85,27 +87,32 @@ double partition_noise_floor(const PartitionChain& chain, const ChainRun& run,
 }
 
 double noa_noise_floor(const BayindirRates& rates, const std::vector<std::int64_t>& grid,
-                       const std::vector<double>& start, const std::vector<double>& expected_noa,
-                       int replicates, std::uint64_t seed, std::uint64_t stream, int batches) {
+                       const std::vector<double>& start, int replicates, std::uint64_t seed,
+                       std::uint64_t stream, int batches, const WalkProgress& progress) {
   if (replicates < 1 || batches < 1) throw std::invalid_argument("noise floor: no replicates");
-  const std::vector<double> noa =
-      bayindir_stochastic_noa(rates, grid, seed, replicates * batches, stream, start);
-  const std::size_t points = grid.size();
+  const auto noa = [&](const BayindirState& state) {
+    return rates.forms_aggregates ? state.noa() : 0.0;
+  };
+  BayindirState expected = BayindirState::all_searching(rates.agents);
+  std::int64_t expected_step = 0;
+  std::vector<double> squares(static_cast<std::size_t>(batches), 0.0);
+  walk_stochastic_side_by_side(
+      rates, grid, seed, replicates * batches, stream, start,
+      [&](std::span<const BayindirState> states, std::int64_t step) {
+        for (; expected_step < step; ++expected_step)
+          advance_expected_series(rates, expected, expected_step, start);
+        for (int batch = 0; batch < batches; ++batch) {
+          double mean = 0.0;
+          for (int k = 0; k < replicates; ++k)
+            mean += noa(states[replicate_index(batch, replicates, k)]);
+          const double difference = mean / replicates - noa(expected);
+          squares[static_cast<std::size_t>(batch)] += difference * difference;
+        }
+      },
+      progress);
   double sum = 0.0;
-  for (int batch = 0; batch < batches; ++batch) {
-    double squares = 0.0;
-    for (std::size_t j = 0; j < points; ++j) {
-      double mean = 0.0;
-      for (int k = 0; k < replicates; ++k) {
-        const std::size_t row =
-            static_cast<std::size_t>(replicate_index(batch, replicates, k)) * points + j;
-        mean += noa[row];
-      }
-      const double difference = mean / replicates - expected_noa[j];
-      squares += difference * difference;
-    }
-    sum += std::sqrt(squares / static_cast<double>(points));
-  }
+  for (const double batch_squares : squares)
+    sum += std::sqrt(batch_squares / static_cast<double>(grid.size()));
   return sum / batches;
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "models/bayindir_rates.hpp"
+#include "models/output_grid.hpp"
 #include "models/partition_chain.hpp"
 
 namespace swarmagg {
@@ -44,10 +45,12 @@ double partition_noise_floor(const PartitionChain& chain, const ChainRun& run,
                              const Eigen::VectorXd& run_average, int replicates, std::uint64_t seed,
                              std::uint64_t stream, int batches = kNoiseFloorBatches);
 
-// `expected_noa`: the expected series' NOA at each step of `grid`.
+// Against the expected series from `start` (models/bayindir_expected.hpp), which runs beside
+// the batches' replicates, so that no series is held. `progress` counts the replicates'
+// steps.
 double noa_noise_floor(const BayindirRates& rates, const std::vector<std::int64_t>& grid,
-                       const std::vector<double>& start, const std::vector<double>& expected_noa,
-                       int replicates, std::uint64_t seed, std::uint64_t stream,
-                       int batches = kNoiseFloorBatches);
+                       const std::vector<double>& start, int replicates, std::uint64_t seed,
+                       std::uint64_t stream, int batches = kNoiseFloorBatches,
+                       const WalkProgress& progress = {});
 
 }  // namespace swarmagg

@@ -13,6 +13,7 @@
 #include "models/initial_state.hpp"
 #include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
+#include "models/pending_variant.hpp"
 
 namespace swarmagg {
 
@@ -23,6 +24,15 @@ namespace swarmagg {
 // must be given when starts_from_placement_sample(world)). With
 // `measured` terms (docs/models.md) the `measured` variants are added too (bayindir `measured` and
 // `measured-stochastic`, soysal `measured`; models/measured_rates.hpp).
+// None is computed yet: each is walked while its outputs are written (run/model_outputs.hpp),
+// so a long run's rows are never all held. Each holds what it needs (rates, start, grid):
+// `measured` and `sample` may go.
+std::vector<PendingVariant> pending_predictions(const WorldSpec& world,
+                                                const MeasuredTerms* measured = nullptr,
+                                                const PlacementSample* sample = nullptr);
+
+// The same variants computed, each with every row held (for callers that want the rows: the
+// live view, the Python module's model.csv text, tests).
 std::vector<VariantPrediction> predict(const WorldSpec& world,
                                        const MeasuredTerms* measured = nullptr,
                                        const PlacementSample* sample = nullptr);

@@ -196,7 +196,7 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
     }
   }
   add_size_distribution(
-      prediction, grid.back(),
+      prediction.extra, grid.back(),
       expected_sizes(chain.states, distributions.row(distributions.rows() - 1), agents));
   if (stationary) add_stationary(chain, values, *stationary, prediction);
   prediction.extra.push_back(

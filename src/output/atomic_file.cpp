@@ -57,20 +57,41 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
   rename_or_discard(temporary, target);
 }
 
-void write_file_atomic(const std::filesystem::path& target, std::string_view content) {
-  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-  const auto temporary = temporary_beside(target);
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) fail("cannot write", target);
-  const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
-  const bool flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
-  const int write_error = errno;
-  if (std::fclose(file) != 0 || !written || !flushed) {
-    const int error = written && flushed ? errno : write_error;
-    discard_temporary(temporary);
-    fail("cannot write", target, error);
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path target) : target_(std::move(target)) {
+  if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
+  temporary_ = temporary_beside(target_);
+  file_ = std::fopen(temporary_.c_str(), "wb");
+  if (file_ == nullptr) fail("cannot write", target_);
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  discard_temporary(temporary_);
+}
+
+void AtomicFileWriter::write(std::string_view piece) {
+  if (std::fwrite(piece.data(), 1, piece.size(), file_) != piece.size())
+    fail("cannot write", target_);
+}
+
+void AtomicFileWriter::commit() {
+  const bool flushed = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  const int flush_error = errno;
+  const bool closed = std::fclose(file_) == 0;
+  const int close_error = errno;
+  file_ = nullptr;
+  if (!flushed || !closed) {
+    discard_temporary(temporary_);
+    fail("cannot write", target_, flushed ? close_error : flush_error);
   }
-  rename_or_discard(temporary, target);
+  rename_or_discard(temporary_, target_);
+}
+
+void write_file_atomic(const std::filesystem::path& target, std::string_view content) {
+  AtomicFileWriter file(target);
+  file.write(content);
+  file.commit();
 }
 
 namespace {

@@ -1,12 +1,36 @@
 #pragma once
 // Outputs are written to a temporary file beside the target and renamed over it, so an
 // interrupted run leaves either the previous file or the complete new one, never half.
+#include <cstdio>
 #include <filesystem>
 #include <string_view>
 
 namespace swarmagg {
 
 void write_file_atomic(const std::filesystem::path& target, std::string_view content);
+
+// The same promise for a text written piece by piece, too large to hold whole (a long
+// model's CSV files reach gigabytes): the pieces go to the temporary, and commit() syncs it
+// and renames it over the target. A writer destroyed before commit() (an error, Ctrl-C)
+// removes its temporary, so the target keeps its earlier content.
+class AtomicFileWriter {
+ public:
+  // Creates the target's folder when missing, and the temporary.
+  explicit AtomicFileWriter(std::filesystem::path target);
+  ~AtomicFileWriter();
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  // Throws std::system_error naming the target when the disk refuses the piece.
+  void write(std::string_view piece);
+  // Once, when the content is complete: it becomes the target.
+  void commit();
+
+ private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  std::FILE* file_ = nullptr;  // until committed
+};
 
 // For outputs that a library writes itself (HDF5): a fresh hidden temporary path beside
 // `target` (".<name>.<pid>.<n>.tmp"), and, once the file there is complete and closed,

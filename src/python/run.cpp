@@ -93,7 +93,7 @@ class RunOutput {
     write_run_folder(*spec_, run_.result, folder.path());
     try {
       const std::optional<MeasuredTerms> terms = run_terms();
-      write_model_outputs(*spec_, predict(*spec_, terms ? &*terms : nullptr, start()),
+      write_model_outputs(*spec_, pending_predictions(*spec_, terms ? &*terms : nullptr, start()),
                           folder.path());
     } catch (const InputError&) {
       return nlohmann::json::array();  // a world without a model: the CLI writes none either

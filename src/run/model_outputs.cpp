@@ -1,12 +1,15 @@
 #include "run/model_outputs.hpp"
 
 #include <fstream>
+#include <memory>
 #include <set>
+#include <span>
 #include <string>
 #include <system_error>
 
 #include "models/model_csv.hpp"
 #include "output/atomic_file.hpp"
+#include "run/model_progress.hpp"
 
 namespace swarmagg {
 
@@ -32,23 +35,102 @@ std::set<std::string> earlier_variant_files(const std::filesystem::path& out) {
   return files;
 }
 
+std::string variant_file(const VariantPrediction& variant) {
+  return variant.model + "-" + variant.variant + ".csv";
+}
+
+// Keeps `row` when no later step was kept: the rows of the last step remain, one per
+// replicate.
+void keep_if_latest(std::vector<ModelRow>& kept, const ModelRow& row) {
+  if (!kept.empty() && row.step < kept.front().step) return;
+  if (!kept.empty() && row.step > kept.front().step) kept.clear();
+  kept.push_back(row);
+}
+
+// One variant's lines of model.csv and its model-timeseries file, each written as its rows
+// are walked: a stochastic variant's statistics need the replicates side by side, its file
+// lists them one after another, so it is walked twice.
+VariantPrediction write_variant(const PendingVariant& variant, AtomicFileWriter& model_csv,
+                                AtomicFileWriter& series, double dt, const WalkProgress& progress) {
+  VariantPrediction written = variant.header;
+  std::string text;
+  const auto write_text = [&](AtomicFileWriter& file) {
+    file.write(text);
+    text.clear();
+  };
+  if (written.stochastic) {
+    std::vector<const ModelRow*> rows_at_step;
+    variant.walk_steps(
+        [&](std::span<const ModelRow> rows) {
+          rows_at_step.clear();
+          for (const ModelRow& row : rows) rows_at_step.push_back(&row);
+          append_replicate_statistics(text, written, rows_at_step, dt);
+          write_text(model_csv);
+        },
+        progress);
+  }
+  series.write(model_timeseries_header());
+  written.extra = variant.walk_rows(
+      [&](const ModelRow& row) {
+        if (!written.stochastic) {
+          append_expected_row(text, written, row, dt);
+          write_text(model_csv);
+        }
+        append_timeseries_row(text, row, dt);
+        write_text(series);
+        keep_if_latest(written.series, row);
+      },
+      progress);
+  append_extra_values(text, written, dt);
+  write_text(model_csv);
+  return written;
+}
+
 }  // namespace
 
-void write_model_outputs(const WorldSpec& spec, const std::vector<VariantPrediction>& predictions,
-                         const std::filesystem::path& out) {
+std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
+                                                   const std::vector<PendingVariant>& variants,
+                                                   const std::filesystem::path& out,
+                                                   bool show_progress) {
   const std::filesystem::path series = out / "model-timeseries";
+  std::error_code missing;
+  const bool series_folder_existed = std::filesystem::is_directory(series, missing);
   std::filesystem::create_directories(series);
   std::set<std::string> stale = earlier_variant_files(out);
-  write_file_atomic(out / "model.csv", model_csv(predictions, spec.engine.dt));
-  for (const VariantPrediction& prediction : predictions) {
-    const std::string file = prediction.model + "-" + prediction.variant + ".csv";
-    write_file_atomic(series / file, model_timeseries_csv(prediction, spec.engine.dt));
-    stale.erase(file);
+  double work = 0.0;
+  for (const PendingVariant& variant : variants)
+    work += variant.walk_rows_work + variant.walk_steps_work;
+  ModelProgress progress(spec.name, static_cast<int>(variants.size()), work, show_progress);
+  const WalkProgress walk_progress = [&](std::int64_t steps) { progress.add_work(steps); };
+  std::vector<VariantPrediction> written;
+  try {
+    AtomicFileWriter model_csv(out / "model.csv");
+    model_csv.write(kModelCsvHeader);
+    // Committed together once all are complete, model.csv first.
+    std::vector<std::unique_ptr<AtomicFileWriter>> series_files;
+    for (const PendingVariant& variant : variants) {
+      const std::string file = variant_file(variant.header);
+      series_files.push_back(std::make_unique<AtomicFileWriter>(series / file));
+      written.push_back(
+          write_variant(variant, model_csv, *series_files.back(), spec.engine.dt, walk_progress));
+      progress.finished_variant();
+      stale.erase(file);
+    }
+    model_csv.commit();
+    for (const auto& file : series_files) file->commit();
+  } catch (...) {
+    progress.finish();
+    // The writers have removed their temporaries; a folder made for them goes too (when empty).
+    std::error_code ignored;
+    if (!series_folder_existed) std::filesystem::remove(series, ignored);
+    throw;
   }
+  progress.finish();
   // A variant the earlier model of the folder had (`measured`, say) would stay beside these;
   // files of yours in model-timeseries/ stay.
   std::error_code error;
   for (const std::string& file : stale) std::filesystem::remove(series / file, error);
+  return written;
 }
 
 }  // namespace swarmagg

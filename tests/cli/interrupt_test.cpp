@@ -259,8 +259,8 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStep) {
   fs::remove_all(out);
 }
 
-// Ctrl-C after the simulation, while the models are computed (which do not look for it):
-// no later phase starts, and the run exits as interrupted, not as a success.
+// Ctrl-C after the simulation, while the models are computed: no later phase starts, and the
+// run exits as interrupted, not as a success.
 TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
   const fs::path out = fresh_dir("model-phase");
   Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
@@ -274,6 +274,23 @@ TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
   EXPECT_THAT(o.output, ::testing::Not(HasSubstr("drawing the plots")));
   EXPECT_TRUE(fs::exists(out / "world.resolved.yaml")) << "the simulation's outputs stay";
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  fs::remove_all(out);
+}
+
+// `swarmagg model` of a long run (gigabytes of rows, written while they are computed) stops at
+// Ctrl-C: the folder keeps the model outputs it had, and no temporary remains.
+TEST(Interrupt, SigintStopsALongModelAndKeepsTheEarlierModelOutputs) {
+  const fs::path out = fresh_dir("model");
+  Child earlier({SWARMAGG_BINARY, "model", kLongWorld, "--set", "run.duration=20", "--quiet",
+                 "--out", out.string()});
+  ASSERT_EQ(earlier.wait(std::chrono::seconds(120)).exit_code, 0);
+  const auto before = files_below(out);
+  ASSERT_TRUE(before.contains("model.csv"));
+  expect_interrupted(interrupt({SWARMAGG_BINARY, "model", kLongWorld, "--set",
+                                "run.duration=1000000", "--quiet", "--out", out.string()},
+                               SIGINT, std::chrono::milliseconds(500)),
+                     130);
+  EXPECT_EQ(files_below(out), before) << "the earlier model outputs changed";
   fs::remove_all(out);
 }
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <span>
 
 #include "model_test_worlds.hpp"
 #include "models/bayindir_expected.hpp"
@@ -54,16 +55,30 @@ TEST(BayindirStochastic, KeptSizeBoundNeverHidesAnAggregate) {
   EXPECT_GT(largest_seen, 5.0);  // aggregates grew, so the bound moved
 }
 
-TEST(BayindirStochastic, NoaAloneIsTheSeriesNoa) {
+// Statistics over the replicates walk them side by side; the timeseries lists them one after
+// another. Both must see the same states, from a start or from all searching.
+TEST(BayindirStochastic, SideBySideReplicatesAreTheOnesRunOneByOne) {
   const BayindirRates rates =
       bayindir_rates(testing::bayindir_world(60, 2.5e-3, true, true), CreationVariant::Collision);
   const std::vector<std::int64_t> grid{0, 10, 500, 3000};
   const std::vector<double> start{0.0, 0.0, 3.0, 1.0};
   for (const auto& first_decision : {std::vector<double>{}, start}) {
     const auto rows = bayindir_stochastic_series(rates, grid, 9, 4, 2, first_decision);
-    const auto noa = bayindir_stochastic_noa(rates, grid, 9, 4, 2, first_decision);
-    ASSERT_EQ(noa.size(), rows.size());
-    for (std::size_t k = 0; k < rows.size(); ++k) EXPECT_EQ(noa[k], *rows[k].noa) << k;
+    std::size_t point = 0;
+    walk_stochastic_side_by_side(
+        rates, grid, 9, 4, 2, first_decision,
+        [&](std::span<const BayindirState> states, std::int64_t step) {
+          ASSERT_EQ(states.size(), 4u);
+          for (std::size_t k = 0; k < states.size(); ++k) {
+            const ModelRow& row = rows[k * grid.size() + point];
+            ASSERT_EQ(row.step, step);
+            EXPECT_EQ(states[k].noa(), *row.noa) << "replicate " << k << ", step " << step;
+            EXPECT_EQ(states[k].searching, *row.searching) << "replicate " << k;
+            EXPECT_EQ(states[k].totals.growths, *row.growths) << "replicate " << k;
+          }
+          ++point;
+        });
+    EXPECT_EQ(point, grid.size());
   }
 }
 

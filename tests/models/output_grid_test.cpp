@@ -44,5 +44,16 @@ TEST(OutputGrid, WalkGridAdvancesToEachRecordedStep) {
   EXPECT_EQ(advanced, (std::vector<std::int64_t>{0, 1, 2, 3, 4}));  // 5 steps in all
 }
 
+// Progress comes in batches (its hook checks for Ctrl-C, too costly for every step) and adds
+// up to every step taken.
+TEST(OutputGrid, WalkGridReportsEveryStepInBatches) {
+  std::vector<std::int64_t> reports;
+  walk_grid(
+      std::vector<std::int64_t>{0, 5000, 10000}, [](std::int64_t) {}, [](std::int64_t) {},
+      [&](std::int64_t steps) { reports.push_back(steps); });
+  EXPECT_EQ(reports, (std::vector<std::int64_t>{kWalkProgressBatch, kWalkProgressBatch,
+                                                10000 - 2 * kWalkProgressBatch}));
+}
+
 }  // namespace
 }  // namespace swarmagg

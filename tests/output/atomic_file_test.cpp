@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -27,6 +28,31 @@ TEST(AtomicFile, WritesTheWholeContent) {
   write_file_atomic(folder.path() / "a.csv", "x\n");
   EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
   EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 2u);
+}
+
+// Written in pieces: the target appears whole at commit(); a writer given up on (an error,
+// Ctrl-C) leaves the earlier target and no temporary.
+TEST(AtomicFile, AWriterInPiecesReplacesTheTargetOnlyWhenCommitted) {
+  const ScratchFolder folder("atomic-file");
+  write_file_atomic(folder.path() / "a.csv", "old\n");
+  {
+    AtomicFileWriter abandoned(folder.path() / "a.csv");
+    abandoned.write("x,y\n");
+  }
+  EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
+  EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 4u);
+  AtomicFileWriter writer(folder.path() / "a.csv");
+  writer.write("x,y\n");
+  writer.write("1,2\n");
+  EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 4u) << "replaced before commit";
+  writer.commit();
+  EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
+  EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 8u);
+  std::ifstream in(folder.path() / "a.csv");
+  std::string first, second;
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_EQ(first + ";" + second, "x,y;1,2");
 }
 
 // A target the system will not replace (a folder of that name) is an error naming it, with

@@ -30,7 +30,8 @@ std::filesystem::path run_into(const std::string& world, const std::vector<std::
   const WorldSpec spec =
       load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/" + world, overrides);
   write_run_folder(spec, run_world(spec, RunOptions{}), out, overrides);
-  write_model_outputs(spec, predict_world(spec, nullptr, 1), out);
+  const std::optional<PlacementSample> sample = placement_start(spec, 1);
+  write_model_outputs(spec, pending_predictions(spec, nullptr, sample ? &*sample : nullptr), out);
   return out;
 }
 
