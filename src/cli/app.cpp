@@ -112,8 +112,8 @@ int main(int argc, char** argv) {
   }
   try {
     const int code = action ? action() : 0;
-    // A signal that came during work that does not look for one (the models, gnuplot) still
-    // ends the command as interrupted, not as a success.
+    // A signal that came during work that does not look for one (gnuplot, the last writes)
+    // still ends the command as interrupted, not as a success.
     throw_if_interrupted();
     return standard_output_checked(code);
   } catch (const Interrupted& e) {

@@ -73,14 +73,11 @@ BayindirState walk_expected_series(
 
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
-                                               const std::vector<double>& start,
-                                               BayindirState* last) {
+                                               const std::vector<double>& start) {
   std::vector<ModelRow> rows;
-  const BayindirState final_state =
-      walk_expected_series(rates, grid, start, [&](const BayindirState& state, std::int64_t step) {
-        rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
-      });
-  if (last) *last = final_state;
+  walk_expected_series(rates, grid, start, [&](const BayindirState& state, std::int64_t step) {
+    rows.push_back(to_model_row(state, rates.forms_aggregates, true, 0, step));
+  });
   return rows;
 }
 

@@ -34,11 +34,9 @@ BayindirState walk_expected_series(
     const std::function<void(const BayindirState&, std::int64_t step)>& record,
     const WalkProgress& progress = {});
 
-// The rows of walk_expected_series. The state at the last step also goes to `last` when
-// given (its size distribution).
+// The rows of walk_expected_series.
 std::vector<ModelRow> bayindir_expected_series(const BayindirRates& rates,
                                                const std::vector<std::int64_t>& grid,
-                                               const std::vector<double>& start = {},
-                                               BayindirState* last = nullptr);
+                                               const std::vector<double>& start = {});
 
 }  // namespace swarmagg

@@ -65,9 +65,8 @@ AtomicFileWriter::AtomicFileWriter(std::filesystem::path target) : target_(std::
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
-  if (file_ == nullptr) return;
-  std::fclose(file_);
-  discard_temporary(temporary_);
+  if (file_ != nullptr) std::fclose(file_);
+  if (!committed_) discard_temporary(temporary_);
 }
 
 void AtomicFileWriter::write(std::string_view piece) {
@@ -75,16 +74,18 @@ void AtomicFileWriter::write(std::string_view piece) {
     fail("cannot write", target_);
 }
 
-void AtomicFileWriter::commit() {
+void AtomicFileWriter::finish() {
   const bool flushed = std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
   const int flush_error = errno;
   const bool closed = std::fclose(file_) == 0;
   const int close_error = errno;
   file_ = nullptr;
-  if (!flushed || !closed) {
-    discard_temporary(temporary_);
-    fail("cannot write", target_, flushed ? close_error : flush_error);
-  }
+  if (!flushed || !closed) fail("cannot write", target_, flushed ? close_error : flush_error);
+}
+
+void AtomicFileWriter::commit() {
+  if (file_ != nullptr) finish();
+  committed_ = true;  // rename_or_discard removes the temporary itself when it fails
   rename_or_discard(temporary_, target_);
 }
 

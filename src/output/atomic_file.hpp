@@ -23,13 +23,17 @@ class AtomicFileWriter {
 
   // Throws std::system_error naming the target when the disk refuses the piece.
   void write(std::string_view piece);
-  // Once, when the content is complete: it becomes the target.
+  // Once the content is complete: syncs the temporary to disk and closes it. Writers that
+  // land together finish all before the first commits, so that a full disk stops them all.
+  void finish();
+  // Once (after finish(), or doing it): the temporary becomes the target.
   void commit();
 
  private:
   std::filesystem::path target_;
   std::filesystem::path temporary_;
-  std::FILE* file_ = nullptr;  // until committed
+  std::FILE* file_ = nullptr;  // until finished
+  bool committed_ = false;
 };
 
 // For outputs that a library writes itself (HDF5): a fresh hidden temporary path beside

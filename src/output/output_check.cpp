@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/errors.hpp"
+#include "output/made_folders.hpp"
 
 namespace swarmagg {
 namespace {
@@ -35,17 +36,6 @@ std::filesystem::path file_in_the_way(const std::filesystem::path& folder) {
   return {};
 }
 
-// The outermost folder of `folder` that does not exist yet (empty when it exists).
-std::filesystem::path first_missing(const std::filesystem::path& folder) {
-  std::error_code ignored;
-  std::filesystem::path missing;
-  for (std::filesystem::path p = folder; !p.empty() && p != p.parent_path(); p = p.parent_path()) {
-    if (std::filesystem::exists(p, ignored)) break;
-    missing = p;
-  }
-  return missing;
-}
-
 // Why no file can be written in `folder` (created if missing), or "" when one can.
 std::string folder_problem(const std::filesystem::path& folder) {
   if (folder.empty()) return "an empty path";
@@ -55,9 +45,8 @@ std::string folder_problem(const std::filesystem::path& folder) {
   }
   // The folders made for the probe are removed after it: a run refused later (a world the
   // engine rejects) leaves no empty folder, and the writers make them again.
-  const std::filesystem::path made = first_missing(folder);
   std::error_code error;
-  std::filesystem::create_directories(folder, error);
+  const MadeFolders made(folder, error);
   if (error) return "cannot create the folder (" + reason(error.value()) + ")";
   const std::filesystem::path probe =
       folder / (".swarmagg-write-test." + std::to_string(::getpid()));
@@ -65,7 +54,7 @@ std::string folder_problem(const std::filesystem::path& folder) {
   const int open_error = errno;
   if (fd >= 0) ::close(fd);
   std::filesystem::remove(probe, error);
-  if (!made.empty()) std::filesystem::remove_all(made, error);
+  made.remove_if_empty();
   if (fd < 0) return "cannot write in the folder (" + reason(open_error) + ")";
   return "";
 }

@@ -5,10 +5,10 @@
 #include <set>
 #include <span>
 #include <string>
-#include <system_error>
 
 #include "models/model_csv.hpp"
 #include "output/atomic_file.hpp"
+#include "output/made_folders.hpp"
 #include "run/model_progress.hpp"
 
 namespace swarmagg {
@@ -93,9 +93,7 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
                                                    const std::filesystem::path& out,
                                                    bool show_progress) {
   const std::filesystem::path series = out / "model-timeseries";
-  std::error_code missing;
-  const bool series_folder_existed = std::filesystem::is_directory(series, missing);
-  std::filesystem::create_directories(series);
+  const MadeFolders made(series);
   std::set<std::string> stale = earlier_variant_files(out);
   double work = 0.0;
   for (const PendingVariant& variant : variants)
@@ -106,7 +104,6 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
   try {
     AtomicFileWriter model_csv(out / "model.csv");
     model_csv.write(kModelCsvHeader);
-    // Committed together once all are complete, model.csv first.
     std::vector<std::unique_ptr<AtomicFileWriter>> series_files;
     for (const PendingVariant& variant : variants) {
       const std::string file = variant_file(variant.header);
@@ -116,13 +113,16 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
       progress.finished_variant();
       stale.erase(file);
     }
-    model_csv.commit();
+    // All on disk before the first lands, so a full disk fails them all; model.csv, which
+    // lists the variants, lands last.
+    for (const auto& file : series_files) file->finish();
+    model_csv.finish();
     for (const auto& file : series_files) file->commit();
+    model_csv.commit();
   } catch (...) {
     progress.finish();
-    // The writers have removed their temporaries; a folder made for them goes too (when empty).
-    std::error_code ignored;
-    if (!series_folder_existed) std::filesystem::remove(series, ignored);
+    // The writers have removed their temporaries; folders made for them go too (when empty).
+    made.remove_if_empty();
     throw;
   }
   progress.finish();

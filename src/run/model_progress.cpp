@@ -4,8 +4,9 @@
 
 namespace swarmagg {
 
-ModelProgress::ModelProgress(std::string name, int variants, double total_work, bool shown)
-    : next_report_(Clock::now() + kQuietFor) {
+ModelProgress::ModelProgress(std::string name, int variants, double total_work, bool shown,
+                             std::chrono::milliseconds quiet_for)
+    : next_report_(Clock::now() + quiet_for) {
   if (shown) line_.emplace(std::move(name), "variants", variants, total_work);
 }
 

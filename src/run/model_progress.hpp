@@ -15,8 +15,12 @@ namespace swarmagg {
 
 class ModelProgress {
  public:
-  // Not `shown`: Ctrl-C is still checked, nothing is printed.
-  ModelProgress(std::string name, int variants, double total_work, bool shown);
+  static constexpr std::chrono::milliseconds kQuietFor{1000};
+
+  // Not `shown`: Ctrl-C is still checked, nothing is printed. The line appears once
+  // `quiet_for` has passed.
+  ModelProgress(std::string name, int variants, double total_work, bool shown,
+                std::chrono::milliseconds quiet_for = kQuietFor);
 
   // Throws Interrupted when a signal came.
   void add_work(std::int64_t steps);
@@ -27,7 +31,6 @@ class ModelProgress {
 
  private:
   using Clock = std::chrono::steady_clock;
-  static constexpr std::chrono::milliseconds kQuietFor{1000};
   static constexpr std::chrono::milliseconds kReportEvery{250};
 
   std::optional<ProgressLine> line_;  // when shown

@@ -286,10 +286,23 @@ TEST(Interrupt, SigintStopsALongModelAndKeepsTheEarlierModelOutputs) {
   ASSERT_EQ(earlier.wait(std::chrono::seconds(120)).exit_code, 0);
   const auto before = files_below(out);
   ASSERT_TRUE(before.contains("model.csv"));
-  expect_interrupted(interrupt({SWARMAGG_BINARY, "model", kLongWorld, "--set",
-                                "run.duration=1000000", "--quiet", "--out", out.string()},
-                               SIGINT, std::chrono::milliseconds(500)),
-                     130);
+  Child child({SWARMAGG_BINARY, "model", kLongWorld, "--set", "run.duration=1000000", "--quiet",
+               "--out", out.string()});
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  // Once it writes its model.csv temporary it is in the walks, past the placements.
+  const auto writing = [&] {
+    std::error_code gone;  // the directory may change while it is read
+    for (const auto& entry : fs::directory_iterator(out, gone)) {
+      if (entry.path().filename().string().starts_with(".model.csv.")) return true;
+    }
+    return false;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!writing() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(writing()) << "never started writing its model";
+  child.send(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
   EXPECT_EQ(files_below(out), before) << "the earlier model outputs changed";
   fs::remove_all(out);
 }

@@ -65,21 +65,6 @@ TEST_F(Progress, QuietHidesItUnlessAlwaysAndNeverHidesIt) {
   EXPECT_EQ(run("--progress sometimes").exit_code, 2);
 }
 
-// Seconds of model steps (the noise floors' replicates walk 2 * 10^6 steps each): past a
-// second, the variants done and the share of the work show as a run's replicates do.
-TEST_F(Progress, ALongModelInALogSaysHowManyVariantsAreDone) {
-  const Outcome o = swarmagg::testing::run_swarmagg(
-      "model worlds/examples/demo.yaml --set run.duration=2e5 --set run.replicates=1 "
-      "--set run.record_every=10000 --set model.stochastic_replicates=1 "
-      "--set model.initial_state=placement_second_order --out " +
-      dir_.string());
-  ASSERT_EQ(o.exit_code, 0) << o.output;
-  EXPECT_TRUE(std::regex_search(
-      o.output, std::regex(R"((^|\n)demo: 6/6 variants  100\.0% done  elapsed \d+s  eta 0s\n)")))
-      << o.output;
-  EXPECT_THAT(o.output, Not(HasSubstr("\r")));
-}
-
 TEST_F(Progress, ASweepInALogSaysHowManyRunsAreDone) {
   fs::create_directories(dir_);
   std::ofstream(dir_ / "tiny.yaml") << "name: tiny\nbase: " SWARMAGG_SOURCE_DIR

@@ -55,6 +55,21 @@ TEST(AtomicFile, AWriterInPiecesReplacesTheTargetOnlyWhenCommitted) {
   EXPECT_EQ(first + ";" + second, "x,y;1,2");
 }
 
+// Writers landing together finish all, then commit: one given up on after finish() (a later
+// writer failed) still leaves the earlier target and no temporary.
+TEST(AtomicFile, AFinishedWriterNeverCommittedLeavesTheEarlierTarget) {
+  const ScratchFolder folder("atomic-file");
+  write_file_atomic(folder.path() / "a.csv", "old\n");
+  {
+    AtomicFileWriter finished(folder.path() / "a.csv");
+    finished.write("new content\n");
+    finished.finish();
+    EXPECT_EQ(names_in(folder.path()).size(), 2u) << "the finished temporary is gone early";
+  }
+  EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
+  EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 4u);
+}
+
 // A target the system will not replace (a folder of that name) is an error naming it, with
 // its errno, and the temporary written beside it is gone.
 TEST(AtomicFile, AFailedRenameLeavesNoTemporary) {

@@ -15,7 +15,10 @@
 #include <vector>
 
 #include "config/world_loader.hpp"
+#include "core/errors.hpp"
+#include "models/measured_rates.hpp"
 #include "models/model_csv.hpp"
+#include "models/model_test_worlds.hpp"
 #include "models/predictions.hpp"
 #include "output/scratch_folder.hpp"
 #include "run/interrupt.hpp"
@@ -97,6 +100,7 @@ TEST(ModelOutputs, AnInterruptionLeavesTheEarlierOutputsAsTheyWere) {
   const WorldSpec spec = long_world();
   const ScratchFolder out("model-outputs");
   const ScratchFolder fresh("model-outputs");
+  const std::filesystem::path made_for_it = fresh.path() / "new" / "run";
   write_model_outputs(spec, pending_predictions(spec), out.path());
   const std::vector<std::string> before = names_below(out.path());
   const std::string model_csv_before = text_of(out.path() / "model.csv");
@@ -104,11 +108,37 @@ TEST(ModelOutputs, AnInterruptionLeavesTheEarlierOutputsAsTheyWere) {
   longer.run.duration = 4000.0;
   set_interrupt_signal(SIGINT);
   EXPECT_THROW(write_model_outputs(longer, pending_predictions(longer), out.path()), Interrupted);
-  EXPECT_THROW(write_model_outputs(longer, pending_predictions(longer), fresh.path()), Interrupted);
+  EXPECT_THROW(write_model_outputs(longer, pending_predictions(longer), made_for_it), Interrupted);
   set_interrupt_signal(0);
   EXPECT_EQ(names_below(out.path()), before);
   EXPECT_EQ(text_of(out.path() / "model.csv"), model_csv_before);
-  EXPECT_TRUE(std::filesystem::is_empty(fresh.path())) << "left behind in a fresh folder";
+  EXPECT_EQ(names_below(fresh.path()), std::vector<std::string>{})
+      << "left behind in a folder made for the outputs";
+}
+
+// A variant refused half-way through (measured terms that drive the expected model past the
+// agents), after others were written: none of this model's files land.
+TEST(ModelOutputs, AVariantRefusedMidWayLeavesTheEarlierOutputsAsTheyWere) {
+  WorldSpec spec = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  spec.run.duration = 200.0;
+  const ScratchFolder out("model-outputs");
+  write_model_outputs(spec, pending_predictions(spec), out.path());
+  const std::vector<std::string> before = names_below(out.path());
+  const std::string model_csv_before = text_of(out.path() / "model.csv");
+  MeasuredTerms overshooting;
+  overshooting.creation = 3e-4;
+  overshooting.growth = {{2, 9.0}, {3, 9.0}, {4, 9.0}};
+  overshooting.attempt = {{2, 0.02}, {3, 0.03}};
+  spec.run.duration = 300.0;
+  try {
+    write_model_outputs(spec, pending_predictions(spec, &overshooting), out.path());
+    ADD_FAILURE() << "wrote an overshooting model";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("left the range of the agents"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(names_below(out.path()), before);
+  EXPECT_EQ(text_of(out.path() / "model.csv"), model_csv_before);
 }
 
 }  // namespace

@@ -1,0 +1,26 @@
+#pragma once
+// An output that fails leaves no empty folders behind: a writer that makes the folders of
+// its output remembers the outermost one it made, and removes what it made again when the
+// output is refused or interrupted before any file landed there.
+#include <filesystem>
+#include <system_error>
+
+namespace swarmagg {
+
+class MadeFolders {
+ public:
+  // Creates `folder` and the missing folders above it (errors as create_directories: thrown,
+  // or in `error` with the second form).
+  explicit MadeFolders(std::filesystem::path folder);
+  MadeFolders(std::filesystem::path folder, std::error_code& error);
+
+  // Removes the folders made, innermost first, while they are empty: a folder holding a file
+  // (someone else's, or one written after all) stays, and so do the folders above it.
+  void remove_if_empty() const noexcept;
+
+ private:
+  std::filesystem::path folder_;
+  std::filesystem::path outermost_made_;  // empty when `folder` existed
+};
+
+}  // namespace swarmagg
