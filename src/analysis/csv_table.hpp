@@ -1,8 +1,9 @@
 #pragma once
-// A CSV file as written by swarmagg (header line, comma separated, no quoting), read back so
-// the report is computed from the files a user can open, whether the run was just made or
-// reused. A file damaged by hand or cut short is an InputError naming the file, the line and
-// what was wrong, never a number silently dropped.
+// A CSV file as written by swarmagg (header line, comma separated, no quoting), read back whole
+// so the report is computed from the files a user can open, whether the run was just made or
+// reused. For files that grow with a run's length, read row by row (analysis/csv_reader.hpp). A
+// file damaged by hand or cut short is an InputError naming the file, the line and what was wrong,
+// never a number silently dropped.
 #include <filesystem>
 #include <string>
 #include <vector>

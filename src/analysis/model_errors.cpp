@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "analysis/csv_reader.hpp"
 #include "analysis/noa_error.hpp"
 #include "analysis/partition_comparison.hpp"
 #include "models/noise_floor.hpp"
@@ -14,8 +15,9 @@ namespace {
 
 constexpr const char* kStochasticSuffix = "-stochastic";
 
-std::vector<ModelError> noa_errors(const std::filesystem::path& folder, const CsvTable& model) {
-  const std::map<std::string, double> floors = read_noise_floors(model, "bayindir", kNoaMetric);
+std::vector<ModelError> noa_errors(const std::filesystem::path& folder) {
+  const std::map<std::string, double> floors =
+      read_noise_floors(folder / "model.csv", "bayindir", kNoaMetric);
   std::vector<std::string> variants;
   const std::filesystem::path series = folder / "model-timeseries";
   if (!std::filesystem::is_directory(series)) return {};
@@ -40,16 +42,17 @@ std::vector<ModelError> noa_errors(const std::filesystem::path& folder, const Cs
 
 }  // namespace
 
-std::map<std::string, double> read_noise_floors(const CsvTable& model_csv, const std::string& model,
+std::map<std::string, double> read_noise_floors(const std::filesystem::path& model_csv,
+                                                const std::string& model,
                                                 const std::string& metric) {
-  const std::size_t name = model_csv.column("model"), variant = model_csv.column("variant"),
-                    quantity = model_csv.column("quantity"), value = model_csv.column("value");
+  CsvReader csv(model_csv);
+  const std::size_t name = csv.column("model"), variant = csv.column("variant"),
+                    quantity = csv.column("quantity"), value = csv.column("value");
   const std::string wanted = std::string(kNoiseFloorQuantity) + metric;
   std::map<std::string, double> floors;
-  for (std::size_t row = 0; row < model_csv.rows.size(); ++row) {
-    const auto& cells = model_csv.rows[row];
-    if (cells[name] == model && cells[quantity] == wanted)
-      floors[cells[variant]] = model_csv.number(row, value);
+  while (csv.next()) {
+    if (csv.cell(name) == model && csv.cell(quantity) == wanted)
+      floors[csv.cell(variant)] = csv.number(value);
   }
   return floors;
 }
@@ -62,7 +65,7 @@ std::vector<ModelError> run_model_errors(const std::filesystem::path& run_folder
       errors.push_back({kPartitionMetric, e});
     return errors;
   }
-  return noa_errors(run_folder, read_csv(run_folder / "model.csv"));
+  return noa_errors(run_folder);
 }
 
 nlohmann::json model_errors_json(const std::vector<ModelError>& errors) {

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/csv_table.hpp"
 #include "analysis/variant_error.hpp"
 
 namespace swarmagg {
@@ -20,7 +19,8 @@ struct ModelError {
 };
 
 // variant -> noise floor of `metric`, from model.csv's noise_floor:<metric> rows of `model`.
-std::map<std::string, double> read_noise_floors(const CsvTable& model_csv, const std::string& model,
+std::map<std::string, double> read_noise_floors(const std::filesystem::path& model_csv,
+                                                const std::string& model,
                                                 const std::string& metric);
 
 // Empty without model.csv. Bayindir: every expected-value variant with a file in

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "analysis/csv_reader.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -14,29 +16,33 @@ ModelCurve& curve_of(std::vector<ModelCurve>& curves, const std::string& variant
 
 }  // namespace
 
-std::vector<ModelCurve> model_curves(const CsvTable& model, const std::string& quantity) {
+std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
+                                     const std::string& quantity) {
+  CsvReader model(model_csv);
   const std::size_t variant = model.column("variant"), time = model.column("time"),
                     name = model.column("quantity"), value = model.column("value");
   std::vector<ModelCurve> curves;
-  for (std::size_t row = 0; row < model.rows.size(); ++row) {
-    if (model.rows[row][name] != quantity || std::isnan(model.number(row, time))) continue;
-    ModelCurve& curve = curve_of(curves, model.rows[row][variant]);
-    curve.x.push_back(model.number(row, time));
-    curve.y.push_back(model.number(row, value));
+  while (model.next()) {
+    if (model.cell(name) != quantity || std::isnan(model.number(time))) continue;
+    ModelCurve& curve = curve_of(curves, model.cell(variant));
+    curve.x.push_back(model.number(time));
+    curve.y.push_back(model.number(value));
   }
   return curves;
 }
 
-std::vector<ModelCurve> model_curves_by_suffix(const CsvTable& model, const std::string& prefix) {
+std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& model_csv,
+                                               const std::string& prefix) {
+  CsvReader model(model_csv);
   const std::size_t variant = model.column("variant"), name = model.column("quantity"),
                     value = model.column("value");
   std::vector<ModelCurve> curves;
-  for (std::size_t row = 0; row < model.rows.size(); ++row) {
-    const std::string& quantity = model.rows[row][name];
+  while (model.next()) {
+    const std::string& quantity = model.cell(name);
     if (!quantity.starts_with(prefix)) continue;
-    ModelCurve& curve = curve_of(curves, model.rows[row][variant]);
+    ModelCurve& curve = curve_of(curves, model.cell(variant));
     curve.x.push_back(std::stod(quantity.substr(prefix.size())));
-    curve.y.push_back(model.number(row, value));
+    curve.y.push_back(model.number(value));
   }
   return curves;
 }

@@ -1,11 +1,11 @@
 #pragma once
 // Reading model.csv (`model,variant,step,time,quantity,value`) back by quantity: a plot
 // asks for one quantity's curve per variant, or for every quantity with a prefix
-// ("aggregates:" -> the size distribution), variants in file order.
+// ("aggregates:" -> the size distribution), variants in file order. The file is read row by
+// row (a long run's model.csv reaches gigabytes): only the curves asked for are held.
+#include <filesystem>
 #include <string>
 #include <vector>
-
-#include "analysis/csv_table.hpp"
 
 namespace swarmagg {
 
@@ -16,9 +16,11 @@ struct ModelCurve {
 };
 
 // The time-dependent values of `quantity` (rows with a time), one curve per variant.
-std::vector<ModelCurve> model_curves(const CsvTable& model, const std::string& quantity);
+std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
+                                     const std::string& quantity);
 
 // Every "<prefix><number>" quantity (at any one step), x the number, one curve per variant.
-std::vector<ModelCurve> model_curves_by_suffix(const CsvTable& model, const std::string& prefix);
+std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& model_csv,
+                                               const std::string& prefix);
 
 }  // namespace swarmagg

@@ -9,7 +9,7 @@
 namespace swarmagg {
 
 NoaSeries read_noa_series(const std::filesystem::path& csv) {
-  return read_step_series(read_csv(csv), "noa");
+  return read_step_series(csv, "noa");
 }
 
 double noa_rmse(const NoaSeries& simulation, const NoaSeries& model) {

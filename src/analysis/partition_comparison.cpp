@@ -94,7 +94,8 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
   for (const char* extra : {kReturnsVariant, kMeasuredVariant}) {
     if (transient.contains(extra)) variants.push_back(extra);
   }
-  const std::map<std::string, double> floors = read_noise_floors(model, "soysal", kPartitionMetric);
+  const std::map<std::string, double> floors =
+      read_noise_floors(run_folder / "model.csv", "soysal", kPartitionMetric);
   for (const std::string& v : variants) {
     comparison.models.push_back(run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);

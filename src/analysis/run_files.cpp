@@ -31,9 +31,11 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   RunFiles run;
   run.folder = folder;
   run.world = load_world(resolved.string());
-  run.timeseries = read_csv(folder / "timeseries.csv");
+  run.timeseries = folder / "timeseries.csv";
+  if (!std::filesystem::is_regular_file(run.timeseries))
+    throw InputError("cannot read " + run.timeseries.string());
   run.summary = read_json(folder / "summary.json");
-  if (std::filesystem::exists(folder / "model.csv")) run.model = read_csv(folder / "model.csv");
+  if (std::filesystem::exists(folder / "model.csv")) run.model = folder / "model.csv";
   run.has_partitions = std::filesystem::exists(folder / "partitions.csv");
   return run;
 }

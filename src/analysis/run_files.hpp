@@ -6,22 +6,23 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "analysis/csv_table.hpp"
 #include "config/world_spec.hpp"
 
 namespace swarmagg {
 
+// timeseries.csv and model.csv grow with the run's length: they are named here and read row
+// by row where used (analysis/step_series.hpp, analysis/model_table.hpp).
 struct RunFiles {
   std::filesystem::path folder;
   WorldSpec world;
-  CsvTable timeseries;
+  std::filesystem::path timeseries;
   nlohmann::json summary;
-  std::optional<CsvTable> model;  // model.csv, absent with --no-model
-  bool has_partitions = false;    // partitions.csv (Soysal worlds)
+  std::optional<std::filesystem::path> model;  // model.csv, absent with --no-model
+  bool has_partitions = false;                 // partitions.csv (Soysal worlds)
 };
 
 // Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
-// is written last) or a file is unreadable.
+// is written last, timeseries.csv before it) or a file is unreadable.
 RunFiles read_run_files(const std::filesystem::path& folder);
 
 // The world's name for plot titles, followed by the overrides the run was given, if any:

@@ -3,30 +3,61 @@
 #include <cmath>
 #include <map>
 
+#include "analysis/csv_reader.hpp"
 #include "models/sample_statistics.hpp"
 
 namespace swarmagg {
+
+namespace {
+
+StepSeries in_order(StepSeries series, const std::vector<std::size_t>& order) {
+  StepSeries ordered;
+  for (const std::size_t i : order) {
+    ordered.steps.push_back(series.steps[i]);
+    ordered.times.push_back(series.times[i]);
+    ordered.values.push_back(std::move(series.values[i]));
+  }
+  return ordered;
+}
+
+}  // namespace
 
 double StepSeries::mean_at(std::size_t index) const {
   return sample_mean(values.at(index));
 }
 
-StepSeries read_step_series(const CsvTable& table, const std::string& column) {
-  const std::size_t step = table.column("step"), time = table.column("time"),
-                    value = table.column(column);
-  std::map<std::int64_t, std::pair<double, std::vector<double>>> by_step;
-  for (std::size_t row = 0; row < table.rows.size(); ++row) {
-    auto& entry = by_step[std::llround(table.number(row, step))];
-    entry.first = table.number(row, time);
-    entry.second.push_back(table.number(row, value));
+std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
+                                         const std::vector<std::string>& columns) {
+  CsvReader reader(csv);
+  const std::size_t step = reader.column("step"), time = reader.column("time");
+  std::vector<std::size_t> wanted;
+  for (const std::string& column : columns) wanted.push_back(reader.column(column));
+  // Rows come replicate by replicate: the steps are found in the first and looked up after.
+  std::map<std::int64_t, std::size_t> index_of_step;
+  std::vector<StepSeries> series(columns.size());
+  while (reader.next()) {
+    const std::int64_t s = std::llround(reader.number(step));
+    auto [found, added] = index_of_step.try_emplace(s, index_of_step.size());
+    for (std::size_t k = 0; k < wanted.size(); ++k) {
+      StepSeries& one = series[k];
+      if (added) {
+        one.steps.push_back(s);
+        one.times.push_back(reader.number(time));
+        one.values.emplace_back();
+      }
+      one.times[found->second] = reader.number(time);
+      one.values[found->second].push_back(reader.number(wanted[k]));
+    }
   }
-  StepSeries series;
-  for (auto& [s, entry] : by_step) {
-    series.steps.push_back(s);
-    series.times.push_back(entry.first);
-    series.values.push_back(std::move(entry.second));
-  }
+  // In step order whatever the file's order (the map's order).
+  std::vector<std::size_t> order;
+  for (const auto& [s, index] : index_of_step) order.push_back(index);
+  for (StepSeries& one : series) one = in_order(std::move(one), order);
   return series;
+}
+
+StepSeries read_step_series(const std::filesystem::path& csv, const std::string& column) {
+  return std::move(read_step_series(csv, std::vector<std::string>{column}).front());
 }
 
 }  // namespace swarmagg

@@ -1,12 +1,12 @@
 #pragma once
-// One column of a timeseries-shaped CSV (timeseries.csv, model-timeseries/*.csv: a
-// replicate, step and time per row) grouped by step, with the replicates' values side by
-// side, so statistics across replicates are taken per recorded step.
+// Columns of a timeseries-shaped CSV (timeseries.csv, model-timeseries/*.csv: a replicate,
+// step and time per row) grouped by step, with the replicates' values side by side, so
+// statistics across replicates are taken per recorded step. The file is read row by row:
+// only the numbers asked for are held.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
-
-#include "analysis/csv_table.hpp"
 
 namespace swarmagg {
 
@@ -18,6 +18,9 @@ struct StepSeries {
   double mean_at(std::size_t index) const;
 };
 
-StepSeries read_step_series(const CsvTable& table, const std::string& column);
+// One series per column, in the order asked.
+std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
+                                         const std::vector<std::string>& columns);
+StepSeries read_step_series(const std::filesystem::path& csv, const std::string& column);
 
 }  // namespace swarmagg

@@ -32,9 +32,9 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
                                 {"leaving", "leaving (LEAVE)", palette::kLeave}};
   if (controller_rules(run.world).allows(AgentState::Approach))
     states.push_back({"approaching", "approaching (APPROACH)", palette::kApproach});
-  std::vector<StepSeries> series;
-  for (const StateLine& state : states)
-    series.push_back(read_step_series(run.timeseries, state.column));
+  std::vector<std::string> columns;
+  for (const StateLine& state : states) columns.emplace_back(state.column);
+  const std::vector<StepSeries> series = read_step_series(run.timeseries, columns);
 
   std::string csv = "time";
   for (const StateLine& state : states) csv += "," + std::string(state.column);

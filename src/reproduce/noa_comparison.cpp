@@ -18,7 +18,7 @@ NoaComparison compare_noa(const std::filesystem::path& run_folder) {
   NoaComparison comparison;
   comparison.simulation = read_noa_series(run_folder / "timeseries.csv");
   const std::map<std::string, double> floors =
-      read_noise_floors(read_csv(run_folder / "model.csv"), "bayindir", kNoaMetric);
+      read_noise_floors(run_folder / "model.csv", "bayindir", kNoaMetric);
   for (const std::string& variant : noa_variants()) {
     const std::filesystem::path file =
         run_folder / "model-timeseries" / ("bayindir-" + variant + ".csv");

@@ -51,11 +51,11 @@ double seconds_since(Clock::time_point start) {
 
 // A Soysal run's stationarity and NOA / largest-aggregate distributions, for the report.
 void add_run_distributions(FigureResult& result, const std::filesystem::path& run) {
-  const CsvTable timeseries = read_csv(run / "timeseries.csv");
-  const StepSeries noa = read_step_series(timeseries, "noa");
-  result.trend = second_half_trend(noa);
-  result.noa_distribution = value_distribution(noa);
-  result.largest_distribution = value_distribution(read_step_series(timeseries, "largest"));
+  const std::vector<StepSeries> series =
+      read_step_series(run / "timeseries.csv", std::vector<std::string>{"noa", "largest"});
+  result.trend = second_half_trend(series[0]);
+  result.noa_distribution = value_distribution(series[0]);
+  result.largest_distribution = value_distribution(series[1]);
 }
 
 void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,

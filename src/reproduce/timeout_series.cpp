@@ -93,7 +93,7 @@ TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun
   point.reused = ensure_run(world, folder, run_options, run_rate_plots(options));
   point.comparison = compare_partitions(folder);
   point.rates = read_rates_csv(folder / "rates.csv");
-  point.trend = second_half_trend(read_step_series(read_csv(folder / "timeseries.csv"), "noa"));
+  point.trend = second_half_trend(read_step_series(folder / "timeseries.csv", "noa"));
   point.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return point;
 }
