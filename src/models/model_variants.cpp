@@ -44,7 +44,7 @@ PendingVariant bayindir_expected(const WorldSpec& world, const BayindirRates& ra
   PendingVariant pending{
       .header = {.model = "bayindir", .variant = variant},
       .walk_rows_work = static_cast<double>(grid->back()) * (1.0 + floor_replicates)};
-  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress) {
+  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress, Extras extras) {
     BayindirState last;
     try {
       last = walk_expected_series(
@@ -57,6 +57,7 @@ PendingVariant bayindir_expected(const WorldSpec& world, const BayindirRates& ra
       throw InputError("model: the bayindir `" + variant + "` variant: " + e.what());
     }
     std::vector<TidyValue> extra;
+    if (extras == Extras::Skipped) return extra;
     if (rates.forms_aggregates) {
       add_size_distribution(extra, grid->back(), last.aggregates);
       extra.push_back({std::string(kNoiseFloorQuantity) + kNoaMetric, std::nullopt,
@@ -80,7 +81,8 @@ PendingVariant bayindir_stochastic(const WorldSpec& world, const BayindirRates& 
       .header = {.model = "bayindir", .variant = variant + "-stochastic", .stochastic = true},
       .walk_rows_work = work,
       .walk_steps_work = work};
-  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress) {
+  // A stochastic variant has no extra values.
+  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress, Extras) {
     walk_stochastic_replicates(
         rates, *grid, seed, replicates, stream, start,
         [&](const BayindirState& state, int replicate, std::int64_t step) {
@@ -114,11 +116,12 @@ PendingVariant soysal_variant(const std::shared_ptr<const WorldSpec>& world,
                               const std::vector<TidyValue>& notes = {}) {
   PendingVariant pending{.header = {.model = "soysal", .variant = variant},
                          .walk_rows_work = static_cast<double>(world->steps())};
-  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress) {
+  pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress, Extras extras) {
     VariantPrediction prediction =
         soysal_prediction(*world, rates, variant, start, partitions.get());
     for (const ModelRow& row : prediction.series) visit(row);
     if (progress) progress(world->steps());
+    if (extras == Extras::Skipped) return std::vector<TidyValue>{};
     prediction.extra.insert(prediction.extra.end(), notes.begin(), notes.end());
     return std::move(prediction.extra);
   };

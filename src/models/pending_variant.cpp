@@ -4,8 +4,8 @@ namespace swarmagg {
 
 VariantPrediction collect(const PendingVariant& pending) {
   VariantPrediction prediction = pending.header;
-  prediction.extra =
-      pending.walk_rows([&](const ModelRow& row) { prediction.series.push_back(row); }, {});
+  prediction.extra = pending.walk_rows(
+      [&](const ModelRow& row) { prediction.series.push_back(row); }, {}, Extras::Computed);
   return prediction;
 }
 

@@ -14,6 +14,9 @@
 namespace swarmagg {
 
 using RowVisitor = std::function<void(const ModelRow& row)>;
+// Whether a walk of the rows also computes the extra values: the noise floor alone walks the
+// series again for every replicate of 20 batches, and a live view wants the rows only.
+enum class Extras { Computed, Skipped };
 // Every replicate's row at one step, in replicate order.
 using StepVisitor = std::function<void(std::span<const ModelRow> rows)>;
 
@@ -22,8 +25,9 @@ struct PendingVariant {
   VariantPrediction header;
   // Hands `visit` the rows in model-timeseries order (replicate by replicate, each step by
   // step) and returns the extra values, which need the whole walk (the size distribution at
-  // the last step, the noise floor).
-  std::function<std::vector<TidyValue>(const RowVisitor& visit, const WalkProgress& progress)>
+  // the last step, the noise floor), or none when Skipped.
+  std::function<std::vector<TidyValue>(const RowVisitor& visit, const WalkProgress& progress,
+                                       Extras extras)>
       walk_rows = {};
   // Stochastic variants: hands `visit` the rows step by step, for model.csv's statistics over
   // the replicates. The replicates run side by side, with the draws walk_rows makes.

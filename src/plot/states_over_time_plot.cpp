@@ -5,6 +5,7 @@
 #include "analysis/step_series.hpp"
 #include "controllers/controller_registry.hpp"
 #include "output/atomic_file.hpp"
+#include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/run_plot.hpp"
 #include "render/palette.hpp"
@@ -34,7 +35,8 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
     states.push_back({"approaching", "approaching (APPROACH)", palette::kApproach});
   std::vector<std::string> columns;
   for (const StateLine& state : states) columns.emplace_back(state.column);
-  const std::vector<StepSeries> series = read_step_series(run.timeseries, columns);
+  std::vector<StepSeries> series = read_step_series(run.timeseries, columns);
+  for (StepSeries& one : series) one = drawn_part(one);
 
   std::string csv = "time";
   for (const StateLine& state : states) csv += "," + std::string(state.column);

@@ -80,7 +80,7 @@ VariantPrediction write_variant(const PendingVariant& variant, AtomicFileWriter&
         write_text(series);
         keep_if_latest(written.series, row);
       },
-      progress);
+      progress, Extras::Computed);
   append_extra_values(text, written, dt);
   write_text(model_csv);
   return written;

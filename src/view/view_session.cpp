@@ -19,18 +19,22 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The NOA curve of the world's chosen expected-value model variant; none when the world has
-// no model (or one the models cannot compute).
+// The NOA curve of the world's chosen expected-value model variant, without the variant's
+// extra values or the other variants (a long world's noise floors alone took a minute before
+// the window opened); none when the world has no model (or one the models cannot compute).
 std::vector<NoaPoint> model_curve(const WorldSpec& spec) {
   WorldSpec expected = spec;
   expected.model.stochastic_replicates = 0;
   std::vector<NoaPoint> curve;
   try {
-    for (const VariantPrediction& p : predict_world(expected, nullptr, 0)) {
-      if (!p.chosen || p.stochastic) continue;
-      for (const ModelRow& row : p.series) {
+    const std::optional<PlacementSample> sample = placement_start(expected, 0);
+    for (const PendingVariant& variant :
+         pending_predictions(expected, nullptr, sample ? &*sample : nullptr)) {
+      if (!variant.header.chosen || variant.header.stochastic) continue;
+      const auto add_point = [&](const ModelRow& row) {
         if (row.noa) curve.push_back({static_cast<double>(row.step) * spec.engine.dt, *row.noa});
-      }
+      };
+      variant.walk_rows(add_point, {}, Extras::Skipped);
       break;
     }
   } catch (const InputError&) {

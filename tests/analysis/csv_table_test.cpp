@@ -1,5 +1,6 @@
-// CSV files read back (plots, model errors, reports): a damaged file is an error naming the
-// file, the line and what was wrong, not a point silently dropped or a bare "stod".
+// CSV files read back (plots, model errors, reports), whole or row by row (files that grow with
+// a run's length): a damaged file is an error naming the file, the line and what was wrong,
+// not a point silently dropped or a bare "stod".
 #include "analysis/csv_table.hpp"
 
 #include <gmock/gmock.h>
@@ -8,12 +9,16 @@
 #include <cmath>
 #include <fstream>
 
+#include "analysis/csv_reader.hpp"
+#include "analysis/model_table.hpp"
+#include "analysis/step_series.hpp"
 #include "core/errors.hpp"
 #include "testing/scratch_dir.hpp"
 
 namespace swarmagg {
 namespace {
 
+using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
 std::filesystem::path written(const testing::ScratchDir& dir, const std::string& text) {
@@ -53,6 +58,96 @@ TEST(CsvTable, ACellThatIsNotANumberNamesItsLineAndColumn) {
               ::testing::ThrowsMessage<InputError>(HasSubstr("got '3abc'")));
   EXPECT_THAT([&] { table.column("nao"); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("has no column 'nao'")));
+}
+
+TEST(CsvReader, ReadsTheRowsAWholeReadHoldsWithTheirLines) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir, "a,b,c\n1,2.5e-3,\n\n-4,inf,7\nx,,\n");
+  const CsvTable whole = read_csv(file);
+  CsvReader reader(file);
+  EXPECT_EQ(reader.header(), whole.header);
+  std::size_t row = 0;
+  while (reader.next()) {
+    ASSERT_LT(row, whole.rows.size());
+    EXPECT_EQ(reader.cells(), whole.rows[row]);
+    EXPECT_EQ(reader.line(), whole.line_of[row]);
+    ++row;
+  }
+  EXPECT_EQ(row, 3u);
+  EXPECT_FALSE(reader.next()) << "read past the end";
+}
+
+TEST(CsvReader, NumbersAndTheirErrorsNameTheLineAndColumn) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir, "a,noa\n1,2\n1,\n1,3abc\n");
+  CsvReader reader(file);
+  const std::size_t noa = reader.column("noa");
+  ASSERT_TRUE(reader.next());
+  EXPECT_EQ(reader.number(noa), 2.0);
+  ASSERT_TRUE(reader.next());
+  EXPECT_TRUE(std::isnan(reader.number(noa)));
+  ASSERT_TRUE(reader.next());
+  EXPECT_THAT([&] { reader.number(noa); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr(file.string() + ":4: column 'noa': expected a number, got '3abc'")));
+  EXPECT_THAT([&] { reader.column("nao"); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("has no column 'nao'")));
+}
+
+TEST(CsvReader, ARowCutShortOrAMissingFileIsAnInputError) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir, "a,b,c\n1,2,3\n1,50\n");
+  CsvReader reader(file);
+  ASSERT_TRUE(reader.next());
+  EXPECT_THAT([&] { reader.next(); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr(file.string() + ":3: expected 3 fields as the header has, got 2")));
+  EXPECT_THAT([&] { CsvReader missing(dir.path() / "none.csv"); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("cannot read")));
+}
+
+// Replicates one after another, as timeseries.csv lists them: each step's values side by
+// side in file order, the steps increasing, several columns in one read.
+TEST(StepSeries, GroupsEachColumnByStepWithTheReplicatesSideBySide) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir,
+                            "replicate,step,time,noa,largest\n"
+                            "0,0,0,1,2\n0,10,1,2,3\n0,20,2,3,4\n"
+                            "1,0,0,5,6\n1,10,1,6,7\n1,20,2,7,8\n"
+                            "2,20,2,9,9\n2,5,0.5,8,8\n");
+  const std::vector<StepSeries> series =
+      read_step_series(file, std::vector<std::string>{"noa", "largest"});
+  ASSERT_EQ(series.size(), 2u);
+  EXPECT_THAT(series[0].steps, ElementsAre(0, 5, 10, 20));
+  EXPECT_THAT(series[0].times, ElementsAre(0.0, 0.5, 1.0, 2.0));
+  EXPECT_THAT(series[0].values, ElementsAre(ElementsAre(1, 5), ElementsAre(8), ElementsAre(2, 6),
+                                            ElementsAre(3, 7, 9)));
+  EXPECT_THAT(series[1].values, ElementsAre(ElementsAre(2, 6), ElementsAre(8), ElementsAre(3, 7),
+                                            ElementsAre(4, 8, 9)));
+  EXPECT_EQ(read_step_series(file, "largest").values, series[1].values);
+  EXPECT_DOUBLE_EQ(series[0].mean_at(3), 19.0 / 3.0);
+}
+
+TEST(ModelTable, CurvesOfAQuantityOrAPrefixPerVariantInFileOrder) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir,
+                            "model,variant,step,time,quantity,value\n"
+                            "bayindir,original,0,0,noa,0\n"
+                            "bayindir,original,10,1,noa,2\n"
+                            "bayindir,collision,0,0,noa,0\n"
+                            "bayindir,collision,10,1,noa,3\n"
+                            "bayindir,original,10,,aggregates:2,1.5\n"
+                            "bayindir,original,10,,aggregates:3,0.25\n"
+                            "bayindir,original,,,noise_floor:rmse_noa,0.1\n");
+  const std::vector<ModelCurve> noa = model_curves(file, "noa");
+  ASSERT_EQ(noa.size(), 2u);
+  EXPECT_EQ(noa[0].variant, "original");
+  EXPECT_THAT(noa[0].x, ElementsAre(0.0, 1.0));
+  EXPECT_THAT(noa[1].y, ElementsAre(0.0, 3.0));
+  const std::vector<ModelCurve> sizes = model_curves_by_suffix(file, "aggregates:");
+  ASSERT_EQ(sizes.size(), 1u);
+  EXPECT_THAT(sizes[0].x, ElementsAre(2.0, 3.0));
+  EXPECT_THAT(sizes[0].y, ElementsAre(1.5, 0.25));
 }
 
 }  // namespace

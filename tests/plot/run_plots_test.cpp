@@ -12,6 +12,7 @@
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
+#include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/sweep_plots.hpp"
 #include "png_pixels.hpp"
@@ -127,6 +128,34 @@ TEST_F(RunPlotsTest, NoaCsvHoldsTheReplicatesTheirMeanAndABandAroundIt) {
     EXPECT_GE(noa.number(row, 3), mean);
     // Replicate 1's value is its own timeseries row at that step.
     EXPECT_EQ(noa.number(row, 5), timeseries.number(noa.rows.size() + row, 3));
+  }
+}
+
+// 12,001 recorded steps: the time plots draw at most kMostDrawnPoints of them, the first and
+// the last among them, each with its own value; timeseries.csv keeps them all.
+TEST_F(RunPlotsTest, ALongRunsTimePlotsDrawAtMostTheirLimitOfPoints) {
+  const std::filesystem::path run =
+      run_into("examples/demo.yaml",
+               {"robots.count=30", "run.duration=1200", "run.replicates=1", "run.record_every=1",
+                "model.stochastic_replicates=1"},
+               root_ / "long");
+  const PlotOutcome outcome = draw_run_plots(run, run, kSize);
+  EXPECT_TRUE(outcome.failures.empty()) << outcome.failures.front();
+  const CsvTable timeseries = read_csv(run / "timeseries.csv");
+  ASSERT_EQ(timeseries.rows.size(), 12'001u);
+  for (const char* csv : {"noa.csv", "noa-model.csv", "states.csv"}) {
+    const CsvTable drawn = read_csv(run / "plots" / csv);
+    EXPECT_LE(drawn.rows.size(), kMostDrawnPoints) << csv;
+    EXPECT_GT(drawn.rows.size(), kMostDrawnPoints / 2) << csv;
+    EXPECT_EQ(drawn.number(0, 0), 0.0) << csv;
+    EXPECT_EQ(drawn.number(drawn.rows.size() - 1, 0), 1200.0) << csv;
+  }
+  const CsvTable noa = read_csv(run / "plots" / "noa.csv");
+  const std::size_t time = timeseries.column("time"), count = timeseries.column("noa");
+  for (std::size_t row = 0, at = 0; row < noa.rows.size(); ++row) {
+    while (at < timeseries.rows.size() && timeseries.number(at, time) < noa.number(row, 0)) ++at;
+    ASSERT_LT(at, timeseries.rows.size());
+    EXPECT_EQ(noa.number(row, 1), timeseries.number(at, count)) << "at time " << noa.number(row, 0);
   }
 }
 

@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
+#include "run/placement_sample.hpp"
 #include "run/state_hash.hpp"
 #include "run/world_runner.hpp"
 
@@ -103,6 +105,25 @@ TEST(ViewSession, DetailsFollowTheAgent) {
   // NOA every record_every (10) steps, and the model's curve for this Bayindir world.
   EXPECT_EQ(session.noa_history().size(), 3000u / 10 + 1);
   EXPECT_FALSE(session.model_noa().empty());
+}
+
+// The window draws the world's chosen expected variant, as `model` writes it (computed
+// without the other variants or the noise floors).
+TEST(ViewSession, TheModelCurveIsTheChosenVariantsExpectedNoa) {
+  const WorldSpec spec = demo("kinematic");
+  std::ostringstream out;
+  const ViewSession session(spec, 0, out);
+  WorldSpec expected = spec;
+  expected.model.stochastic_replicates = 0;
+  const std::vector<VariantPrediction> predictions = predict_world(expected, nullptr, 0);
+  const auto chosen = std::find_if(predictions.begin(), predictions.end(),
+                                   [](const VariantPrediction& p) { return p.chosen; });
+  ASSERT_NE(chosen, predictions.end());
+  ASSERT_EQ(session.model_noa().size(), chosen->series.size());
+  for (std::size_t i = 0; i < chosen->series.size(); ++i) {
+    EXPECT_EQ(session.model_noa()[i].time, static_cast<double>(chosen->series[i].step) * 0.1);
+    EXPECT_EQ(session.model_noa()[i].noa, *chosen->series[i].noa);
+  }
 }
 
 TEST(ViewSession, TrailsKeepTheLastPositions) {
