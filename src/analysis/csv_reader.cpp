@@ -50,7 +50,14 @@ void throw_not_a_number(const std::string& where, const std::string& column,
 
 CsvReader::CsvReader(const std::filesystem::path& file) : in_(file), source_(file.string()) {
   if (!in_) throw InputError("cannot read " + source_);
-  if (std::getline(in_, text_)) split_line(text_, header_);
+  if (std::getline(in_, text_) && !text_.empty()) split_line(text_, header_);
+  throw_if_unreadable();
+}
+
+// A folder opens as a file and fails only when read (EISDIR), as does a failing disk: not the
+// end of the file.
+void CsvReader::throw_if_unreadable() const {
+  if (in_.bad()) throw InputError("cannot read " + source_);
 }
 
 std::size_t CsvReader::column(const std::string& name) const {
@@ -69,6 +76,7 @@ bool CsvReader::next() {
     }
     return true;
   }
+  throw_if_unreadable();
   return false;
 }
 

@@ -16,7 +16,7 @@ namespace swarmagg {
 
 class CsvReader {
  public:
-  // Reads the header; InputError when the file cannot be read.
+  // Reads the header; InputError when the file cannot be read (missing, a folder).
   explicit CsvReader(const std::filesystem::path& file);
 
   const std::vector<std::string>& header() const { return header_; }
@@ -28,8 +28,8 @@ class CsvReader {
   bool next();
   const std::vector<std::string>& cells() const { return cells_; }
   const std::string& cell(std::size_t column) const { return cells_.at(column); }
-  // The cell as a number: empty is NaN (a column a model does not predict), anything else
-  // that is not a whole number text an InputError naming the file, line and column.
+  // The cell as a number: empty is NaN (a column a model does not predict), a cell that is
+  // not entirely a number an InputError naming the file, line and column.
   double number(std::size_t column) const;
   std::size_t line() const { return line_; }  // of the current row (1 is the header)
 
@@ -40,12 +40,14 @@ class CsvReader {
   std::vector<std::string> cells_;
   std::string text_;
   std::size_t line_ = 1;
+
+  void throw_if_unreadable() const;
 };
 
 // Shared with CsvTable, which reads every row at once.
 std::size_t csv_column(const std::vector<std::string>& header, const std::string& name,
                        const std::string& source);
-// The cell as a number (empty is NaN), or none when it is not a whole number text.
+// The cell as a number (empty is NaN), or none when it is not entirely a number.
 std::optional<double> parse_csv_number(std::string_view text);
 // `where` names the file and line (or the row of a table made in memory).
 [[noreturn]] void throw_not_a_number(const std::string& where, const std::string& column,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 
+#include "analysis/csv_reader.hpp"
 #include "analysis/csv_table.hpp"
 #include "analysis/model_errors.hpp"
 #include "models/noise_floor.hpp"
@@ -70,22 +71,21 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
   comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
   // A run without predictions (--no-model, or too many agents for the chain) has only its own.
   if (!std::filesystem::exists(run_folder / "model.csv")) return comparison;
-  const CsvTable model = read_csv(run_folder / "model.csv");
+  CsvReader model(run_folder / "model.csv");
   const std::size_t name = model.column("model"), variant = model.column("variant"),
                     time = model.column("time"), quantity = model.column("quantity"),
                     value = model.column("value");
   std::map<std::string, Trajectories> transient;
   std::map<std::string, Distribution> stationary;
-  for (std::size_t row = 0; row < model.rows.size(); ++row) {
-    const auto& cells = model.rows[row];
-    if (cells[name] != "soysal") continue;
-    const std::string& q = cells[quantity];
+  while (model.next()) {
+    if (model.cell(name) != "soysal") continue;
+    const std::string& q = model.cell(quantity);
     if (q.starts_with(kTransient)) {
-      transient[cells[variant]][q.substr(std::string(kTransient).size())].emplace_back(
-          model.number(row, time), model.number(row, value));
+      transient[model.cell(variant)][q.substr(std::string(kTransient).size())].emplace_back(
+          model.number(time), model.number(value));
     } else if (q.starts_with(kStationary)) {
-      stationary[cells[variant]][q.substr(std::string(kStationary).size())] =
-          model.number(row, value);
+      stationary[model.cell(variant)][q.substr(std::string(kStationary).size())] =
+          model.number(value);
     }
   }
   std::vector<std::string> variants = partition_variants();

@@ -37,15 +37,16 @@ std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
   std::vector<StepSeries> series(columns.size());
   while (reader.next()) {
     const std::int64_t s = std::llround(reader.number(step));
+    const double t = reader.number(time);  // of the step's last row, where they differ
     auto [found, added] = index_of_step.try_emplace(s, index_of_step.size());
     for (std::size_t k = 0; k < wanted.size(); ++k) {
       StepSeries& one = series[k];
       if (added) {
         one.steps.push_back(s);
-        one.times.push_back(reader.number(time));
+        one.times.push_back(t);
         one.values.emplace_back();
       }
-      one.times[found->second] = reader.number(time);
+      one.times[found->second] = t;
       one.values[found->second].push_back(reader.number(wanted[k]));
     }
   }

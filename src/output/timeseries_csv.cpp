@@ -37,10 +37,14 @@ std::string timeseries_csv_line(const TimeseriesRow& row) {
   return line;
 }
 
-std::string timeseries_csv(std::span<const TimeseriesRow> rows) {
-  std::string text = std::string(kTimeseriesHeader) + "\n";
+std::string timeseries_csv_lines(std::span<const TimeseriesRow> rows) {
+  std::string text;
   for (const TimeseriesRow& row : rows) text += timeseries_csv_line(row) + "\n";
   return text;
+}
+
+std::string timeseries_csv(std::span<const TimeseriesRow> rows) {
+  return std::string(kTimeseriesHeader) + "\n" + timeseries_csv_lines(rows);
 }
 
 }  // namespace swarmagg

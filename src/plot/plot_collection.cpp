@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <system_error>
 
+#include "core/errors.hpp"
 #include "plot/png_size.hpp"
 
 namespace swarmagg {
@@ -12,6 +13,8 @@ void PlotCollection::prepare(const FigureFiles& files,
   try {
     write(files);
     prepared_.push_back(files);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     outcome_.failures.push_back(files.id + ".png: " + e.what());
   }

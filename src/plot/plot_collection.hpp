@@ -20,7 +20,9 @@ struct PlotOutcome {
 class PlotCollection {
  public:
   // Runs `write` (which writes the figure's CSVs and calls run_gnuplot) with the drawing
-  // deferred to draw(); a figure whose files cannot be written is a failure at once.
+  // deferred to draw(); a figure whose files cannot be written is a failure at once. A
+  // damaged input the figure reads (a row of timeseries.csv cut short) is the command's bad
+  // input, not one figure's failure: its InputError goes on to the caller.
   void prepare(const FigureFiles& files, const std::function<void(const FigureFiles&)>& write);
   // Draws every prepared figure. Throws std::runtime_error when gnuplot is missing.
   PlotOutcome draw();

@@ -3,21 +3,21 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/csv_table.hpp"
+#include "analysis/csv_reader.hpp"
 #include "models/kinetic_rate.hpp"
 #include "models/sample_statistics.hpp"
 
 namespace swarmagg {
 
 EncounterPoint measure_encounters(const WorldSpec& world, const std::filesystem::path& run_folder) {
-  const CsvTable table = read_csv(run_folder / "timeseries.csv");
+  CsvReader table(run_folder / "timeseries.csv");
   const std::size_t replicate = table.column("replicate"), time = table.column("time"),
                     encounters = table.column("encounters");
   // Rows are in step order per replicate, so the last row seen is the final one.
   std::map<std::string, double> rate;
-  for (std::size_t row = 0; row < table.rows.size(); ++row) {
-    const double t = table.number(row, time);
-    if (t > 0.0) rate[table.rows[row][replicate]] = table.number(row, encounters) / t;
+  while (table.next()) {
+    const double t = table.number(time);
+    if (t > 0.0) rate[table.cell(replicate)] = table.number(encounters) / t;
   }
   std::vector<double> rates;
   for (const auto& [r, value] : rate) rates.push_back(value);

@@ -107,10 +107,18 @@ std::string placement_start_note(const PlacementSample& sample) {
          " aggregates (model.initial_state: placement)";
 }
 
+std::vector<PendingVariant> pending_world_predictions(const WorldSpec& world,
+                                                      const MeasuredTerms* measured, int threads) {
+  const std::optional<PlacementSample> sample = placement_start(world, threads);
+  return pending_predictions(world, measured, sample ? &*sample : nullptr);
+}
+
 std::vector<VariantPrediction> predict_world(const WorldSpec& world, const MeasuredTerms* measured,
                                              int threads) {
-  const std::optional<PlacementSample> sample = placement_start(world, threads);
-  return predict(world, measured, sample ? &*sample : nullptr);
+  std::vector<VariantPrediction> predictions;
+  for (const PendingVariant& pending : pending_world_predictions(world, measured, threads))
+    predictions.push_back(collect(pending));
+  return predictions;
 }
 
 }  // namespace swarmagg

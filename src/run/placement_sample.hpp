@@ -13,6 +13,7 @@
 #include "models/initial_state.hpp"
 #include "models/measured_terms.hpp"
 #include "models/model_series.hpp"
+#include "models/pending_variant.hpp"
 
 namespace swarmagg {
 
@@ -32,6 +33,10 @@ std::optional<PlacementSample> placement_start(const WorldSpec& world, int threa
 // One sentence for the user: where the models start, from how many placements.
 std::string placement_start_note(const PlacementSample& sample);
 
+// pending_predictions() (models/predictions.hpp) from the world's own start; the variants
+// keep what they need of the sample.
+std::vector<PendingVariant> pending_world_predictions(const WorldSpec& world,
+                                                      const MeasuredTerms* measured, int threads);
 // predict() (models/predictions.hpp) from the world's own start.
 std::vector<VariantPrediction> predict_world(const WorldSpec& world, const MeasuredTerms* measured,
                                              int threads);

@@ -54,13 +54,11 @@ nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
   return summary;
 }
 
-// Row by row (the writer buffers them): a long run's rows make gigabytes of text.
+// A replicate at a time: a long run's rows make gigabytes of text.
 void write_timeseries_csv(const std::filesystem::path& file, const RunResult& result) {
   AtomicFileWriter csv(file);
   csv.write(std::string(kTimeseriesHeader) + "\n");
-  for (const ReplicateOutcome& r : result.replicates) {
-    for (const TimeseriesRow& row : r.rows) csv.write(timeseries_csv_line(row) + "\n");
-  }
+  for (const ReplicateOutcome& r : result.replicates) csv.write(timeseries_csv_lines(r.rows));
   csv.commit();
 }
 

@@ -20,16 +20,15 @@ double seconds_since(Clock::time_point start) {
 }
 
 // The NOA curve of the world's chosen expected-value model variant, without the variant's
-// extra values or the other variants (a long world's noise floors alone took a minute before
-// the window opened); none when the world has no model (or one the models cannot compute).
+// extra values or the other variants (a long world's noise floors alone kept the window from
+// opening: 10 s for the demo world over 10^5 tu); none when the world has no model (or one the
+// models cannot compute).
 std::vector<NoaPoint> model_curve(const WorldSpec& spec) {
   WorldSpec expected = spec;
   expected.model.stochastic_replicates = 0;
   std::vector<NoaPoint> curve;
   try {
-    const std::optional<PlacementSample> sample = placement_start(expected, 0);
-    for (const PendingVariant& variant :
-         pending_predictions(expected, nullptr, sample ? &*sample : nullptr)) {
+    for (const PendingVariant& variant : pending_world_predictions(expected, nullptr, 0)) {
       if (!variant.header.chosen || variant.header.stochastic) continue;
       const auto add_point = [&](const ModelRow& row) {
         if (row.noa) curve.push_back({static_cast<double>(row.step) * spec.engine.dt, *row.noa});

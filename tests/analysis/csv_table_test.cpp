@@ -60,21 +60,30 @@ TEST(CsvTable, ACellThatIsNotANumberNamesItsLineAndColumn) {
               ::testing::ThrowsMessage<InputError>(HasSubstr("has no column 'nao'")));
 }
 
-TEST(CsvReader, ReadsTheRowsAWholeReadHoldsWithTheirLines) {
+TEST(CsvReader, ReadsEachRowWithItsLineSkippingBlankOnes) {
   const testing::ScratchDir dir("csv-table");
   const auto file = written(dir, "a,b,c\n1,2.5e-3,\n\n-4,inf,7\nx,,\n");
-  const CsvTable whole = read_csv(file);
   CsvReader reader(file);
-  EXPECT_EQ(reader.header(), whole.header);
-  std::size_t row = 0;
-  while (reader.next()) {
-    ASSERT_LT(row, whole.rows.size());
-    EXPECT_EQ(reader.cells(), whole.rows[row]);
-    EXPECT_EQ(reader.line(), whole.line_of[row]);
-    ++row;
+  EXPECT_EQ(reader.header(), (std::vector<std::string>{"a", "b", "c"}));
+  const std::vector<std::vector<std::string>> rows{
+      {"1", "2.5e-3", ""}, {"-4", "inf", "7"}, {"x", "", ""}};
+  const std::vector<std::size_t> lines{2, 4, 5};
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    ASSERT_TRUE(reader.next()) << row;
+    EXPECT_EQ(reader.cells(), rows[row]);
+    EXPECT_EQ(reader.line(), lines[row]);
   }
-  EXPECT_EQ(row, 3u);
   EXPECT_FALSE(reader.next()) << "read past the end";
+  const CsvTable whole = read_csv(file);
+  EXPECT_EQ(whole.rows, rows);
+  EXPECT_EQ(whole.line_of, lines);
+}
+
+TEST(CsvReader, AFolderIsNoFileToRead) {
+  const testing::ScratchDir dir("csv-table");
+  EXPECT_THAT(
+      [&] { CsvReader folder(dir.path()); },
+      ::testing::ThrowsMessage<InputError>(HasSubstr("cannot read " + dir.path().string())));
 }
 
 TEST(CsvReader, NumbersAndTheirErrorsNameTheLineAndColumn) {

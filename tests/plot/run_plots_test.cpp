@@ -195,6 +195,34 @@ TEST_F(RunPlotsTest, ASweepSummaryGivesFinalNoaAgainstEachParameterWithIntervals
   EXPECT_NEAR(by_count.number(0, 3), 4.0 + 3.18245, 1e-4);
 }
 
+// A damaged timeseries.csv or model.csv (read row by row while each figure is written) stops
+// the plots as bad input naming the file and line, as it did when they were read up front.
+TEST_F(RunPlotsTest, ADamagedTimeseriesOrModelCsvIsBadInputNamingItsLine) {
+  for (const char* damaged : {"timeseries.csv", "model.csv"}) {
+    const std::filesystem::path copy = root_ / (std::string("damaged-") + damaged);
+    std::filesystem::copy(bayindir_, copy, std::filesystem::copy_options::recursive);
+    std::ofstream(copy / damaged, std::ios::app) << "0,1\n";
+    try {
+      draw_run_plots(copy, copy, kSize);
+      ADD_FAILURE() << damaged << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find((copy / damaged).string() + ":"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("fields as the header has"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+TEST_F(RunPlotsTest, ARunWithoutItsTimeseriesIsBadInput) {
+  const std::filesystem::path copy = root_ / "no-timeseries";
+  std::filesystem::copy(bayindir_, copy, std::filesystem::copy_options::recursive);
+  std::filesystem::remove(copy / "timeseries.csv");
+  EXPECT_THROW(draw_run_plots(copy, copy, kSize), InputError);
+  std::filesystem::create_directory(copy / "timeseries.csv");
+  EXPECT_THROW(draw_run_plots(copy, copy, kSize), InputError);
+}
+
 TEST_F(RunPlotsTest, AFolderWithoutARunIsBadInput) {
   EXPECT_THROW(draw_run_plots(root_ / "nothing-here", root_ / "nothing-here"), InputError);
   EXPECT_THROW(draw_sweep_plots(root_ / "nothing-here", root_ / "nothing-here"), InputError);

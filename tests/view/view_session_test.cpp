@@ -121,7 +121,8 @@ TEST(ViewSession, TheModelCurveIsTheChosenVariantsExpectedNoa) {
   ASSERT_NE(chosen, predictions.end());
   ASSERT_EQ(session.model_noa().size(), chosen->series.size());
   for (std::size_t i = 0; i < chosen->series.size(); ++i) {
-    EXPECT_EQ(session.model_noa()[i].time, static_cast<double>(chosen->series[i].step) * 0.1);
+    EXPECT_EQ(session.model_noa()[i].time,
+              static_cast<double>(chosen->series[i].step) * spec.engine.dt);
     EXPECT_EQ(session.model_noa()[i].noa, *chosen->series[i].noa);
   }
 }
