@@ -14,6 +14,7 @@
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
 #include "output/atomic_file.hpp"
+#include "output/made_folders.hpp"
 #include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "plot/run_plots.hpp"
@@ -27,6 +28,7 @@
 #include "run/placement_sample.hpp"
 #include "run/replicate_observer.hpp"
 #include "run/run_folder.hpp"
+#include "run/timeseries_spool.hpp"
 #include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
 
@@ -80,7 +82,7 @@ void add_render_overrides(const RunCommandOptions& options, WorldOptions& world)
 void print_summary(const WorldSpec& spec, const RunResult& result,
                    const std::filesystem::path& out) {
   double noa = 0.0;
-  for (const ReplicateOutcome& r : result.replicates) noa += r.rows.back().noa;
+  for (const ReplicateOutcome& r : result.replicates) noa += r.final_row.noa;
   std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
             << " steps in " << result.wall_seconds << " s on " << result.threads
             << (result.step_threads > 1 ? " x " + std::to_string(result.step_threads)
@@ -186,9 +188,15 @@ int run_command(const RunCommandOptions& options) {
   refuse_idle_render_options(options, spec);
   check_outputs(spec, options, out, frames);
   install_interrupt_handlers();
+  // The run's files are written into `out` while it runs (timeseries.csv's replicates,
+  // trajectories): a run that fails or is interrupted leaves no folder made for them.
+  const MadeFolders made(out);
+  const RemovedOnFailure made_only_for_this_run(made);
+  TimeseriesSpool timeseries(out / "timeseries.csv", spec.run.replicates);
   RunOptions run_options;
   run_options.progress = options.progress.shown(options.quiet);
   run_options.check = options.check;
+  run_options.timeseries = &timeseries;
   const auto trajectories = trajectory_writer(spec, out);
   run_options.observers =
       both_observers(frame_observers(spec, frames),
@@ -206,7 +214,7 @@ int run_command(const RunCommandOptions& options) {
   } else {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
-  write_run_folder(spec, result, out, options.world.changes());
+  write_run_folder(spec, result, out, options.world.changes(), &timeseries);
   // The models' start, for the rates' `initial` rows and the models (unless they refuse the
   // world: then it would be drawn for nothing, seconds for a large swarm).
   const std::optional<PlacementSample> start = run.rates || (!options.no_model && predictable(spec))

@@ -17,7 +17,7 @@ ArmSummary summarize_arm(const ArmResult& arm) {
   s.lineage = arm.lineage;
   for (std::size_t k = 0; k < arm.run.replicates.size(); ++k) {
     const ReplicateOutcome& r = arm.run.replicates[k];
-    const TimeseriesRow& last = r.rows.back();
+    const TimeseriesRow& last = r.final_row;
     s.final_noa.push_back(last.noa);
     for (std::int32_t size : r.final_aggregate_sizes) s.final_sizes.push_back(size);
     if (last.time <= 0.0) continue;

@@ -11,6 +11,7 @@
 #include "output/timeseries_csv.hpp"
 #include "run/aggregate_summary.hpp"
 #include "run/state_hash.hpp"
+#include "run/timeseries_spool.hpp"
 #include "swarmagg_version.hpp"
 
 namespace swarmagg {
@@ -29,7 +30,7 @@ nlohmann::json spread(const std::vector<double>& values) {
 }
 
 nlohmann::json replicate_summary(const ReplicateOutcome& r, double dt) {
-  const TimeseriesRow& last = r.rows.back();
+  const TimeseriesRow& last = r.final_row;
   nlohmann::json summary = {{"replicate", r.index},
                             {"seed", r.seed},
                             {"final_state_hash", state_hash_text(r.final_state_hash)},
@@ -88,10 +89,10 @@ nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result,
   std::vector<double> noa, largest, encounters_per_time;
   for (const ReplicateOutcome& r : result.replicates) {
     replicates.push_back(replicate_summary(r, spec.engine.dt));
-    noa.push_back(r.rows.back().noa);
-    largest.push_back(r.rows.back().largest);
-    encounters_per_time.push_back(static_cast<double>(r.rows.back().events.encounters) /
-                                  r.rows.back().time);
+    noa.push_back(r.final_row.noa);
+    largest.push_back(r.final_row.largest);
+    encounters_per_time.push_back(static_cast<double>(r.final_row.events.encounters) /
+                                  r.final_row.time);
   }
   nlohmann::json pooled = nlohmann::json::object();
   add_aggregate_entries(pooled, pooled_leave(result), pooled_final_aggregates(result),
@@ -127,9 +128,14 @@ std::string partitions_csv(const RunResult& result, std::int64_t steps) {
 }
 
 void write_run_folder(const WorldSpec& spec, const RunResult& result,
-                      const std::filesystem::path& out, const std::vector<std::string>& overrides) {
+                      const std::filesystem::path& out, const std::vector<std::string>& overrides,
+                      TimeseriesSpool* timeseries) {
   std::filesystem::create_directories(out);
-  write_timeseries_csv(out / "timeseries.csv", result);
+  if (timeseries) {
+    timeseries->commit();
+  } else {
+    write_timeseries_csv(out / "timeseries.csv", result);
+  }
   if (controller_rules(spec).records_partitions) {
     write_file_atomic(out / "partitions.csv", partitions_csv(result, spec.steps()));
   }

@@ -20,9 +20,12 @@ nlohmann::json run_summary(const WorldSpec& spec, const RunResult& result,
 std::string partitions_csv(const RunResult& result, std::int64_t steps);
 std::vector<TimeseriesRow> all_rows(const RunResult& result);
 
+// `timeseries`: the spool the run's rows went to (run/timeseries_spool.hpp), committed as
+// out/timeseries.csv; none: the rows of `result` are written.
 void write_run_folder(const WorldSpec& spec, const RunResult& result,
                       const std::filesystem::path& out,
-                      const std::vector<std::string>& overrides = {});
+                      const std::vector<std::string>& overrides = {},
+                      TimeseriesSpool* timeseries = nullptr);
 
 // runs/<world name> unless --out says otherwise.
 std::filesystem::path default_run_folder(const WorldSpec& spec);

@@ -12,6 +12,7 @@
 #include "run/recorded_steps.hpp"
 #include "run/replicate.hpp"
 #include "run/state_hash.hpp"
+#include "run/timeseries_spool.hpp"
 
 namespace swarmagg {
 namespace {
@@ -22,9 +23,14 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void record(const Replicate& replicate, ReplicateOutcome& outcome) {
-  outcome.rows.push_back(observe_row(replicate.index(), replicate.snapshot(),
-                                     replicate.aggregates(), replicate.events()));
+void record(const Replicate& replicate, ReplicateOutcome& outcome, TimeseriesSpool* timeseries) {
+  outcome.final_row = observe_row(replicate.index(), replicate.snapshot(), replicate.aggregates(),
+                                  replicate.events());
+  if (timeseries) {
+    timeseries->append(replicate.index(), outcome.final_row);
+  } else {
+    outcome.rows.push_back(outcome.final_row);
+  }
 }
 
 std::vector<AggregateShape> final_shapes(const Replicate& replicate) {
@@ -49,7 +55,7 @@ ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
 }
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check, int step_threads) {
+                               bool check, int step_threads, TimeseriesSpool* timeseries) {
   const auto start = Clock::now();
   Replicate replicate(spec, index);
   if (check) replicate.set_checking(true);
@@ -61,17 +67,19 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   const bool partitions = replicate.rules().records_partitions;
   PartitionTracker partition_tracker;
   const int n = spec.robots.count;
-  outcome.rows.reserve(static_cast<std::size_t>(steps / spec.run.record_every + 2));
-  record(replicate, outcome);
+  if (!timeseries)
+    outcome.rows.reserve(static_cast<std::size_t>(steps / spec.run.record_every + 2));
+  record(replicate, outcome, timeseries);
   if (observer) observer->observe(replicate);
   for (std::int64_t k = 1; k <= steps; ++k) {
     replicate.step();
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
-    if (is_recorded_step(spec, k)) record(replicate, outcome);
+    if (is_recorded_step(spec, k)) record(replicate, outcome, timeseries);
     if (observer) observer->observe(replicate);
     throw_if_interrupted();
   }
   if (observer) observer->finish();
+  if (timeseries) timeseries->close(index);
   const auto sizes = replicate.aggregates().sizes();
   outcome.final_aggregate_sizes.assign(sizes.begin(), sizes.end());
   outcome.final_aggregates = final_shapes(replicate);
@@ -99,7 +107,8 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
     ObserverGroup observers;
     observers.add(std::make_unique<ProgressObserver>(progress, agents, steps));
     if (options.observers) observers.add(options.observers(i));
-    result.replicates[index] = run_replicate(spec, i, &observers, options.check, plan.step_threads);
+    result.replicates[index] =
+        run_replicate(spec, i, &observers, options.check, plan.step_threads, options.timeseries);
     progress.finished_unit();
   };
   parallel_for(result.replicates.size(), result.threads, run_one,

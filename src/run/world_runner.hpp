@@ -1,7 +1,8 @@
 #pragma once
 // Runs the replicates of a world in parallel threads. Each replicate owns all its mutable
 // state and draws from its own generator, so the results are identical for any thread
-// count. Results stay in memory, ordered by replicate; run_folder writes them.
+// count. Results stay in memory, ordered by replicate (the rows, when not spooled to
+// disk: run/timeseries_spool.hpp); run_folder writes them.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -15,10 +16,13 @@
 
 namespace swarmagg {
 
+class TimeseriesSpool;
+
 struct ReplicateOutcome {
   int index = 0;
-  std::uint64_t seed = 0;  // the replicate's generator key
-  std::vector<TimeseriesRow> rows;
+  std::uint64_t seed = 0;           // the replicate's generator key
+  std::vector<TimeseriesRow> rows;  // every recorded step's, unless spooled (RunOptions)
+  TimeseriesRow final_row;          // the last step's, spooled or not
   std::vector<std::int32_t> final_aggregate_sizes;
   std::vector<AggregateShape> final_aggregates;         // by aggregate index, as the sizes
   LeaveTally leave;                                     // every LEAVE episode of the run
@@ -39,6 +43,8 @@ struct RunOptions {
   bool progress = false;  // a progress line on stderr
   bool check = false;     // check invariants after every step (run/invariants.hpp)
   ObserverFactory observers;
+  // Where the recorded rows go instead of ReplicateOutcome::rows: a long run holds none.
+  TimeseriesSpool* timeseries = nullptr;
 };
 
 // `requested`, else the world's run.threads, else the machine's cores.
@@ -54,7 +60,8 @@ struct ThreadPlan {
 ThreadPlan plan_threads(const WorldSpec& spec, int requested);
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check = false, int step_threads = 1);
+                               bool check = false, int step_threads = 1,
+                               TimeseriesSpool* timeseries = nullptr);
 RunResult run_world(const WorldSpec& spec, const RunOptions& options);
 
 }  // namespace swarmagg

@@ -228,6 +228,8 @@ TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
   expect_interrupted(interrupt(arguments, SIGTERM, std::chrono::milliseconds(1500)), 143);
   EXPECT_FALSE(fs::exists(out / "trajectories.h5"));
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  // The folder was made for this run's files (its trajectories and timeseries while it ran).
+  EXPECT_FALSE(fs::exists(out)) << "the folder made for an interrupted run stayed";
   fs::remove_all(out);
 }
 

@@ -21,8 +21,11 @@ namespace {
 using ::testing::HasSubstr;
 using testing::read_file_text;
 
-// 2 x 2 points x 3 replicates of a world whose runs take tens of milliseconds, so a signal
-// sent when the first run completes lands in the middle of the sweep.
+// 2 x 2 points x 3 replicates of a world whose runs take about a tenth of a second (agents
+// that rarely meet keep moving, so none sleeps), so a signal sent when the first run
+// completes lands in the middle of the sweep, even on a loaded machine. (With an 80 x 80
+// arena and 300 tu the whole sweep took tens of milliseconds once aggregates slept: a kill
+// delayed on a loaded machine could land after its end.)
 const char* kSlowSweep = R"(base: worlds/slow.yaml
 parameters:
   robots.count: [30, 40]
@@ -32,10 +35,10 @@ seed: 21
 )";
 
 const char* kSlowWorld = R"(name: slow
-arena: {width: 80, height: 80}
+arena: {width: 400, height: 400}
 robots: {count: 40}
 controller: {type: bayindir}
-run: {duration: 300, record_every: 100}
+run: {duration: 3000, record_every: 1000}
 )";
 
 class SweepCommandTest : public testing::SweepTest {
