@@ -152,6 +152,9 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
                    const std::filesystem::path& out, const std::filesystem::path& frames) {
+  // A killed run leaves its rows' temporaries in `out` (made when a run starts): garbage of a
+  // process that is gone, not an earlier run to keep, so it does not make the folder refused.
+  remove_stale_temporaries(out);
   if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
   // The run ends by writing this file: a folder in its place would fail it after the run.
   if (std::error_code error;
@@ -163,8 +166,7 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   // A killed run's temporaries are garbage (they would only count against the disk the new
   // run needs): gone before it starts, from every folder a run writes into.
   if (options.force) {
-    for (const std::filesystem::path& folder :
-         {out, out / "plots", out / "model-timeseries", frames})
+    for (const std::filesystem::path& folder : {out / "plots", out / "model-timeseries", frames})
       remove_stale_temporaries(folder);
   }
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");

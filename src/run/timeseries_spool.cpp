@@ -39,7 +39,7 @@ void TimeseriesSpool::close_all() noexcept {
 void TimeseriesSpool::append(int replicate, const TimeseriesRow& row) {
   std::FILE*& file = files_.at(static_cast<std::size_t>(replicate));
   if (file == nullptr) {
-    file = std::fopen(parts_[static_cast<std::size_t>(replicate)].c_str(), "wb");
+    file = std::fopen(parts_[static_cast<std::size_t>(replicate)].c_str(), "wbe");
     if (file == nullptr) cannot_write(target_);
   }
   const std::string line = timeseries_csv_line(row) + "\n";
@@ -59,18 +59,19 @@ void TimeseriesSpool::commit() {
   AtomicFileWriter joined(target_);
   joined.write(std::string(kTimeseriesHeader) + "\n");
   std::string chunk(kCopyChunk, '\0');
+  // Each part goes once copied: the disk holds the rows about once, not twice.
   for (const std::filesystem::path& part : parts_) {
-    std::FILE* file = std::fopen(part.c_str(), "rb");
+    std::FILE* file = std::fopen(part.c_str(), "rbe");
     if (file == nullptr) cannot_write(target_);
     std::size_t read = 0;
     while ((read = std::fread(chunk.data(), 1, chunk.size(), file)) > 0)
       joined.write(std::string_view(chunk.data(), read));
-    const bool failed = std::ferror(file) != 0;
+    const int read_error = std::ferror(file) != 0 ? errno : 0;
     std::fclose(file);
-    if (failed) cannot_write(target_);
+    if (read_error != 0) cannot_write(target_, read_error);
+    discard_temporary(part);
   }
   joined.commit();
-  for (const std::filesystem::path& part : parts_) discard_temporary(part);
   parts_.clear();
 }
 

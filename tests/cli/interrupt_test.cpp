@@ -217,6 +217,7 @@ TEST(Interrupt, SigtermStopsARunWithExitCode143AndLeavesNoPartialFile) {
   const auto after = files_below(out);
   if (!after.contains("world.resolved.yaml")) {
     EXPECT_TRUE(after.empty()) << after.size() << " outputs of an incomplete run";
+    EXPECT_FALSE(fs::exists(out)) << "the folder made for an interrupted run stayed";
   }
   fs::remove_all(out);
 }
@@ -230,6 +231,29 @@ TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   // The folder was made for this run's files (its trajectories and timeseries while it ran).
   EXPECT_FALSE(fs::exists(out)) << "the folder made for an interrupted run stayed";
+  fs::remove_all(out);
+}
+
+// A run killed outright (SIGKILL, out of memory) leaves its rows' temporaries in the folder
+// made for it; they are a dead process's garbage, so the same command runs again there
+// without --force.
+TEST(Interrupt, ARunKilledOutrightDoesNotBlockTheSameRunAgain) {
+  const fs::path out = fresh_dir("killed");
+  Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
+               "run.duration=1000000", "--quiet", "--out", out.string()});
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (temporary_files_below(out).empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_FALSE(temporary_files_below(out).empty()) << "no rows spooled";
+  child.send(SIGKILL);
+  ASSERT_EQ(child.wait(std::chrono::seconds(60)).signal_number, SIGKILL);
+  Child again({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=20",
+               "--quiet", "--no-plots", "--no-model", "--out", out.string()});
+  const Outcome o = again.wait(std::chrono::seconds(120));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
+  EXPECT_TRUE(fs::exists(out / "world.resolved.yaml"));
   fs::remove_all(out);
 }
 

@@ -66,12 +66,22 @@ TEST(TimeseriesSpool, GivesTheFileOfTheRowsHeldForAnyThreadCount) {
   }
 }
 
-// The final row, kept either way, is what the summaries read.
-TEST(TimeseriesSpool, TheFinalRowIsTheLastRowHeld) {
+// The final row, kept either way, is what the summaries read: spooled, it is the last row
+// the held run has.
+TEST(TimeseriesSpool, ASpooledRunKeepsTheLastRowOfEachReplicate) {
   const WorldSpec spec = small_world();
   const RunResult held = run_world(spec, RunOptions{});
-  for (const ReplicateOutcome& r : held.replicates)
-    EXPECT_EQ(timeseries_csv_line(r.final_row), timeseries_csv_line(r.rows.back()));
+  const testing::ScratchDir dir("spool");
+  TimeseriesSpool spool(dir.path() / "timeseries.csv", spec.run.replicates);
+  RunOptions options;
+  options.timeseries = &spool;
+  const RunResult spooled = run_world(spec, options);
+  ASSERT_EQ(spooled.replicates.size(), held.replicates.size());
+  for (std::size_t r = 0; r < held.replicates.size(); ++r) {
+    EXPECT_EQ(timeseries_csv_line(spooled.replicates[r].final_row),
+              timeseries_csv_line(held.replicates[r].rows.back()))
+        << r;
+  }
 }
 
 TEST(TimeseriesSpool, ASpoolNeverCommittedLeavesNothingAndTheEarlierFile) {
