@@ -17,13 +17,15 @@ ModelCurve& curve_of(std::vector<ModelCurve>& curves, const std::string& variant
 }  // namespace
 
 std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
-                                     const std::string& quantity) {
+                                     const std::string& quantity, const StepFilter& keep) {
   CsvReader model(model_csv);
-  const std::size_t variant = model.column("variant"), time = model.column("time"),
-                    name = model.column("quantity"), value = model.column("value");
+  const std::size_t variant = model.column("variant"), step = model.column("step"),
+                    time = model.column("time"), name = model.column("quantity"),
+                    value = model.column("value");
   std::vector<ModelCurve> curves;
   while (model.next()) {
     if (model.cell(name) != quantity || std::isnan(model.number(time))) continue;
+    if (keep && !keep(std::llround(model.number(step)))) continue;
     ModelCurve& curve = curve_of(curves, model.cell(variant));
     curve.x.push_back(model.number(time));
     curve.y.push_back(model.number(value));

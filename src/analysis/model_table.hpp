@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/step_series.hpp"
+
 namespace swarmagg {
 
 struct ModelCurve {
@@ -17,7 +19,7 @@ struct ModelCurve {
 
 // The time-dependent values of `quantity` (rows with a time), one curve per variant.
 std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
-                                     const std::string& quantity);
+                                     const std::string& quantity, const StepFilter& keep = {});
 
 // Every "<prefix><number>" quantity (at any one step), x the number, one curve per variant.
 std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& model_csv,

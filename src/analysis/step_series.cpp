@@ -27,7 +27,8 @@ double StepSeries::mean_at(std::size_t index) const {
 }
 
 std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
-                                         const std::vector<std::string>& columns) {
+                                         const std::vector<std::string>& columns,
+                                         const StepFilter& keep) {
   CsvReader reader(csv);
   const std::size_t step = reader.column("step"), time = reader.column("time");
   std::vector<std::size_t> wanted;
@@ -37,6 +38,7 @@ std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
   std::vector<StepSeries> series(columns.size());
   while (reader.next()) {
     const std::int64_t s = std::llround(reader.number(step));
+    if (keep && !keep(s)) continue;
     const double t = reader.number(time);  // of the step's last row, where they differ
     auto [found, added] = index_of_step.try_emplace(s, index_of_step.size());
     for (std::size_t k = 0; k < wanted.size(); ++k) {
@@ -57,8 +59,9 @@ std::vector<StepSeries> read_step_series(const std::filesystem::path& csv,
   return series;
 }
 
-StepSeries read_step_series(const std::filesystem::path& csv, const std::string& column) {
-  return std::move(read_step_series(csv, std::vector<std::string>{column}).front());
+StepSeries read_step_series(const std::filesystem::path& csv, const std::string& column,
+                            const StepFilter& keep) {
+  return std::move(read_step_series(csv, std::vector<std::string>{column}, keep).front());
 }
 
 }  // namespace swarmagg

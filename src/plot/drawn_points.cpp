@@ -1,5 +1,10 @@
 #include "plot/drawn_points.hpp"
 
+#include <algorithm>
+
+#include "core/errors.hpp"
+#include "models/output_grid.hpp"
+
 namespace swarmagg {
 
 namespace {
@@ -22,26 +27,23 @@ std::vector<std::size_t> drawn_indices(std::size_t count) {
   return indices;
 }
 
-StepSeries drawn_part(const StepSeries& series) {
-  StepSeries drawn;
-  for (const std::size_t i : drawn_indices(series.steps.size())) {
-    drawn.steps.push_back(series.steps[i]);
-    drawn.times.push_back(series.times[i]);
-    drawn.values.push_back(series.values[i]);
-  }
-  return drawn;
+StepFilter drawn_steps(const WorldSpec& world) {
+  const std::vector<std::int64_t> grid = record_grid(world);
+  if (grid.size() <= kMostDrawnPoints) return {};
+  std::vector<std::int64_t> drawn;
+  for (const std::size_t i : drawn_indices(grid.size())) drawn.push_back(grid[i]);
+  return [drawn = std::move(drawn)](std::int64_t step) {
+    return std::binary_search(drawn.begin(), drawn.end(), step);
+  };
 }
 
-std::vector<ModelCurve> drawn_part(const std::vector<ModelCurve>& curves) {
-  std::vector<ModelCurve> drawn;
-  for (const ModelCurve& curve : curves) {
-    ModelCurve& part = drawn.emplace_back(ModelCurve{curve.variant, {}, {}});
-    for (const std::size_t i : drawn_indices(curve.x.size())) {
-      part.x.push_back(curve.x[i]);
-      part.y.push_back(curve.y[i]);
-    }
-  }
-  return drawn;
+std::vector<StepSeries> read_drawn_series(const RunFiles& run,
+                                          const std::vector<std::string>& columns) {
+  std::vector<StepSeries> series =
+      read_step_series(run.timeseries, columns, drawn_steps(run.world));
+  if (series.front().steps.empty())
+    throw InputError(run.timeseries.string() + ": holds no recorded step of its run");
+  return series;
 }
 
 }  // namespace swarmagg

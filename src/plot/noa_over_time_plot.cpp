@@ -33,7 +33,7 @@ std::string simulation_csv(const StepSeries& noa, bool with_replicates) {
 }  // namespace
 
 void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
-  const StepSeries noa = drawn_part(read_step_series(run.timeseries, "noa"));
+  const StepSeries noa = read_drawn_series(run, {"noa"}).front();
   const std::size_t replicates = noa.values.front().size();
   const bool thin_lines = replicates > 1 && replicates <= kThinLineReplicates;
   write_file_atomic(files.csv(""), simulation_csv(noa, thin_lines));
@@ -56,7 +56,8 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
             gnuplot_quote("simulation mean (" + std::to_string(replicates) + " replicate" +
                           (replicates == 1 ? "" : "s") + ")");
   if (run.model) {
-    script += model_curve_lines(drawn_part(model_curves(*run.model, "noa")), files, "model");
+    script +=
+        model_curve_lines(model_curves(*run.model, "noa", drawn_steps(run.world)), files, "model");
   }
   script += "\n";
   run_gnuplot(files.script(), script);

@@ -35,8 +35,7 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
     states.push_back({"approaching", "approaching (APPROACH)", palette::kApproach});
   std::vector<std::string> columns;
   for (const StateLine& state : states) columns.emplace_back(state.column);
-  std::vector<StepSeries> series = read_step_series(run.timeseries, columns);
-  for (StepSeries& one : series) one = drawn_part(one);
+  const std::vector<StepSeries> series = read_drawn_series(run, columns);
 
   std::string csv = "time";
   for (const StateLine& state : states) csv += "," + std::string(state.column);

@@ -137,6 +137,18 @@ TEST(StepSeries, GroupsEachColumnByStepWithTheReplicatesSideBySide) {
   EXPECT_DOUBLE_EQ(series[0].mean_at(3), 19.0 / 3.0);
 }
 
+TEST(StepSeries, AFilterKeepsOnlyTheStepsAskedFor) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir,
+                            "replicate,step,time,noa\n"
+                            "0,0,0,1\n0,10,1,2\n0,20,2,3\n"
+                            "1,0,0,5\n1,10,1,6\n1,20,2,7\n");
+  const StepSeries kept =
+      read_step_series(file, "noa", [](std::int64_t step) { return step != 10; });
+  EXPECT_THAT(kept.steps, ElementsAre(0, 20));
+  EXPECT_THAT(kept.values, ElementsAre(ElementsAre(1, 5), ElementsAre(3, 7)));
+}
+
 TEST(ModelTable, CurvesOfAQuantityOrAPrefixPerVariantInFileOrder) {
   const testing::ScratchDir dir("csv-table");
   const auto file = written(dir,
@@ -153,6 +165,11 @@ TEST(ModelTable, CurvesOfAQuantityOrAPrefixPerVariantInFileOrder) {
   EXPECT_EQ(noa[0].variant, "original");
   EXPECT_THAT(noa[0].x, ElementsAre(0.0, 1.0));
   EXPECT_THAT(noa[1].y, ElementsAre(0.0, 3.0));
+  const std::vector<ModelCurve> later =
+      model_curves(file, "noa", [](std::int64_t step) { return step > 0; });
+  ASSERT_EQ(later.size(), 2u);
+  EXPECT_THAT(later[0].x, ElementsAre(1.0));
+  EXPECT_THAT(later[1].y, ElementsAre(3.0));
   const std::vector<ModelCurve> sizes = model_curves_by_suffix(file, "aggregates:");
   ASSERT_EQ(sizes.size(), 1u);
   EXPECT_THAT(sizes[0].x, ElementsAre(2.0, 3.0));

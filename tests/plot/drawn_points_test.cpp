@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "config/world_loader.hpp"
+#include "models/output_grid.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -33,28 +36,32 @@ TEST(DrawnPoints, ALongerCurveKeepsEveryKthPointAndTheLastWithinTheLimit) {
   }
 }
 
-TEST(DrawnPoints, SeriesAndCurvesKeepTheSamePoints) {
-  StepSeries series;
-  ModelCurve curve{"original", {}, {}};
-  for (int i = 0; i < 25'000; ++i) {
-    series.steps.push_back(10 * i);
-    series.times.push_back(i);
-    series.values.push_back({static_cast<double>(i), 2.0 * i});
-    curve.x.push_back(i);
-    curve.y.push_back(3.0 * i);
+// The steps a run records (every 10th of 250,005 steps, and the last): the filter keeps those
+// at the drawn indices, the first and the last among them.
+TEST(DrawnPoints, TheStepsDrawnAreTheRecordedStepsAtTheDrawnIndices) {
+  const WorldSpec world =
+      load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/demo.yaml",
+                 {"run.duration=25000.5", "run.record_every=10"});
+  const std::vector<std::int64_t> grid = record_grid(world);
+  ASSERT_EQ(grid.size(), 25'002u);
+  const StepFilter drawn = drawn_steps(world);
+  ASSERT_TRUE(drawn);
+  std::vector<std::int64_t> kept;
+  for (std::int64_t step = 0; step <= world.steps(); ++step) {
+    if (drawn(step)) kept.push_back(step);
   }
-  const StepSeries drawn = drawn_part(series);
-  const std::vector<ModelCurve> drawn_curves = drawn_part(std::vector<ModelCurve>{curve});
-  ASSERT_EQ(drawn_curves.size(), 1u);
-  EXPECT_EQ(drawn_curves[0].variant, "original");
-  ASSERT_EQ(drawn.steps.size(), drawn_curves[0].x.size());
-  for (std::size_t i = 0; i < drawn.steps.size(); ++i) {
-    EXPECT_EQ(drawn.steps[i], 10 * static_cast<std::int64_t>(drawn.times[i]));
-    EXPECT_EQ(drawn.values[i][1], 2.0 * drawn.times[i]);
-    EXPECT_EQ(drawn_curves[0].x[i], drawn.times[i]);
-    EXPECT_EQ(drawn_curves[0].y[i], 3.0 * drawn.times[i]);
-  }
-  EXPECT_EQ(drawn.times.back(), 24'999.0);
+  std::vector<std::int64_t> expected;
+  for (const std::size_t i : drawn_indices(grid.size())) expected.push_back(grid[i]);
+  EXPECT_EQ(kept, expected);
+  EXPECT_EQ(kept.front(), 0);
+  EXPECT_EQ(kept.back(), 250'005);
+  EXPECT_LE(kept.size(), kMostDrawnPoints);
+}
+
+TEST(DrawnPoints, AShortRunIsDrawnWholeWithoutAFilter) {
+  const WorldSpec world =
+      load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/demo.yaml", {});
+  EXPECT_FALSE(drawn_steps(world));
 }
 
 }  // namespace
