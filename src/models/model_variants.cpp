@@ -137,36 +137,36 @@ bool knows_returns(const WorldSpec& world) {
 
 std::vector<PendingVariant> bayindir_variants(const WorldSpec& world, const MeasuredTerms* measured,
                                               const std::vector<double>& start) {
+  // Each set of rates once: its expected-value variant, and its stochastic one after all of
+  // those (model.csv's order), drawn from its own stream.
+  struct Rated {
+    BayindirRates rates;
+    std::string name;
+    std::uint64_t stream;
+    bool chosen = false;
+    std::vector<TidyValue> notes = {};
+  };
+  std::vector<Rated> rated;
+  for (const CreationVariant variant : kCreationVariants) {
+    rated.push_back({bayindir_rates(world, variant), creation_variant_name(variant),
+                     static_cast<std::uint64_t>(variant), variant == world.model.creation});
+  }
+  if (knows_returns(world))
+    rated.push_back({returns_bayindir_rates(world), kReturnsVariant, kReturnsStream});
+  if (measured) {
+    rated.push_back({measured_bayindir_rates(world, *measured), "measured", kMeasuredStream, false,
+                     measured_term_notes(world, *measured)});
+  }
   const SharedGrid grid = std::make_shared<const std::vector<std::int64_t>>(record_grid(world));
   std::vector<PendingVariant> predictions;
-  for (const CreationVariant variant : kCreationVariants) {
-    predictions.push_back(bayindir_expected(world, bayindir_rates(world, variant),
-                                            creation_variant_name(variant), grid, start));
-    predictions.back().header.chosen = variant == world.model.creation;
-  }
-  if (knows_returns(world)) {
-    predictions.push_back(
-        bayindir_expected(world, returns_bayindir_rates(world), kReturnsVariant, grid, start));
-  }
-  if (measured) {
-    predictions.push_back(bayindir_expected(world, measured_bayindir_rates(world, *measured),
-                                            "measured", grid, start,
-                                            measured_term_notes(world, *measured)));
+  for (const Rated& r : rated) {
+    predictions.push_back(bayindir_expected(world, r.rates, r.name, grid, start, r.notes));
+    predictions.back().header.chosen = r.chosen;
   }
   if (world.model.stochastic_replicates <= 0) return predictions;
-  for (const CreationVariant variant : kCreationVariants) {
-    predictions.push_back(bayindir_stochastic(world, bayindir_rates(world, variant),
-                                              creation_variant_name(variant),
-                                              static_cast<std::uint64_t>(variant), grid, start));
-    predictions.back().header.chosen = variant == world.model.creation;
-  }
-  if (knows_returns(world)) {
-    predictions.push_back(bayindir_stochastic(world, returns_bayindir_rates(world), kReturnsVariant,
-                                              kReturnsStream, grid, start));
-  }
-  if (measured) {
-    predictions.push_back(bayindir_stochastic(world, measured_bayindir_rates(world, *measured),
-                                              "measured", kMeasuredStream, grid, start));
+  for (const Rated& r : rated) {
+    predictions.push_back(bayindir_stochastic(world, r.rates, r.name, r.stream, grid, start));
+    predictions.back().header.chosen = r.chosen;
   }
   return predictions;
 }
