@@ -27,11 +27,12 @@ std::vector<ModelError> noa_errors(const std::filesystem::path& folder) {
     variants.push_back(name.substr(std::string("bayindir-").size()));
   }
   std::sort(variants.begin(), variants.end());
-  const NoaSeries simulation = read_noa_series(folder / "timeseries.csv");
+  const std::vector<StepMean> simulation = read_noa_means(folder / "timeseries.csv");
   std::vector<ModelError> errors;
   for (const std::string& variant : variants) {
-    const NoaSeries predicted = read_noa_series(series / ("bayindir-" + variant + ".csv"));
-    if (predicted.steps.empty()) continue;
+    const std::vector<StepMean> predicted =
+        read_noa_means(series / ("bayindir-" + variant + ".csv"));
+    if (predicted.empty()) continue;
     const auto floor = floors.find(variant);
     errors.push_back({kNoaMetric,
                       {variant, noa_rmse(simulation, predicted),

@@ -7,6 +7,8 @@
 #include "compare/compare_summary.hpp"
 #include "compare/engine_comparison.hpp"
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
+#include "output/made_folders.hpp"
 #include "output/output_check.hpp"
 #include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
@@ -29,6 +31,9 @@ int compare_command(const CompareCommandOptions& options) {
     throw InputError("compare needs at least 2 replicates (--replicates)");
   const std::filesystem::path out =
       options.out.empty() ? default_compare_folder(spec) : std::filesystem::path(options.out);
+  // A killed comparison leaves its rows' temporaries in `out`: garbage of a process that is
+  // gone, not an earlier comparison to keep.
+  remove_stale_temporaries(out);
   if (!options.force)
     refuse_to_replace(out, "an earlier comparison or run?", "the comparison or run in it");
   // The arms are compared, not watched: say so rather than leave the user looking for them.
@@ -38,7 +43,11 @@ int compare_command(const CompareCommandOptions& options) {
   }
   check_output_folder(out, options.out.empty() ? "the comparison folder" : "--out");
   install_interrupt_handlers();
-  const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet));
+  // The arms' rows are spooled into `out` while they run: a comparison that fails or is
+  // interrupted removes them, and the folder if it was made for them.
+  const MadeFolders made(out);
+  const RemovedOnFailure made_only_for_this_comparison(made);
+  const EngineComparison result = compare_engines(spec, options.progress.shown(options.quiet), out);
   // Only now: Ctrl-C before leaves the earlier comparison whole.
   // A run's folder given as --out loses its run too, as `run --force` would remove it.
   if (options.force) {

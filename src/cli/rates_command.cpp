@@ -36,6 +36,7 @@ int rates_command(const RatesCommandOptions& options) {
   install_interrupt_handlers();
   RunOptions run_options;
   run_options.progress = options.progress.shown(options.quiet);
+  run_options.keep_rows = false;  // rates are tallied while the replicates run
   const MeasuredRun run = run_world_measuring(spec, run_options, true);
   const std::optional<PlacementSample> start = placement_start(spec, 0);
   const std::vector<RateRow> rows = measured_rate_rows(spec, *run.rates, start ? &*start : nullptr);

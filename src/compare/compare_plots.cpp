@@ -9,25 +9,12 @@
 #include "models/aggregate_shape.hpp"
 #include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
+#include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/gnuplot_batch.hpp"
 
 namespace swarmagg {
 namespace {
-
-MeanInterval noa_at(const ArmResult& arm, std::size_t row) {
-  std::vector<double> values;
-  for (const ReplicateOutcome& r : arm.run.replicates) values.push_back(r.rows[row].noa);
-  return mean_interval(values);
-}
-
-std::size_t common_rows(const ArmResult& a, const ArmResult& b) {
-  std::size_t rows = SIZE_MAX;
-  for (const ArmResult* arm : {&a, &b}) {
-    for (const ReplicateOutcome& r : arm->run.replicates) rows = std::min(rows, r.rows.size());
-  }
-  return rows == SIZE_MAX ? 0 : rows;
-}
 
 std::string noa_script(const std::string& world_name, const ArmResult& a, const ArmResult& b) {
   std::ostringstream gp;
@@ -143,17 +130,26 @@ std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Compar
   return csv.str();
 }
 
-std::string noa_band_csv(const ArmResult& a, const ArmResult& b) {
+std::string noa_band_csv(const ArmResult& a, const ArmResult& b, const std::filesystem::path& out) {
+  const StepFilter drawn = drawn_steps(a.spec);
+  const StepSeries first = read_step_series(out / a.label / "timeseries.csv", "noa", drawn);
+  const StepSeries second = read_step_series(out / b.label / "timeseries.csv", "noa", drawn);
   std::ostringstream csv;
   csv << "time," << a.label << "_mean," << a.label << "_low," << a.label << "_high," << b.label
       << "_mean," << b.label << "_low," << b.label << "_high\n";
-  const std::size_t rows = common_rows(a, b);
-  for (std::size_t row = 0; row < rows; ++row) {
-    csv << a.run.replicates.front().rows[row].time;
-    for (const ArmResult* arm : {&a, &b}) {
-      const MeanInterval m = noa_at(*arm, row);
-      csv << ',' << m.mean << ',' << m.mean - m.half_width << ',' << m.mean + m.half_width;
-    }
+  auto band = [&csv](const std::vector<double>& replicates) {
+    const MeanInterval m = mean_interval(replicates);
+    csv << ',' << m.mean << ',' << m.mean - m.half_width << ',' << m.mean + m.half_width;
+  };
+  // The steps both arms recorded (the same grid: the arms differ in their engine only).
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < first.steps.size(); ++i) {
+    while (j < second.steps.size() && second.steps[j] < first.steps[i]) ++j;
+    if (j == second.steps.size()) break;
+    if (second.steps[j] != first.steps[i]) continue;
+    csv << first.times[i];
+    band(first.values[i]);
+    band(second.values[j]);
     csv << '\n';
   }
   return csv.str();
@@ -173,7 +169,7 @@ std::string histogram_csv(const std::string& value_name, const std::string& labe
 
 void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
                             const Comparison& c, const std::filesystem::path& out) {
-  write_file_atomic(out / "noa.csv", noa_band_csv(a, b));
+  write_file_atomic(out / "noa.csv", noa_band_csv(a, b, out));
   write_file_atomic(out / "final_noa.csv",
                     histogram_csv("final_noa", c.a.label, c.a.final_noa, c.b.label, c.b.final_noa));
   write_file_atomic(out / "sizes.csv",

@@ -16,8 +16,9 @@
 
 namespace swarmagg {
 
-// noa.csv: time, then mean/low/high of each arm over its replicates at each recorded row.
-std::string noa_band_csv(const ArmResult& a, const ArmResult& b);
+// noa.csv: time, then mean/low/high of each arm over its replicates at each recorded step a
+// time plot draws (plot/drawn_points.hpp), read from the arms' timeseries.csv in `out`.
+std::string noa_band_csv(const ArmResult& a, const ArmResult& b, const std::filesystem::path& out);
 // value,<a>,<b>: how many samples of each arm take each value (a histogram table).
 std::string histogram_csv(const std::string& value_name, const std::string& label_a,
                           const std::vector<double>& values_a, const std::string& label_b,

@@ -24,11 +24,17 @@ class LineageObserver final : public ReplicateObserver {
 
 }  // namespace
 
-ArmResult run_arm(const std::string& label, const WorldSpec& spec, bool progress) {
-  ArmResult arm{label, spec, {}, {}};
+ArmResult run_arm(const std::string& label, const WorldSpec& spec, bool progress,
+                  const std::filesystem::path& out) {
+  ArmResult arm{label, spec, {}, {}, {}};
   arm.lineage.resize(static_cast<std::size_t>(spec.run.replicates));
   RunOptions options;
   options.progress = progress;
+  if (!out.empty()) {
+    arm.timeseries =
+        std::make_unique<TimeseriesSpool>(out / label / "timeseries.csv", spec.run.replicates, out);
+    options.timeseries = arm.timeseries.get();
+  }
   options.observers = [&arm](int index) {
     return std::make_unique<LineageObserver>(arm.lineage[static_cast<std::size_t>(index)]);
   };

@@ -22,13 +22,14 @@ WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
 
 }  // namespace
 
-EngineComparison compare_engines(const WorldSpec& spec, bool progress) {
+EngineComparison compare_engines(const WorldSpec& spec, bool progress,
+                                 const std::filesystem::path& out) {
   // Both arms' worlds first: one the other engine cannot run is refused before any run.
   const WorldSpec on_kinematic = on_engine(spec, "kinematic");
   const WorldSpec on_box2d = on_engine(spec, "box2d");
   EngineComparison result;
-  result.kinematic = run_arm("kinematic", on_kinematic, progress);
-  result.box2d = run_arm("box2d", on_box2d, progress);
+  result.kinematic = run_arm("kinematic", on_kinematic, progress, out);
+  result.box2d = run_arm("box2d", on_box2d, progress, out);
   result.stats = compare_arms(result.kinematic, result.box2d);
   return result;
 }
@@ -37,8 +38,8 @@ void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparis
                           const std::filesystem::path& out) {
   const std::string& world = a.spec.name;
   std::filesystem::create_directories(out);
-  write_run_folder(a.spec, a.run, out / a.label);
-  write_run_folder(b.spec, b.run, out / b.label);
+  write_run_folder(a.spec, a.run, out / a.label, {}, a.timeseries.get());
+  write_run_folder(b.spec, b.run, out / b.label, {}, b.timeseries.get());
   write_file_atomic(out / "compare.json", comparison_json(world, c).dump(2) + "\n");
   write_file_atomic(out / "summary.txt", comparison_text(world, c));
   // Absolute: run_gnuplot fails to start gnuplot for a relative script path (seen with

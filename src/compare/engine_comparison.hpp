@@ -20,7 +20,9 @@ struct EngineComparison {
   Comparison stats;  // a = kinematic, b = box2d
 };
 
-EngineComparison compare_engines(const WorldSpec& spec, bool progress = false);
+// With `out`, the arms' rows are spooled to disk for write_compare_folder (run_arm).
+EngineComparison compare_engines(const WorldSpec& spec, bool progress = false,
+                                 const std::filesystem::path& out = {});
 
 void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
                           const std::filesystem::path& out);

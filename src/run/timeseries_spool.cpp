@@ -19,9 +19,18 @@ constexpr std::size_t kCopyChunk = 1 << 20;
 }  // namespace
 
 TimeseriesSpool::TimeseriesSpool(std::filesystem::path target, int replicates)
+    : TimeseriesSpool(target, replicates, target.parent_path()) {}
+
+TimeseriesSpool::TimeseriesSpool(std::filesystem::path target, int replicates,
+                                 const std::filesystem::path& parts_folder)
     : target_(std::move(target)), files_(static_cast<std::size_t>(replicates), nullptr) {
-  if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
-  for (int r = 0; r < replicates; ++r) parts_.push_back(temporary_beside(target_));
+  if (!parts_folder.empty()) std::filesystem::create_directories(parts_folder);
+  const std::filesystem::path part_name =
+      target_.parent_path() == parts_folder
+          ? target_
+          : parts_folder /
+                (target_.parent_path().filename().string() + "-" + target_.filename().string());
+  for (int r = 0; r < replicates; ++r) parts_.push_back(temporary_beside(part_name));
 }
 
 TimeseriesSpool::~TimeseriesSpool() {

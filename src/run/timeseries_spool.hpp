@@ -20,6 +20,12 @@ class TimeseriesSpool {
   // row and closed by close(), so only the replicates running at once hold a file open (a
   // run of thousands of replicates stays within the open-file limit).
   TimeseriesSpool(std::filesystem::path target, int replicates);
+  // The temporaries in `parts_folder` (made when missing) instead, named after the target's
+  // folder and file: for a target whose folder an earlier output still occupies until the
+  // run is done (`compare --force` removes the arms' folders whole). commit() makes the
+  // target's folder.
+  TimeseriesSpool(std::filesystem::path target, int replicates,
+                  const std::filesystem::path& parts_folder);
   ~TimeseriesSpool();
   TimeseriesSpool(const TimeseriesSpool&) = delete;
   TimeseriesSpool& operator=(const TimeseriesSpool&) = delete;

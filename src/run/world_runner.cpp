@@ -23,12 +23,13 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void record(const Replicate& replicate, ReplicateOutcome& outcome, TimeseriesSpool* timeseries) {
+void record(const Replicate& replicate, ReplicateOutcome& outcome, TimeseriesSpool* timeseries,
+            bool keep_rows) {
   outcome.final_row = observe_row(replicate.index(), replicate.snapshot(), replicate.aggregates(),
                                   replicate.events());
   if (timeseries) {
     timeseries->append(replicate.index(), outcome.final_row);
-  } else {
+  } else if (keep_rows) {
     outcome.rows.push_back(outcome.final_row);
   }
 }
@@ -55,7 +56,8 @@ ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
 }
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check, int step_threads, TimeseriesSpool* timeseries) {
+                               bool check, int step_threads, TimeseriesSpool* timeseries,
+                               bool keep_rows) {
   const auto start = Clock::now();
   Replicate replicate(spec, index);
   if (check) replicate.set_checking(true);
@@ -67,14 +69,14 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   const bool partitions = replicate.rules().records_partitions;
   PartitionTracker partition_tracker;
   const int n = spec.robots.count;
-  if (!timeseries)
+  if (!timeseries && keep_rows)
     outcome.rows.reserve(static_cast<std::size_t>(steps / spec.run.record_every + 2));
-  record(replicate, outcome, timeseries);
+  record(replicate, outcome, timeseries, keep_rows);
   if (observer) observer->observe(replicate);
   for (std::int64_t k = 1; k <= steps; ++k) {
     replicate.step();
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
-    if (is_recorded_step(spec, k)) record(replicate, outcome, timeseries);
+    if (is_recorded_step(spec, k)) record(replicate, outcome, timeseries, keep_rows);
     if (observer) observer->observe(replicate);
     throw_if_interrupted();
   }
@@ -107,8 +109,8 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
     ObserverGroup observers;
     observers.add(std::make_unique<ProgressObserver>(progress, agents, steps));
     if (options.observers) observers.add(options.observers(i));
-    result.replicates[index] =
-        run_replicate(spec, i, &observers, options.check, plan.step_threads, options.timeseries);
+    result.replicates[index] = run_replicate(spec, i, &observers, options.check, plan.step_threads,
+                                             options.timeseries, options.keep_rows);
     progress.finished_unit();
   };
   parallel_for(result.replicates.size(), result.threads, run_one,

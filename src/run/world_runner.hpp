@@ -45,6 +45,9 @@ struct RunOptions {
   ObserverFactory observers;
   // Where the recorded rows go instead of ReplicateOutcome::rows: a long run holds none.
   TimeseriesSpool* timeseries = nullptr;
+  // False: the rows are neither held nor spooled, only each replicate's final row is kept
+  // (`rates`, which writes no timeseries).
+  bool keep_rows = true;
 };
 
 // `requested`, else the world's run.threads, else the machine's cores.
@@ -61,7 +64,7 @@ ThreadPlan plan_threads(const WorldSpec& spec, int requested);
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
                                bool check = false, int step_threads = 1,
-                               TimeseriesSpool* timeseries = nullptr);
+                               TimeseriesSpool* timeseries = nullptr, bool keep_rows = true);
 RunResult run_world(const WorldSpec& spec, const RunOptions& options);
 
 }  // namespace swarmagg

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
-#include "analysis/csv_table.hpp"
+#include "analysis/csv_reader.hpp"
 #include "analysis/csv_text.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
+#include "output/made_folders.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/run_folder.hpp"
 #include "sweep/sweep_manifest.hpp"
@@ -16,6 +18,9 @@
 
 namespace swarmagg {
 namespace {
+
+constexpr const char* kSweepTimeseriesFile = "sweep_timeseries.csv";
+constexpr const char* kSweepPartitionsFile = "sweep_partitions.csv";
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -63,58 +68,86 @@ bool listed(const std::vector<std::size_t>& columns, std::size_t column) {
 
 // One merged CSV: the parameter columns, then a run file's columns, whose first column is
 // the replicate (always 0 in a sweep run's folder: a run is one replicate). Shard files are
-// read as tables: a row cut short, a cell that is not a number, or a count that is not a whole
-// number >= 0 stops the merge naming the file, line and column, rather than being copied into
-// the results.
+// read row by row and the merged rows written as they come, so a sweep of long runs merges in
+// constant memory (the merged file is the size of all its runs' files together). A row cut
+// short, a cell that is not a number, or a count that is not a whole number >= 0 stops the
+// merge naming the file, line and column, rather than being copied into the results; the
+// unfinished merged file is then discarded.
 class MergedCsv {
  public:
-  MergedCsv(const std::vector<std::string>& keys, std::string file_header, ColumnKinds kinds)
-      : file_header_(std::move(file_header)),
-        kinds_(std::move(kinds)),
-        text_(csv_prefix(keys) + file_header_ + "\n") {}
+  MergedCsv(std::filesystem::path target, const std::vector<std::string>& keys,
+            std::string file_header, ColumnKinds kinds)
+      : target_(std::move(target)),
+        header_(csv_prefix(keys) + file_header + "\n"),
+        file_header_(std::move(file_header)),
+        kinds_(std::move(kinds)) {}
 
   // Appends the file's rows; returns its last row's numbers (NaN for text cells; none when
   // it has no rows).
   std::vector<double> append(const std::filesystem::path& file, const std::string& prefix,
                              int replicate) {
-    const CsvTable table = read_csv(file);
-    if (joined(table.header, 0) != file_header_) {
+    CsvReader reader(file);
+    if (joined(reader.header(), 0) != file_header_) {
       throw InputError(file.string() + ": expected the header '" + file_header_ + "'");
     }
+    open();
+    const std::string row_prefix = prefix + std::to_string(replicate) + ",";
     std::vector<double> numbers;
-    for (std::size_t row = 0; row < table.rows.size(); ++row) {
-      numbers = checked_numbers(table, row);
-      text_ += prefix + std::to_string(replicate) + "," + joined(table.rows[row], 1) + "\n";
+    while (reader.next()) {
+      numbers = checked_numbers(reader, file);
+      pending_ += row_prefix + joined(reader.cells(), 1) + "\n";
+      if (pending_.size() >= kPieceBytes) flush();
     }
-    appended_ = true;
     return numbers;
   }
 
-  bool appended() const { return appended_; }
-  const std::string& text() const { return text_; }
+  bool appended() const { return writer_.has_value(); }
+  // Once every run is appended: the file is complete and synced, not yet in place.
+  void finish() {
+    open();  // a file of no rows is its header
+    flush();
+    writer_->finish();
+  }
+  void commit() { writer_->commit(); }
 
  private:
-  std::vector<double> checked_numbers(const CsvTable& table, std::size_t row) const {
-    std::vector<double> numbers(table.header.size(), std::nan(""));
-    for (std::size_t column = 0; column < table.header.size(); ++column) {
+  static constexpr std::size_t kPieceBytes = 1 << 20;
+
+  void open() {
+    if (writer_) return;
+    writer_.emplace(target_);
+    pending_ = header_;
+  }
+  void flush() {
+    writer_->write(pending_);
+    pending_.clear();
+  }
+
+  std::vector<double> checked_numbers(const CsvReader& reader,
+                                      const std::filesystem::path& file) const {
+    const std::vector<std::string>& header = reader.header();
+    std::vector<double> numbers(header.size(), std::nan(""));
+    for (std::size_t column = 0; column < header.size(); ++column) {
       if (listed(kinds_.text, column)) continue;
-      const double value = table.number(row, column);  // names the file, line and column
+      const double value = reader.number(column);  // names the file, line and column
       const bool count = !listed(kinds_.real, column);
       if (!std::isfinite(value) || (count && !(value >= 0.0 && value == std::floor(value)))) {
-        throw InputError(table.source + ":" + std::to_string(table.line_of.at(row)) + ": column '" +
-                         table.header[column] + "': expected " +
+        throw InputError(file.string() + ":" + std::to_string(reader.line()) + ": column '" +
+                         header[column] + "': expected " +
                          (count ? "a whole number >= 0" : "a finite number") + ", got '" +
-                         table.rows[row][column] + "'");
+                         reader.cell(column) + "'");
       }
       numbers[column] = value;
     }
     return numbers;
   }
 
+  std::filesystem::path target_;
+  std::string header_;  // the merged file's
   std::string file_header_;
   ColumnKinds kinds_;
-  std::string text_;
-  bool appended_ = false;
+  std::optional<AtomicFileWriter> writer_;  // from the first file appended
+  std::string pending_;                     // rows not yet written
 };
 
 SweepPlan common_plan(const std::vector<std::filesystem::path>& folders) {
@@ -187,11 +220,17 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   const std::vector<SweepRun> runs = expand_sweep(plan);
   const std::vector<std::filesystem::path> locations = run_locations(runs, folders);
   const std::vector<std::string> keys = parameter_keys(plan);
+  // A merge refused on the way (a damaged shard file) leaves no folder it made; the merged
+  // files' temporaries are removed first (declared after).
+  const MadeFolders made(out);
+  const RemovedOnFailure unmade(made);
   // Every timeseries column counts something but the time.
-  MergedCsv timeseries(keys, kTimeseriesHeader, {.real = {2}, .text = {}});
+  MergedCsv timeseries(out / kSweepTimeseriesFile, keys, kTimeseriesHeader,
+                       {.real = {2}, .text = {}});
   // partitions_csv of no replicates is exactly the header run folders carry.
   // replicate, partition ("4+2+1"), time_fraction.
-  MergedCsv partitions(keys, split(partitions_csv(RunResult{}, 1), '\n').front(),
+  MergedCsv partitions(out / kSweepPartitionsFile, keys,
+                       split(partitions_csv(RunResult{}, 1), '\n').front(),
                        {.real = {2}, .text = {1}});
   std::vector<PointFinals> finals;
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -207,12 +246,20 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
     }
   }
   MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}};
+  // Every file complete and synced before the first takes its place: a full disk fails them
+  // all, and a merge stopped before leaves the earlier merged files as they were.
+  timeseries.finish();
+  if (partitions.appended()) partitions.finish();
+  timeseries.commit();
+  report.files.push_back(out / kSweepTimeseriesFile);
+  if (partitions.appended()) {
+    partitions.commit();
+    report.files.push_back(out / kSweepPartitionsFile);
+  }
   auto write = [&](const std::string& name, const std::string& text) {
     write_file_atomic(out / name, text);
     report.files.push_back(out / name);
   };
-  write("sweep_timeseries.csv", timeseries.text());
-  if (partitions.appended()) write("sweep_partitions.csv", partitions.text());
   write("sweep_summary.csv", sweep_summary_csv(keys, observable_names(), finals));
   write(kManifestFile, manifest_text(plan));
   return report;

@@ -9,11 +9,13 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
+#include "output/made_folders.hpp"
 #include "plot/run_plots.hpp"
 #include "run/interrupt.hpp"
 #include "run/parallel_for.hpp"
 #include "run/progress_line.hpp"
 #include "run/run_folder.hpp"
+#include "run/timeseries_spool.hpp"
 #include "run/trajectory_output.hpp"
 #include "run/world_runner.hpp"
 #include "sweep/sweep_manifest.hpp"
@@ -26,11 +28,16 @@ double run_work(const SweepRun& run) {
   return static_cast<double>(run.world.steps()) * run.world.robots.count;
 }
 
-// The outputs are written only once the replicate has finished, so an interrupted run
-// leaves no folder at all; an older unfinished attempt is cleared first.
+// The rows go to a temporary beside timeseries.csv while the replicate runs (a long run
+// holds none in memory), the other outputs are written once it has finished; an interrupted
+// run removes its temporaries and the folder made for them, so it leaves no folder at all. An
+// older unfinished attempt is cleared first.
 void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, bool plots,
                      ProgressLine& progress) {
   std::filesystem::remove_all(folder);
+  const MadeFolders made(folder);
+  const RemovedOnFailure unmade(made);
+  TimeseriesSpool timeseries(folder / "timeseries.csv", 1);
   const auto trajectories = trajectory_writer(run.world, folder);
   const ObserverFactory progress_observer = [&](int) -> std::unique_ptr<ReplicateObserver> {
     return std::make_unique<ProgressObserver>(progress, run.world.robots.count, run.world.steps());
@@ -38,11 +45,11 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, b
   auto observer = both_observers(
       progress_observer, trajectory_observers(trajectories.get(), run.world.run.trajectories))(0);
   RunResult result;
-  result.replicates.push_back(run_replicate(run.world, 0, observer.get()));
+  result.replicates.push_back(run_replicate(run.world, 0, observer.get(), false, 1, &timeseries));
   result.wall_seconds = result.replicates.front().wall_seconds;
   observer.reset();  // releases the trajectory's datasets before the file closes
   if (trajectories) trajectories->commit();
-  write_run_folder(run.world, result, folder, point_overrides(run.point));
+  write_run_folder(run.world, result, folder, point_overrides(run.point), &timeseries);
   if (!plots) return;
   // A plot gnuplot cannot draw leaves the run complete; `swarmagg plot` can redraw it.
   for (const std::string& failure : draw_run_plots(folder, folder).failures) {

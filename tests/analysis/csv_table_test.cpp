@@ -18,6 +18,7 @@
 namespace swarmagg {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
@@ -174,6 +175,17 @@ TEST(ModelTable, CurvesOfAQuantityOrAPrefixPerVariantInFileOrder) {
   ASSERT_EQ(sizes.size(), 1u);
   EXPECT_THAT(sizes[0].x, ElementsAre(2.0, 3.0));
   EXPECT_THAT(sizes[0].y, ElementsAre(1.5, 0.25));
+}
+
+TEST(ModelTable, ASizeSuffixThatIsNoNumberNamesItsLine) {
+  const testing::ScratchDir dir("csv-table");
+  const auto file = written(dir,
+                            "model,variant,step,time,quantity,value\n"
+                            "bayindir,original,10,,aggregates:2,1.5\n"
+                            "bayindir,original,10,,aggregates:two,0.25\n");
+  EXPECT_THAT([&] { model_curves_by_suffix(file, "aggregates:"); },
+              ::testing::ThrowsMessage<InputError>(
+                  AllOf(HasSubstr(file.string() + ":3"), HasSubstr("'aggregates:two'"))));
 }
 
 }  // namespace

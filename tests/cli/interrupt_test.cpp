@@ -333,6 +333,34 @@ TEST(Interrupt, SigintStopsALongModelAndKeepsTheEarlierModelOutputs) {
   fs::remove_all(out);
 }
 
+// `compare` spools its arms' rows into its folder while they run: interrupted, it removes
+// them, keeps an earlier comparison there whole, and leaves no folder made for it.
+TEST(Interrupt, SigintStopsACompareAndKeepsTheEarlierComparison) {
+  const fs::path out = fresh_dir("compare");
+  auto compare = [&out](const std::string& duration) {
+    return std::vector<std::string>{SWARMAGG_BINARY,
+                                    "compare",
+                                    kLongWorld,
+                                    "--replicates",
+                                    "2",
+                                    "--set",
+                                    "run.duration=" + duration,
+                                    "--quiet",
+                                    "--force",
+                                    "--out",
+                                    out.string()};
+  };
+  expect_interrupted(interrupt(compare("1000000"), SIGTERM, std::chrono::milliseconds(500)), 143);
+  EXPECT_FALSE(fs::exists(out)) << "the folder made for an interrupted comparison stayed";
+  Child earlier(compare("20"));
+  ASSERT_EQ(earlier.wait(std::chrono::seconds(120)).exit_code, 0);
+  const auto before = files_below(out);
+  ASSERT_TRUE(before.contains("kinematic/timeseries.csv"));
+  expect_interrupted(interrupt(compare("1000000"), SIGINT, std::chrono::milliseconds(500)), 130);
+  EXPECT_EQ(files_below(out), before) << "the earlier comparison changed";
+  fs::remove_all(out);
+}
+
 // A sweep of three runs, two short and one long: interrupted during the long one, the short
 // ones stay complete and the long one leaves no folder.
 TEST(Interrupt, SigintStopsASweepAndKeepsItsCompletedRuns) {

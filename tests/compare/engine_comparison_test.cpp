@@ -3,13 +3,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
+#include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
+#include "run/run_folder.hpp"
 #include "testing/scratch_dir.hpp"
 
 namespace swarmagg {
@@ -61,6 +65,66 @@ TEST(EngineComparison, WritesTheFolder) {
   }
 }
 
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> files_in(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+    names.push_back(std::filesystem::relative(entry.path(), folder).string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A comparison given its folder spools the arms' rows to disk (none held in memory) and
+// writes the same files as one that held them.
+TEST(EngineComparison, SpooledRowsGiveTheSameFolder) {
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not installed";
+  const testing::ScratchDir scratch("compare-test");
+  const EngineComparison held = compare_engines(tiny_world());
+  write_compare_folder(held.kinematic, held.box2d, held.stats, scratch.path() / "held");
+  const std::filesystem::path spooled = scratch.path() / "spooled";
+  const EngineComparison result = compare_engines(tiny_world(), false, spooled);
+  for (const ArmResult* arm : {&result.kinematic, &result.box2d}) {
+    for (const ReplicateOutcome& r : arm->run.replicates) EXPECT_TRUE(r.rows.empty());
+  }
+  write_compare_folder(result.kinematic, result.box2d, result.stats, spooled);
+  const std::vector<std::string> names = files_in(scratch.path() / "held");
+  EXPECT_EQ(files_in(spooled), names);
+  for (const char* name : {"noa.csv", "kinematic/timeseries.csv", "box2d/timeseries.csv",
+                           "final_noa.csv", "sizes.csv", "compare.json"}) {
+    EXPECT_TRUE(file_text(spooled / name) == file_text(scratch.path() / "held" / name)) << name;
+  }
+}
+
+// Interrupted or failed before its folder is written, a comparison leaves none of its rows.
+TEST(EngineComparison, AComparisonNeverWrittenLeavesNoRows) {
+  const testing::ScratchDir scratch("compare-test");
+  { const EngineComparison result = compare_engines(tiny_world(), false, scratch.path()); }
+  EXPECT_THAT(files_in(scratch.path()), ::testing::IsEmpty());
+}
+
+// A long comparison's noa.csv holds the points its plot draws, not every recorded step.
+TEST(ComparePlots, TheNoaBandOfALongComparisonIsThinned) {
+  const testing::ScratchDir scratch("compare-test");
+  WorldSpec world = tiny_world();
+  world.run.duration = 2000.0;  // 20,001 recorded steps at dt 0.1
+  world.run.record_every = 1;
+  world.run.replicates = 2;
+  const EngineComparison result = compare_engines(world, false, scratch.path());
+  for (const ArmResult* arm : {&result.kinematic, &result.box2d})
+    write_run_folder(arm->spec, arm->run, scratch.path() / arm->label, {}, arm->timeseries.get());
+  const std::string csv = noa_band_csv(result.kinematic, result.box2d, scratch.path());
+  const auto lines = static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n'));
+  EXPECT_EQ(lines, 1 + drawn_indices(20001).size());  // the header and the points drawn
+  EXPECT_LE(lines, 1 + kMostDrawnPoints);
+  EXPECT_THAT(csv.substr(csv.rfind('\n', csv.size() - 2) + 1), ::testing::StartsWith("2000,"));
+}
+
 TEST(ComparePlots, HistogramCountsEachValueOfEachArm) {
   EXPECT_EQ(histogram_csv("size", "a", {2, 2, 3}, "b", {3, 5}), "size,a,b\n2,2,0\n3,1,1\n5,0,1\n");
 }
@@ -71,8 +135,8 @@ TEST(ComparePlots, HistogramCountsEachValueOfEachArm) {
 TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
   WorldSpec spec = tiny_world();
   spec.controller.p_leave = 0.001;
-  const ArmResult a{"a", spec, {}, {}};
-  const ArmResult b{"b", spec, {}, {}};
+  const ArmResult a{"a", spec, {}, {}, {}};
+  const ArmResult b{"b", spec, {}, {}, {}};
   Comparison c;
   c.a.label = "a";
   c.b.label = "b";
@@ -104,7 +168,7 @@ TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
   spec.controller.type = "soysal";
   spec.controller.p0 = 0.001;
   spec.model.periphery_cap = false;
-  const ArmResult a{"a", spec, {}, {}};
+  const ArmResult a{"a", spec, {}, {}, {}};
   Comparison c;
   c.a.label = c.b.label = "a";
   for (LeaveTally* t : {&c.a.leave, &c.b.leave}) t->resize(8);
@@ -116,7 +180,7 @@ TEST(ComparePlots, SoysalPeripheryLawFollowsTheModelsCap) {
   };
   EXPECT_NEAR(periphery_law(), 3.2459 * 0.001 / spec.engine.dt, 1e-5);
   spec.model.periphery_cap = true;
-  const ArmResult capped{"a", spec, {}, {}};
+  const ArmResult capped{"a", spec, {}, {}, {}};
   const std::string csv = escape_rate_csv(capped, capped, c);
   EXPECT_THAT(csv, ::testing::EndsWith(",0.03,0.03\n"));
 }

@@ -84,6 +84,40 @@ TEST(TimeseriesSpool, ASpooledRunKeepsTheLastRowOfEachReplicate) {
   }
 }
 
+// Rows dropped (`rates`): none held, none spooled, and the final rows as a held run's.
+TEST(TimeseriesSpool, ARunKeepingNoRowsStillKeepsTheLastRowOfEachReplicate) {
+  const WorldSpec spec = small_world();
+  const RunResult held = run_world(spec, RunOptions{});
+  RunOptions options;
+  options.keep_rows = false;
+  const RunResult dropped = run_world(spec, options);
+  for (std::size_t r = 0; r < held.replicates.size(); ++r) {
+    EXPECT_TRUE(dropped.replicates[r].rows.empty());
+    EXPECT_EQ(timeseries_csv_line(dropped.replicates[r].final_row),
+              timeseries_csv_line(held.replicates[r].rows.back()))
+        << r;
+  }
+}
+
+// Temporaries kept in another folder than the target's (`compare`, whose arm folders an
+// earlier comparison holds until the new one is written): the target's folder is made at
+// commit() only, and the file is the same.
+TEST(TimeseriesSpool, PartsInAnotherFolderGiveTheSameFile) {
+  const WorldSpec spec = small_world();
+  const std::string held = timeseries_csv(all_rows(run_world(spec, RunOptions{})));
+  const testing::ScratchDir dir("spool");
+  const std::filesystem::path target = dir.path() / "arm" / "timeseries.csv";
+  TimeseriesSpool spool(target, spec.run.replicates, dir.path());
+  RunOptions options;
+  options.timeseries = &spool;
+  const RunResult spooled = run_world(spec, options);
+  EXPECT_FALSE(std::filesystem::exists(target.parent_path()));
+  EXPECT_EQ(entries_in(dir.path()), 3u) << "one temporary per replicate, beside the arm";
+  spool.commit();
+  EXPECT_EQ(text_of(target), held);
+  EXPECT_EQ(entries_in(dir.path()), 1u) << "the temporaries are gone";
+}
+
 TEST(TimeseriesSpool, ASpoolNeverCommittedLeavesNothingAndTheEarlierFile) {
   const testing::ScratchDir dir("spool");
   std::ofstream(dir.path() / "timeseries.csv") << "earlier\n";

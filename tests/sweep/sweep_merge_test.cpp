@@ -127,6 +127,28 @@ TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
 }
 
+// The merged rows are written while the shard files are read: a damaged file found late
+// discards what was written and leaves the earlier merge whole, with no temporary beside it.
+TEST_F(SweepMergeTest, ARefusedMergeLeavesTheEarlierMergedFilesAsTheyWere) {
+  run(testing::kGridSweep, "full");
+  merge_sweep({dir_ / "full"}, dir_ / "m");
+  std::vector<std::string> earlier;
+  for (const std::string& file : kMergedFiles) earlier.push_back(read_file_text(dir_ / "m" / file));
+  // The last run in merge order, so that every other run's rows were written before.
+  const std::filesystem::path file =
+      dir_ / "full/runs/robots.count=20,controller.p_leave=0.005/rep-1/timeseries.csv";
+  const std::string good = read_file_text(file);
+  ASSERT_FALSE(good.empty());
+  std::ofstream(file, std::ios::binary) << good.substr(0, good.rfind(',')) << ",x\n";
+  EXPECT_THROW(merge_sweep({dir_ / "full"}, dir_ / "m"), InputError);
+  for (std::size_t k = 0; k < kMergedFiles.size(); ++k)
+    EXPECT_TRUE(read_file_text(dir_ / "m" / kMergedFiles[k]) == earlier[k]) << kMergedFiles[k];
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir_ / "m"))
+    ++files;
+  EXPECT_EQ(files, kMergedFiles.size());
+}
+
 TEST_F(SweepMergeTest, SoysalPartitionsAreMergedToo) {
   run("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n  robots.count: [5, 8]\n"
       "replicates: 2\n",
