@@ -3,6 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "output/output_check.hpp"
+#include "run/interrupt.hpp"
 #include "sweep/sweep_merge.hpp"
 
 namespace swarmagg::cli {
@@ -17,6 +18,7 @@ struct MergeCommandOptions {
 int merge_command(const MergeCommandOptions& command) {
   const std::vector<std::filesystem::path> folders(command.folders.begin(), command.folders.end());
   check_output_folder(command.out, "--out");
+  install_interrupt_handlers();
   const MergeReport report = merge_sweep(folders, command.out);
   if (!command.quiet) {
     std::cout << "merged " << report.runs << " runs (" << report.points

@@ -147,7 +147,9 @@ std::string noa_band_csv(const ArmResult& a, const ArmResult& b, const std::file
     while (j < second.steps.size() && second.steps[j] < first.steps[i]) ++j;
     if (j == second.steps.size()) break;
     if (second.steps[j] != first.steps[i]) continue;
-    csv << first.times[i];
+    // The time as the replicates knew it (step * dt), not read back from its CSV text: printed
+    // to 6 digits, a value rounded twice can differ from one rounded once.
+    csv << static_cast<double>(first.steps[i]) * a.spec.engine.dt;
     band(first.values[i]);
     band(second.values[j]);
     csv << '\n';

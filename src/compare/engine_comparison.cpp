@@ -1,5 +1,7 @@
 #include "compare/engine_comparison.hpp"
 
+#include <stdexcept>
+
 #include "compare/compare_plots.hpp"
 #include "compare/compare_summary.hpp"
 #include "config/world_loader.hpp"
@@ -37,6 +39,12 @@ EngineComparison compare_engines(const WorldSpec& spec, bool progress,
 void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
                           const std::filesystem::path& out) {
   const std::string& world = a.spec.name;
+  for (const ArmResult* arm : {&a, &b}) {
+    // Spooled rows land where compare_engines was told; noa.csv reads them back from `out`.
+    if (arm->timeseries && arm->timeseries->target() != out / arm->label / "timeseries.csv")
+      throw std::invalid_argument("write_compare_folder: the arms' rows were spooled for " +
+                                  arm->timeseries->target().string());
+  }
   std::filesystem::create_directories(out);
   write_run_folder(a.spec, a.run, out / a.label, {}, a.timeseries.get());
   write_run_folder(b.spec, b.run, out / b.label, {}, b.timeseries.get());

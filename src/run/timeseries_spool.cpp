@@ -25,11 +25,12 @@ TimeseriesSpool::TimeseriesSpool(std::filesystem::path target, int replicates,
                                  const std::filesystem::path& parts_folder)
     : target_(std::move(target)), files_(static_cast<std::size_t>(replicates), nullptr) {
   if (!parts_folder.empty()) std::filesystem::create_directories(parts_folder);
+  // Beside the target, or named after its folder too (.kinematic-timeseries.csv.*).
+  const std::string folder_name = target_.parent_path().filename().string();
   const std::filesystem::path part_name =
-      target_.parent_path() == parts_folder
-          ? target_
-          : parts_folder /
-                (target_.parent_path().filename().string() + "-" + target_.filename().string());
+      target_.parent_path() == parts_folder || folder_name.empty()
+          ? parts_folder / target_.filename()
+          : parts_folder / (folder_name + "-" + target_.filename().string());
   for (int r = 0; r < replicates; ++r) parts_.push_back(temporary_beside(part_name));
 }
 

@@ -36,6 +36,7 @@ class TimeseriesSpool {
   void close(int replicate);
   // Once every replicate has run: the joined file becomes the target (written atomically).
   void commit();
+  const std::filesystem::path& target() const { return target_; }
 
  private:
   std::filesystem::path target_;

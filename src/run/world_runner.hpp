@@ -45,8 +45,8 @@ struct RunOptions {
   ObserverFactory observers;
   // Where the recorded rows go instead of ReplicateOutcome::rows: a long run holds none.
   TimeseriesSpool* timeseries = nullptr;
-  // False: the rows are neither held nor spooled, only each replicate's final row is kept
-  // (`rates`, which writes no timeseries).
+  // False, without `timeseries`: the rows are not held, only each replicate's final row is
+  // kept (`rates`, which writes no timeseries). Spooled rows are spooled either way.
   bool keep_rows = true;
 };
 

@@ -11,6 +11,7 @@
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
 #include "output/timeseries_csv.hpp"
+#include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_status.hpp"
@@ -86,6 +87,7 @@ class MergedCsv {
   // it has no rows).
   std::vector<double> append(const std::filesystem::path& file, const std::string& prefix,
                              int replicate) {
+    throw_if_interrupted();
     CsvReader reader(file);
     if (joined(reader.header(), 0) != file_header_) {
       throw InputError(file.string() + ": expected the header '" + file_header_ + "'");
@@ -96,7 +98,10 @@ class MergedCsv {
     while (reader.next()) {
       numbers = checked_numbers(reader, file);
       pending_ += row_prefix + joined(reader.cells(), 1) + "\n";
-      if (pending_.size() >= kPieceBytes) flush();
+      if (pending_.size() >= kPieceBytes) {
+        flush();
+        throw_if_interrupted();  // Ctrl-C, or Slurm's SIGTERM, removes the temporaries
+      }
     }
     return numbers;
   }
@@ -224,6 +229,8 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   // files' temporaries are removed first (declared after).
   const MadeFolders made(out);
   const RemovedOnFailure unmade(made);
+  // A merge killed outright (SIGKILL) leaves its temporaries: a dead process's, removed.
+  remove_stale_temporaries(out);
   // Every timeseries column counts something but the time.
   MergedCsv timeseries(out / kSweepTimeseriesFile, keys, kTimeseriesHeader,
                        {.real = {2}, .text = {}});
@@ -247,7 +254,8 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   }
   MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}};
   // Every file complete and synced before the first takes its place: a full disk fails them
-  // all, and a merge stopped before leaves the earlier merged files as they were.
+  // all, and a merge stopped before the first rename leaves the earlier merged files as they
+  // were (not transactional: a rename failing after it would leave old and new side by side).
   timeseries.finish();
   if (partitions.appended()) partitions.finish();
   timeseries.commit();

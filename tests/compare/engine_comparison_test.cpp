@@ -108,6 +108,32 @@ TEST(EngineComparison, AComparisonNeverWrittenLeavesNoRows) {
   EXPECT_THAT(files_in(scratch.path()), ::testing::IsEmpty());
 }
 
+// noa.csv's time is the one the replicates knew (step * dt), whatever dt: read back from
+// timeseries.csv and printed to 6 digits it could round differently (dt = 0.0125: 100.038 at
+// step 8003 became 100.037).
+TEST(ComparePlots, TheNoaBandTimeIsTheReplicatesTime) {
+  const testing::ScratchDir scratch("compare-test");
+  WorldSpec world = tiny_world();
+  world.engine.dt = 0.0125;
+  world.run.duration = 101.0;  // 8,081 recorded steps, none thinned
+  world.run.record_every = 1;
+  world.run.replicates = 2;
+  const EngineComparison held = compare_engines(world);
+  const EngineComparison result = compare_engines(world, false, scratch.path());
+  for (const ArmResult* arm : {&result.kinematic, &result.box2d})
+    write_run_folder(arm->spec, arm->run, scratch.path() / arm->label, {}, arm->timeseries.get());
+  std::istringstream csv(noa_band_csv(result.kinematic, result.box2d, scratch.path()));
+  std::string line;
+  std::getline(csv, line);  // the header
+  for (const TimeseriesRow& row : held.kinematic.run.replicates.front().rows) {
+    ASSERT_TRUE(std::getline(csv, line));
+    std::ostringstream time;
+    time << row.time;
+    ASSERT_EQ(line.substr(0, line.find(',')), time.str()) << "step " << row.step;
+  }
+  EXPECT_FALSE(std::getline(csv, line));
+}
+
 // A long comparison's noa.csv holds the points its plot draws, not every recorded step.
 TEST(ComparePlots, TheNoaBandOfALongComparisonIsThinned) {
   const testing::ScratchDir scratch("compare-test");

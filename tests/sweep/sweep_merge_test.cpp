@@ -2,9 +2,11 @@
 
 #include <gmock/gmock.h>
 
+#include <csignal>
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "run/interrupt.hpp"
 #include "sweep/sweep_loader.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_summary.hpp"
@@ -143,6 +145,29 @@ TEST_F(SweepMergeTest, ARefusedMergeLeavesTheEarlierMergedFilesAsTheyWere) {
   EXPECT_THROW(merge_sweep({dir_ / "full"}, dir_ / "m"), InputError);
   for (std::size_t k = 0; k < kMergedFiles.size(); ++k)
     EXPECT_TRUE(read_file_text(dir_ / "m" / kMergedFiles[k]) == earlier[k]) << kMergedFiles[k];
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir_ / "m"))
+    ++files;
+  EXPECT_EQ(files, kMergedFiles.size());
+}
+
+// Ctrl-C (or Slurm's SIGTERM) during a merge: the earlier merge stays whole, a new folder is
+// not left behind, and no temporary is; one a killed merge left is removed by the next.
+TEST_F(SweepMergeTest, AnInterruptedMergeLeavesNoTemporaryAndTheEarlierMerge) {
+  run(testing::kGridSweep, "full");
+  merge_sweep({dir_ / "full"}, dir_ / "m");
+  std::vector<std::string> earlier;
+  for (const std::string& file : kMergedFiles) earlier.push_back(read_file_text(dir_ / "m" / file));
+  set_interrupt_signal(SIGINT);
+  EXPECT_THROW(merge_sweep({dir_ / "full"}, dir_ / "m"), Interrupted);
+  EXPECT_THROW(merge_sweep({dir_ / "full"}, dir_ / "new"), Interrupted);
+  set_interrupt_signal(0);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "new"));
+  for (std::size_t k = 0; k < kMergedFiles.size(); ++k)
+    EXPECT_TRUE(read_file_text(dir_ / "m" / kMergedFiles[k]) == earlier[k]) << kMergedFiles[k];
+  // Beyond Linux's largest process id: a merge killed outright.
+  std::ofstream(dir_ / "m" / ".sweep_timeseries.csv.99999999.0.tmp") << "killed";
+  merge_sweep({dir_ / "full"}, dir_ / "m");
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir_ / "m"))
     ++files;
