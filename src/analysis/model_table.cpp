@@ -4,7 +4,6 @@
 #include <optional>
 
 #include "analysis/csv_reader.hpp"
-#include "core/errors.hpp"
 
 namespace swarmagg {
 namespace {
@@ -45,11 +44,9 @@ std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& mode
     const std::string& quantity = model.cell(name);
     if (!quantity.starts_with(prefix)) continue;
     const std::optional<double> size = parse_csv_number(quantity.substr(prefix.size()));
-    if (!size || !std::isfinite(*size)) {
-      throw InputError(model_csv.string() + ":" + std::to_string(model.line()) +
-                       ": column 'quantity': expected a number after '" + prefix + "', got '" +
-                       quantity + "'");
-    }
+    if (!size || !std::isfinite(*size))
+      throw_not_a_number(model_csv.string() + ":" + std::to_string(model.line()), "quantity",
+                         quantity);
     ModelCurve& curve = curve_of(curves, model.cell(variant));
     curve.x.push_back(*size);
     curve.y.push_back(model.number(value));
