@@ -21,9 +21,14 @@ void StepMeans::add(std::int64_t step, double value) {
 
 std::vector<StepMean> read_step_means(const std::filesystem::path& csv, const std::string& column) {
   CsvReader reader(csv);
-  const std::size_t step = reader.column("step"), wanted = reader.column(column);
+  const std::size_t step = reader.column("step"), time = reader.column("time"),
+                    wanted = reader.column(column);
   StepMeans means;
-  while (reader.next()) means.add(std::llround(reader.number(step)), reader.number(wanted));
+  while (reader.next()) {
+    // Unused, but read as read_step_series reads it: a file it would refuse is refused here.
+    reader.number(time);
+    means.add(std::llround(reader.number(step)), reader.number(wanted));
+  }
   return means.release();
 }
 

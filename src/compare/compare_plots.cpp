@@ -5,7 +5,9 @@
 #include <map>
 #include <sstream>
 
+#include "analysis/csv_text.hpp"
 #include "controllers/controller_registry.hpp"
+#include "core/time_text.hpp"
 #include "models/aggregate_shape.hpp"
 #include "models/soysal_rates.hpp"
 #include "output/atomic_file.hpp"
@@ -98,13 +100,13 @@ void write_rate(std::ostringstream& csv, const LeaveTally& leave, int size, doub
   const double exposure = leave.aggregate_time(size, dt);
   const auto k = static_cast<std::size_t>(size);
   const std::int64_t escapes = k < leave.escapes_by_size.size() ? leave.escapes_by_size[k] : 0;
-  csv << ',' << escapes << ',' << exposure;
+  csv << ',' << escapes << ',' << csv_number(exposure);
   if (exposure <= 0.0) {
     csv << ",NaN,NaN";
     return;
   }
   const auto e = static_cast<double>(escapes);
-  csv << ',' << e / exposure << ',' << 1.96 * std::sqrt(e) / exposure;
+  csv << ',' << csv_number(e / exposure) << ',' << csv_number(1.96 * std::sqrt(e) / exposure);
 }
 
 }  // namespace
@@ -125,7 +127,8 @@ std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Compar
     write_rate(csv, c.a.leave, m, dt);
     write_rate(csv, c.b.leave, m, b.spec.engine.dt);
     const double p_per_tu = member_leave_probability(a.spec, m) / dt;
-    csv << ',' << m * p_per_tu << ',' << periphery_leavers(a.spec, m) * p_per_tu << '\n';
+    csv << ',' << csv_number(m * p_per_tu) << ','
+        << csv_number(periphery_leavers(a.spec, m) * p_per_tu) << '\n';
   }
   return csv.str();
 }
@@ -139,7 +142,8 @@ std::string noa_band_csv(const ArmResult& a, const ArmResult& b, const std::file
       << "_mean," << b.label << "_low," << b.label << "_high\n";
   auto band = [&csv](const std::vector<double>& replicates) {
     const MeanInterval m = mean_interval(replicates);
-    csv << ',' << m.mean << ',' << m.mean - m.half_width << ',' << m.mean + m.half_width;
+    csv << ',' << csv_number(m.mean) << ',' << csv_number(m.mean - m.half_width) << ','
+        << csv_number(m.mean + m.half_width);
   };
   // The steps both arms recorded (the same grid: the arms differ in their engine only).
   std::size_t j = 0;
@@ -147,9 +151,8 @@ std::string noa_band_csv(const ArmResult& a, const ArmResult& b, const std::file
     while (j < second.steps.size() && second.steps[j] < first.steps[i]) ++j;
     if (j == second.steps.size()) break;
     if (second.steps[j] != first.steps[i]) continue;
-    // The time as the replicates knew it (step * dt), not read back from its CSV text: printed
-    // to 6 digits, a value rounded twice can differ from one rounded once.
-    csv << static_cast<double>(first.steps[i]) * a.spec.engine.dt;
+    // The time as the replicates knew it (step * dt) and as their timeseries.csv prints it.
+    csv << time_text(static_cast<double>(first.steps[i]) * a.spec.engine.dt);
     band(first.values[i]);
     band(second.values[j]);
     csv << '\n';
@@ -165,7 +168,8 @@ std::string histogram_csv(const std::string& value_name, const std::string& labe
   for (double v : values_b) ++counts[v].second;
   std::ostringstream csv;
   csv << value_name << ',' << label_a << ',' << label_b << '\n';
-  for (const auto& [value, n] : counts) csv << value << ',' << n.first << ',' << n.second << '\n';
+  for (const auto& [value, n] : counts)
+    csv << csv_number(value) << ',' << n.first << ',' << n.second << '\n';
   return csv.str();
 }
 

@@ -1,10 +1,10 @@
 #include "models/model_csv.hpp"
 
 #include <charconv>
-#include <cstdio>
 #include <map>
 #include <string_view>
 
+#include "core/time_text.hpp"
 #include "models/sample_statistics.hpp"
 
 namespace swarmagg {
@@ -18,11 +18,8 @@ void append_number(std::string& out, double value) {
   out.append(buffer, result.ptr);
 }
 
-// step * dt with 12 significant digits, so 3 * 0.1 prints as 0.3.
 void append_time(std::string& out, std::int64_t step, double dt) {
-  char buffer[32];
-  const int length = std::snprintf(buffer, sizeof buffer, "%.12g", static_cast<double>(step) * dt);
-  out.append(buffer, static_cast<std::size_t>(length));
+  out += time_text(static_cast<double>(step) * dt);
 }
 
 void append_tidy_row(std::string& out, const VariantPrediction& prediction,

@@ -11,7 +11,8 @@ namespace swarmagg {
 class MadeFolders {
  public:
   // Creates `folder` and the missing folders above it (errors as create_directories: thrown,
-  // or in `error` with the second form).
+  // or in `error` with the second form). A folder above that another MadeFolders removes
+  // meanwhile (its own, left empty on failure) is made again.
   explicit MadeFolders(std::filesystem::path folder);
   MadeFolders(std::filesystem::path folder, std::error_code& error);
 
@@ -20,6 +21,8 @@ class MadeFolders {
   void remove_if_empty() const noexcept;
 
  private:
+  void make(std::error_code& error);
+
   std::filesystem::path folder_;
   std::filesystem::path outermost_made_;  // empty when `folder` existed
 };

@@ -1,18 +1,8 @@
 #include "output/timeseries_csv.hpp"
 
-#include <cstdio>
+#include "core/time_text.hpp"
 
 namespace swarmagg {
-namespace {
-
-// step * dt carries rounding noise (0.7000000000000001); twelve digits drop it.
-std::string format_time(double time) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.12g", time);
-  return buffer;
-}
-
-}  // namespace
 
 std::string timeseries_csv_line(const TimeseriesRow& row) {
   std::string line;
@@ -22,7 +12,7 @@ std::string timeseries_csv_line(const TimeseriesRow& row) {
   };
   field(std::to_string(row.replicate));
   field(std::to_string(row.step));
-  field(format_time(row.time));
+  field(time_text(row.time));
   field(std::to_string(row.noa));
   field(std::to_string(row.states.searching));
   field(std::to_string(row.states.waiting));

@@ -56,12 +56,13 @@ ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
 }
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check, int step_threads, TimeseriesSpool* timeseries,
-                               bool keep_rows) {
+                               const ReplicateRunOptions& how) {
   const auto start = Clock::now();
+  TimeseriesSpool* const timeseries = how.timeseries;
+  const bool keep_rows = how.keep_rows;
   Replicate replicate(spec, index);
-  if (check) replicate.set_checking(true);
-  replicate.set_threads(step_threads);
+  if (how.check) replicate.set_checking(true);
+  replicate.set_threads(how.step_threads);
   ReplicateOutcome outcome;
   outcome.index = index;
   outcome.seed = replicate.seed();
@@ -109,8 +110,9 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
     ObserverGroup observers;
     observers.add(std::make_unique<ProgressObserver>(progress, agents, steps));
     if (options.observers) observers.add(options.observers(i));
-    result.replicates[index] = run_replicate(spec, i, &observers, options.check, plan.step_threads,
-                                             options.timeseries, options.keep_rows);
+    result.replicates[index] =
+        run_replicate(spec, i, &observers,
+                      {options.check, plan.step_threads, options.timeseries, options.keep_rows});
     progress.finished_unit();
   };
   parallel_for(result.replicates.size(), result.threads, run_one,

@@ -62,9 +62,16 @@ struct ThreadPlan {
 };
 ThreadPlan plan_threads(const WorldSpec& spec, int requested);
 
+// How one replicate runs; the fields mean what RunOptions' fields of the same names mean.
+struct ReplicateRunOptions {
+  bool check = false;
+  int step_threads = 1;
+  TimeseriesSpool* timeseries = nullptr;
+  bool keep_rows = true;
+};
+
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
-                               bool check = false, int step_threads = 1,
-                               TimeseriesSpool* timeseries = nullptr, bool keep_rows = true);
+                               const ReplicateRunOptions& how = {});
 RunResult run_world(const WorldSpec& spec, const RunOptions& options);
 
 }  // namespace swarmagg

@@ -45,7 +45,8 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, b
   auto observer = both_observers(
       progress_observer, trajectory_observers(trajectories.get(), run.world.run.trajectories))(0);
   RunResult result;
-  result.replicates.push_back(run_replicate(run.world, 0, observer.get(), false, 1, &timeseries));
+  result.replicates.push_back(
+      run_replicate(run.world, 0, observer.get(), {.timeseries = &timeseries}));
   result.wall_seconds = result.replicates.front().wall_seconds;
   observer.reset();  // releases the trajectory's datasets before the file closes
   if (trajectories) trajectories->commit();

@@ -8,11 +8,16 @@
 #include <cmath>
 #include <fstream>
 
+#include "analysis/step_series.hpp"
+#include "core/errors.hpp"
 #include "models/sample_statistics.hpp"
 #include "testing/scratch_dir.hpp"
 
 namespace swarmagg {
 namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 std::filesystem::path written(const testing::ScratchDir& dir, const std::string& name,
                               const std::string& text) {
@@ -52,6 +57,18 @@ TEST(StepMeans, EqualTheMeansOfTheValuesBitForBit) {
   for (const double v : values) means.add(40, v);
   ASSERT_EQ(means.means().size(), 1u);
   EXPECT_EQ(means.means()[0].mean(), sample_mean(values));
+}
+
+// The same file is refused whether read whole (read_step_series) or a mean per step.
+TEST(StepMeans, ADamagedTimeCellIsRefusedAsTheSeriesRefusesIt) {
+  const testing::ScratchDir dir("noa-error");
+  const auto file = written(dir, "t.csv", "replicate,step,time,noa\n0,0,0,1\n0,10,x,2\n");
+  const auto message = HasSubstr(file.string() + ":3");
+  EXPECT_THAT([&] { read_step_series(file, "noa"); }, ThrowsMessage<InputError>(message));
+  EXPECT_THAT([&] { read_step_means(file, "noa"); }, ThrowsMessage<InputError>(message));
+  const auto no_time = written(dir, "u.csv", "replicate,step,noa\n0,0,1\n");
+  EXPECT_THROW(read_step_series(no_time, "noa"), InputError);
+  EXPECT_THROW(read_step_means(no_time, "noa"), InputError);
 }
 
 TEST(NoaError, RmseOverTheSharedStepsOnly) {

@@ -11,6 +11,7 @@
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
+#include "core/time_text.hpp"
 #include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
 #include "run/run_folder.hpp"
@@ -108,9 +109,9 @@ TEST(EngineComparison, AComparisonNeverWrittenLeavesNoRows) {
   EXPECT_THAT(files_in(scratch.path()), ::testing::IsEmpty());
 }
 
-// noa.csv's time is the one the replicates knew (step * dt), whatever dt: read back from
-// timeseries.csv and printed to 6 digits it could round differently (dt = 0.0125: 100.038 at
-// step 8003 became 100.037).
+// noa.csv's time is the one the replicates knew (step * dt), printed as their timeseries.csv
+// prints it, whatever dt: at dt = 0.0125, step 8003 is 100.0375 (six digits made it 100.038,
+// and read back from its CSV text and printed again 100.037).
 TEST(ComparePlots, TheNoaBandTimeIsTheReplicatesTime) {
   const testing::ScratchDir scratch("compare-test");
   WorldSpec world = tiny_world();
@@ -127,9 +128,7 @@ TEST(ComparePlots, TheNoaBandTimeIsTheReplicatesTime) {
   std::getline(csv, line);  // the header
   for (const TimeseriesRow& row : held.kinematic.run.replicates.front().rows) {
     ASSERT_TRUE(std::getline(csv, line));
-    std::ostringstream time;
-    time << row.time;
-    ASSERT_EQ(line.substr(0, line.find(',')), time.str()) << "step " << row.step;
+    ASSERT_EQ(line.substr(0, line.find(',')), time_text(row.time)) << "step " << row.step;
   }
   EXPECT_FALSE(std::getline(csv, line));
 }
