@@ -4,15 +4,26 @@
 // output is refused or interrupted before any file landed there.
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <system_error>
 
 namespace swarmagg {
 
+// Makes one folder (the mkdir system call): 0, or the errno it failed with.
+using FolderMaker = std::function<int(const std::filesystem::path&)>;
+int make_one_folder(const std::filesystem::path& folder);
+
+// Makes `folder` and the missing folders above it, as create_directories does, and returns the
+// outermost one it made (empty: none). A folder above that vanishes meanwhile (another run's,
+// removed while empty because that run failed) is made again. `make_one` is the system's
+// mkdir but in tests.
+std::filesystem::path make_folders(const std::filesystem::path& folder, std::error_code& error,
+                                   const FolderMaker& make_one = make_one_folder);
+
 class MadeFolders {
  public:
-  // Creates `folder` and the missing folders above it (errors as create_directories: thrown,
-  // or in `error` with the second form). A folder above that another MadeFolders removes
-  // meanwhile (its own, left empty on failure) is made again.
+  // Creates `folder` and the missing folders above it (make_folders; errors thrown as
+  // create_directories throws them, or in `error` with the second form).
   explicit MadeFolders(std::filesystem::path folder);
   MadeFolders(std::filesystem::path folder, std::error_code& error);
 
@@ -21,10 +32,8 @@ class MadeFolders {
   void remove_if_empty() const noexcept;
 
  private:
-  void make(std::error_code& error);
-
   std::filesystem::path folder_;
-  std::filesystem::path outermost_made_;  // empty when `folder` existed
+  std::filesystem::path outermost_made_;  // empty when this object made no folder
 };
 
 // Removes the folders `made` made (while empty) when the scope it guards is left by an

@@ -58,8 +58,6 @@ ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,
                                const ReplicateRunOptions& how) {
   const auto start = Clock::now();
-  TimeseriesSpool* const timeseries = how.timeseries;
-  const bool keep_rows = how.keep_rows;
   Replicate replicate(spec, index);
   if (how.check) replicate.set_checking(true);
   replicate.set_threads(how.step_threads);
@@ -70,19 +68,19 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   const bool partitions = replicate.rules().records_partitions;
   PartitionTracker partition_tracker;
   const int n = spec.robots.count;
-  if (!timeseries && keep_rows)
+  if (!how.timeseries && how.keep_rows)
     outcome.rows.reserve(static_cast<std::size_t>(steps / spec.run.record_every + 2));
-  record(replicate, outcome, timeseries, keep_rows);
+  record(replicate, outcome, how.timeseries, how.keep_rows);
   if (observer) observer->observe(replicate);
   for (std::int64_t k = 1; k <= steps; ++k) {
     replicate.step();
     if (partitions) partition_tracker.observe(replicate.aggregates(), n);
-    if (is_recorded_step(spec, k)) record(replicate, outcome, timeseries, keep_rows);
+    if (is_recorded_step(spec, k)) record(replicate, outcome, how.timeseries, how.keep_rows);
     if (observer) observer->observe(replicate);
     throw_if_interrupted();
   }
   if (observer) observer->finish();
-  if (timeseries) timeseries->close(index);
+  if (how.timeseries) how.timeseries->close(index);
   const auto sizes = replicate.aggregates().sizes();
   outcome.final_aggregate_sizes.assign(sizes.begin(), sizes.end());
   outcome.final_aggregates = final_shapes(replicate);
@@ -110,9 +108,11 @@ RunResult run_world(const WorldSpec& spec, const RunOptions& options) {
     ObserverGroup observers;
     observers.add(std::make_unique<ProgressObserver>(progress, agents, steps));
     if (options.observers) observers.add(options.observers(i));
-    result.replicates[index] =
-        run_replicate(spec, i, &observers,
-                      {options.check, plan.step_threads, options.timeseries, options.keep_rows});
+    result.replicates[index] = run_replicate(spec, i, &observers,
+                                             {.check = options.check,
+                                              .step_threads = plan.step_threads,
+                                              .timeseries = options.timeseries,
+                                              .keep_rows = options.keep_rows});
     progress.finished_unit();
   };
   parallel_for(result.replicates.size(), result.threads, run_one,

@@ -62,10 +62,11 @@ struct ThreadPlan {
 };
 ThreadPlan plan_threads(const WorldSpec& spec, int requested);
 
-// How one replicate runs; the fields mean what RunOptions' fields of the same names mean.
+// How one replicate runs; check, timeseries and keep_rows mean what RunOptions' fields of the
+// same names mean.
 struct ReplicateRunOptions {
   bool check = false;
-  int step_threads = 1;
+  int step_threads = 1;  // threads inside the replicate's step (ThreadPlan::step_threads)
   TimeseriesSpool* timeseries = nullptr;
   bool keep_rows = true;
 };

@@ -63,7 +63,7 @@ TEST(StepMeans, EqualTheMeansOfTheValuesBitForBit) {
 TEST(StepMeans, ADamagedTimeCellIsRefusedAsTheSeriesRefusesIt) {
   const testing::ScratchDir dir("noa-error");
   const auto file = written(dir, "t.csv", "replicate,step,time,noa\n0,0,0,1\n0,10,x,2\n");
-  const auto message = HasSubstr(file.string() + ":3");
+  const auto message = HasSubstr(file.string() + ":3: column 'time'");
   EXPECT_THAT([&] { read_step_series(file, "noa"); }, ThrowsMessage<InputError>(message));
   EXPECT_THAT([&] { read_step_means(file, "noa"); }, ThrowsMessage<InputError>(message));
   const auto no_time = written(dir, "u.csv", "replicate,step,noa\n0,0,1\n");

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/csv_reader.hpp"
 #include "compare/compare_plots.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
@@ -119,17 +120,22 @@ TEST(ComparePlots, TheNoaBandTimeIsTheReplicatesTime) {
   world.run.duration = 101.0;  // 8,081 recorded steps, none thinned
   world.run.record_every = 1;
   world.run.replicates = 2;
-  const EngineComparison held = compare_engines(world);
   const EngineComparison result = compare_engines(world, false, scratch.path());
   for (const ArmResult* arm : {&result.kinematic, &result.box2d})
     write_run_folder(arm->spec, arm->run, scratch.path() / arm->label, {}, arm->timeseries.get());
   std::istringstream csv(noa_band_csv(result.kinematic, result.box2d, scratch.path()));
   std::string line;
   std::getline(csv, line);  // the header
-  for (const TimeseriesRow& row : held.kinematic.run.replicates.front().rows) {
+  CsvReader replicates(scratch.path() / "kinematic" / "timeseries.csv");
+  const std::size_t replicate = replicates.column("replicate"), time = replicates.column("time");
+  int rows = 0;
+  while (replicates.next() && replicates.cell(replicate) == "0") {
     ASSERT_TRUE(std::getline(csv, line));
-    ASSERT_EQ(line.substr(0, line.find(',')), time_text(row.time)) << "step " << row.step;
+    ASSERT_EQ(line.substr(0, line.find(',')), replicates.cell(time)) << "row " << rows;
+    EXPECT_EQ(replicates.cell(time), time_text(rows * world.engine.dt));
+    ++rows;
   }
+  EXPECT_EQ(rows, 8081);
   EXPECT_FALSE(std::getline(csv, line));
 }
 
