@@ -26,7 +26,8 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
     throw InputError(folder.string() + ": no such folder (expected a run's output folder)");
   if (!std::filesystem::exists(resolved)) {
     throw InputError(folder.string() +
-                     ": holds no complete run (no world.resolved.yaml, which a run writes last)");
+                     ": holds no complete run (no world.resolved.yaml, which a run writes once its "
+                     "simulation's outputs are complete)");
   }
   RunFiles run;
   run.folder = folder;

@@ -13,13 +13,14 @@ struct MergeCommandOptions {
   std::vector<std::string> folders;
   std::string out;
   bool quiet = false;
+  bool force = false;
 };
 
 int merge_command(const MergeCommandOptions& command) {
   const std::vector<std::filesystem::path> folders(command.folders.begin(), command.folders.end());
   check_output_folder(command.out, "--out");
   install_interrupt_handlers();
-  const MergeReport report = merge_sweep(folders, command.out);
+  const MergeReport report = merge_sweep(folders, command.out, command.force);
   if (!command.quiet) {
     std::cout << "merged " << report.runs << " runs (" << report.points
               << " parameter points) into " << command.out << "/:";
@@ -40,6 +41,9 @@ void add_merge_command(CLI::App& app, Action& action) {
       ->required();
   command->add_option("--out", options->out, "Folder for the merged outputs")->required();
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--force", options->force,
+                    "Merge into a folder that holds another sweep's merge or a run "
+                    "(refused otherwise)");
   command->callback([options, &action] { action = [options] { return merge_command(*options); }; });
 }
 

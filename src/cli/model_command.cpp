@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/model_errors.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
@@ -74,6 +75,11 @@ int model_command(const ModelCommandOptions& options) {
   const std::vector<VariantPrediction> predictions = write_model_outputs(
       spec, pending_predictions(spec, measured ? &*measured : nullptr, sample ? &*sample : nullptr),
       out, options.progress.shown(options.quiet));
+  // In a run's folder, summary.json's model errors describe the model beside the run: the one
+  // just written, not an earlier model's (which may list a variant this one has not), nor none
+  // (a run interrupted before its model, or run with --no-model).
+  const bool in_run = holds_complete_run(out);
+  if (in_run) write_model_errors(out);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
@@ -86,6 +92,10 @@ int model_command(const ModelCommandOptions& options) {
   }
   std::cout << spec.name << ": " << predictions.size() << " model variants in " << elapsed.count()
             << " s; outputs in " << out.string() << "/\n";
+  if (in_run) {
+    std::cout << "the run's summary.json has their errors; `swarmagg plot " << out.string()
+              << "` redraws its plots with them\n";
+  }
   return 0;
 }
 

@@ -148,6 +148,16 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
   if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
 }
 
+// Ctrl-C while the models are computed keeps the simulation, a complete run (its
+// world.resolved.yaml is written): says so, and how to add the model it lacks.
+std::string model_left_out(const std::filesystem::path& out, bool rates) {
+  const std::string folder = out.string();
+  return "swarmagg: the simulation's outputs in " + folder +
+         "/ are complete, its model is not; to add it: swarmagg model " + folder +
+         "/world.resolved.yaml --out " + folder +
+         (rates ? " --rates " + folder + "/rates.csv" : "") + "\n";
+}
+
 // Every output path is checked before the first step: a long run must not be lost to a
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
@@ -235,9 +245,14 @@ int run_command(const RunCommandOptions& options) {
   }
   if (!options.no_model) {
     options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
-    write_predictions(spec, out, measured ? &*measured : nullptr, sample,
-                      options.progress.shown(options.quiet));
-    write_model_errors(out);
+    try {
+      write_predictions(spec, out, measured ? &*measured : nullptr, sample,
+                        options.progress.shown(options.quiet));
+      write_model_errors(out);
+    } catch (const Interrupted&) {
+      std::cerr << model_left_out(out, options.rates);
+      throw;
+    }
   }
   if (!options.quiet && options.rates) {
     for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";

@@ -286,11 +286,11 @@ std::string readers_of(const std::string& path) {
 
 // A controller key the world file gives that its controller never reads would be dropped in
 // silence (the resolved world writes only what acts on the run): a Soysal key left in a file
-// switched to Bayindir, say. Keys set by overrides (--set, sweep points) are exempt, so that
-// one override can apply to worlds of several controllers (reproduce --set); so is a file
-// whose controller.type an override sets, as a sweep over controller types does.
+// switched to Bayindir, say. A file whose controller.type an override sets is exempt, as a
+// sweep over controller types needs; the overrides themselves are checked (check_overrides_read).
 void check_controller_reads(const WorldSpec& spec, const std::map<std::string, std::string>& seen,
                             const std::vector<WorldOverride>& overrides) {
+  check_overrides_read(spec, overrides);
   for (const WorldOverride& override : overrides) {
     if (override.key == "controller.type") return;
   }
@@ -344,6 +344,18 @@ void apply_override(WorldSpec& spec, const WorldOverride& override) {
   const WorldKey* key = find_world_key(override.key);
   if (key == nullptr) unknown_key(override.origin, override.key);
   apply_value(spec, *key, override.value, override.origin);
+}
+
+void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides) {
+  const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
+  for (const WorldOverride& override : overrides) {
+    const std::string& path = override.key;
+    if (!path.starts_with("controller.") || path == "controller.type") continue;
+    if (find_world_key(path) == nullptr || reads(controller, path)) continue;
+    throw InputError(override.origin + ": " + path + ": controller type '" + spec.controller.type +
+                     "' of " + spec.source + " does not read this key, so the run would ignore it" +
+                     readers_of(path));
+  }
 }
 
 void check_world(const WorldSpec& spec) {

@@ -23,5 +23,9 @@ WorldSpec load_world_text(const std::string& text, const std::string& source,
 void apply_override(WorldSpec& spec, const WorldOverride& override);
 // Cross-key checks (s >= 2r, agents fit, dt > 0, ...); throws InputError.
 void check_world(const WorldSpec& spec);
+// Refuses (InputError) an override of a controller.* key that the world's controller type does
+// not read: the run would ignore it, while summary.json and the plots list it as a change.
+// `reproduce` applies one override to worlds of several controllers, and does not call this.
+void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides);
 
 }  // namespace swarmagg

@@ -144,7 +144,7 @@ PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,
   std::filesystem::create_directories(out / kPlotsFolder);
   PlotCollection batch;
   for (std::size_t p = 0; p < keys.size(); ++p) {
-    batch.prepare({out / kPlotsFolder, "final-noa-vs-" + keys[p], size, ".."},
+    batch.prepare({out / kPlotsFolder, kSweepPlotPrefix + keys[p], size, ".."},
                   [&](const FigureFiles& files) { plot_against(keys, p, points, files); });
   }
   return batch.draw();

@@ -12,6 +12,8 @@
 namespace swarmagg {
 
 inline constexpr const char* kSweepSummaryFile = "sweep_summary.csv";
+// Every sweep plot's files (PNG, script, CSV) are named by this and the parameter's key.
+inline constexpr const char* kSweepPlotPrefix = "final-noa-vs-";
 
 // Throws InputError when the folder has no sweep_summary.csv (or it holds no noa rows).
 PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,

@@ -53,9 +53,14 @@ YAML::Node yaml_float(double value) {
   return YAML::Node(text);
 }
 
+// A numpy scalar or array, whose tolist() gives the Python scalar or (nested) list of it.
+bool is_numpy(py::handle value) {
+  return py::hasattr(value, "dtype") && py::hasattr(value, "tolist");
+}
+
 // A Python value as the YAML value of a world key: bool, int, float, str, None and lists of
-// them (numpy scalars through .item()). A str is what a quoted scalar of a world file would
-// be; an int beyond 64 bits is refused here, naming the key.
+// them (numpy scalars and arrays through .tolist()). A str is what a quoted scalar of a world file
+// would be; an int beyond 64 bits is refused here, naming the key.
 YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
   if (depth > kDeepestSetValue) {
     throw InputError("set['" + key + "']: nested more than " + std::to_string(kDeepestSetValue) +
@@ -71,8 +76,7 @@ YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
     for (py::handle item : value) list.push_back(yaml_value(item, key, depth + 1));
     return list;
   }
-  if (py::hasattr(value, "dtype") && py::hasattr(value, "item"))
-    return yaml_value(value.attr("item")(), key, depth + 1);  // an array may hold itself
+  if (is_numpy(value)) return yaml_value(value.attr("tolist")(), key, depth + 1);
   throw py::type_error("set['" + key + "']: expected a bool, int, float, str, None or a list " +
                        "of them, got " +
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -81,6 +85,7 @@ YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
 // A `set` value as `--set` would have been written: booleans and None in YAML's words,
 // numbers and strings as Python prints them, lists in brackets.
 std::string value_text(py::handle value) {
+  if (is_numpy(value)) return value_text(value.attr("tolist")());
   if (value.is_none()) return "null";
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
@@ -141,6 +146,7 @@ World with_overrides(const World& world, const std::vector<WorldOverride>& overr
   auto spec = std::make_shared<WorldSpec>(*world.spec);
   for (const WorldOverride& o : overrides) apply_override(*spec, o);
   check_world(*spec);
+  check_overrides_read(*spec, overrides);
   return {std::move(spec), world.changes};
 }
 

@@ -144,6 +144,13 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
   write_file_atomic(out / "world.resolved.yaml", resolved_world_text(spec));
 }
 
+bool holds_complete_run(const std::filesystem::path& folder) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(folder / "world.resolved.yaml", error) &&
+         std::filesystem::is_regular_file(folder / "summary.json", error) &&
+         std::filesystem::is_regular_file(folder / "timeseries.csv", error);
+}
+
 std::filesystem::path default_run_folder(const WorldSpec& spec) {
   return std::filesystem::path("runs") / spec.name;
 }

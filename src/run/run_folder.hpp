@@ -28,6 +28,9 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
                       TimeseriesSpool* timeseries = nullptr);
 
 // runs/<world name> unless --out says otherwise.
+// Whether `folder` holds a complete run: its world.resolved.yaml, summary.json and timeseries.csv.
+bool holds_complete_run(const std::filesystem::path& folder);
+
 std::filesystem::path default_run_folder(const WorldSpec& spec);
 
 }  // namespace swarmagg

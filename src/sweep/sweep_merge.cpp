@@ -11,6 +11,8 @@
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
 #include "output/timeseries_csv.hpp"
+#include "plot/run_plots.hpp"
+#include "plot/sweep_plots.hpp"
 #include "run/interrupt.hpp"
 #include "run/run_folder.hpp"
 #include "sweep/sweep_manifest.hpp"
@@ -217,11 +219,45 @@ std::vector<std::string> observable_names() {
   return names;
 }
 
+// A folder merge writes into without --force holds no run (its plots and tables would sit
+// beside the sweep's) and no other sweep (the merged tables would be replaced). Anything else
+// may stay: the shards' own folders and a cluster's logs (examples/slurm/submit.sh merges
+// results/shard-* into results/).
+void check_merge_folder(const std::filesystem::path& out, const SweepPlan& plan) {
+  std::error_code error;
+  if (std::filesystem::exists(out / kManifestFile, error)) {
+    const SweepPlan earlier = read_manifest(out);
+    if (earlier.name == plan.name) return;
+    throw InputError(out.string() + "/ holds the sweep '" + earlier.name + "', not '" + plan.name +
+                     "': pass --force to replace its merged files, or --out DIR");
+  }
+  if (std::filesystem::exists(out / "world.resolved.yaml", error)) {
+    throw InputError(out.string() +
+                     "/ holds a run (world.resolved.yaml): pass --force to merge the sweep "
+                     "beside it, or --out DIR");
+  }
+}
+
+// The sweep plots drew the earlier merge (another sweep's keys, or fewer runs): gone, for
+// `swarmagg plot` (or the sweep itself) to draw the new one; and an earlier merge's
+// partitions, when this one has none.
+void remove_earlier_merge_outputs(const std::filesystem::path& out, bool has_partitions) {
+  std::error_code error;
+  if (!has_partitions) std::filesystem::remove(out / kSweepPartitionsFile, error);
+  for (const std::filesystem::path& folder : {out, out / kPlotsFolder}) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      if (entry.path().filename().string().starts_with(kSweepPlotPrefix))
+        std::filesystem::remove(entry.path(), error);
+    }
+  }
+}
+
 }  // namespace
 
 MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
-                        const std::filesystem::path& out) {
+                        const std::filesystem::path& out, bool force) {
   const SweepPlan plan = common_plan(folders);
+  if (!force) check_merge_folder(out, plan);
   const std::vector<SweepRun> runs = expand_sweep(plan);
   const std::vector<std::filesystem::path> locations = run_locations(runs, folders);
   const std::vector<std::string> keys = parameter_keys(plan);
@@ -270,6 +306,7 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   };
   write("sweep_summary.csv", sweep_summary_csv(keys, observable_names(), finals));
   write(kManifestFile, manifest_text(plan));
+  remove_earlier_merge_outputs(out, partitions.appended());
   return report;
 }
 

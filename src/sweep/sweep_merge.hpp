@@ -20,7 +20,10 @@ struct MergeReport {
   std::vector<std::filesystem::path> files;
 };
 
+// `out` must be missing, empty or a folder of the same sweep, unless `force` (merge --force):
+// a run's folder, or another sweep's merge, would be mixed with this one. The sweep plots
+// of an earlier merge in `out` are removed (they drew other data): `swarmagg plot` draws anew.
 MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
-                        const std::filesystem::path& out);
+                        const std::filesystem::path& out, bool force = false);
 
 }  // namespace swarmagg

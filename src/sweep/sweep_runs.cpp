@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 
 namespace swarmagg {
 namespace {
@@ -23,8 +24,10 @@ std::string point_id(const std::vector<Assignment>& assignments) {
 
 // Cross-key checks (check_world) name the world's source, so the source names the point.
 WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
-  return load_world_text(plan.base_world, plan.source + " (point " + describe_point(point) + ")",
-                         point_overrides(point));
+  std::vector<WorldOverride> overrides = parse_overrides(point_overrides(point));
+  for (WorldOverride& o : overrides) o.origin = "parameters";
+  return load_world_text_with(plan.base_world,
+                              plan.source + " (point " + describe_point(point) + ")", overrides);
 }
 
 }  // namespace

@@ -6,8 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/cli_testing.hpp"
 #include "config/world_loader.hpp"
@@ -133,6 +135,36 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
   for (const char* name :
        {"world.resolved.yaml", "timeseries.csv", "summary.json", "notes.txt", "rates-notes.csv"})
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
+  std::filesystem::remove_all(out);
+}
+
+// summary.json's model errors describe the model beside the run: `model` into a run's folder
+// writes them, whether the run had no model (--no-model, or Ctrl-C while it was computed) or
+// another one (with measured variants this one lacks).
+TEST(Cli, ModelIntoARunFolderUpdatesItsModelErrors) {
+  const std::filesystem::path out = temp_dir("model-errors");
+  const auto variants = [&out] {
+    std::ifstream in(out / "summary.json");
+    std::vector<std::string> names;
+    const nlohmann::json errors = nlohmann::json::parse(in).value("model_errors", nlohmann::json());
+    if (errors.is_array())
+      for (const auto& e : errors) names.push_back(e.at("variant").get<std::string>());
+    return names;
+  };
+  const std::string world = "worlds/examples/demo.yaml --set run.duration=30 --quiet ";
+  ASSERT_EQ(swarmagg("run " + world + "--replicates 2 --no-plots --rates --no-model --out " +
+                     out.string())
+                .exit_code,
+            0);
+  EXPECT_THAT(variants(), ::testing::IsEmpty());
+  ASSERT_EQ(swarmagg("model " + world + "--rates " + (out / "rates.csv").string() + " --out " +
+                     out.string())
+                .exit_code,
+            0);
+  EXPECT_THAT(variants(), ::testing::Contains("measured"));
+  const Outcome without_rates = swarmagg("model " + world + "--out " + out.string());
+  ASSERT_EQ(without_rates.exit_code, 0) << without_rates.output;
+  EXPECT_THAT(variants(), ::testing::ElementsAre("collision", "original", "returns"));
   std::filesystem::remove_all(out);
 }
 

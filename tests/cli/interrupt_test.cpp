@@ -285,8 +285,8 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStep) {
   fs::remove_all(out);
 }
 
-// Ctrl-C after the simulation, while the models are computed: no later phase starts, and the
-// run exits as interrupted, not as a success.
+// Ctrl-C after the simulation, while the models are computed: no later phase starts, the run
+// exits as interrupted, not as a success, and says how to add the model to the kept run.
 TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
   const fs::path out = fresh_dir("model-phase");
   Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
@@ -299,6 +299,8 @@ TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
   expect_interrupted(o, 130);
   EXPECT_THAT(o.output, ::testing::Not(HasSubstr("drawing the plots")));
   EXPECT_TRUE(fs::exists(out / "world.resolved.yaml")) << "the simulation's outputs stay";
+  EXPECT_THAT(o.output, HasSubstr("its model is not; to add it: swarmagg model " + out.string() +
+                                  "/world.resolved.yaml --out " + out.string() + "\n"));
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   fs::remove_all(out);
 }

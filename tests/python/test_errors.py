@@ -35,6 +35,23 @@ def test_a_set_value_of_the_wrong_kind_names_the_key(demo):
         sa.load_world(str(demo), set={"robots.count": object()})
 
 
+def test_a_set_key_the_controller_does_not_read_is_refused(demo):
+    # The run would ignore it, while the world's changes list it.
+    with pytest.raises(sa.WorldError, match=r"controller\.approach_radius: controller type "
+                                            r"'bayindir' of .* does not read this key"):
+        sa.load_world(str(demo), set={"controller.approach_radius": 12})
+
+
+def test_set_takes_numpy_arrays_as_lists(tmp_path):
+    path = tmp_path / "cockroach.yaml"
+    path.write_text("name: c\nrobots: {count: 5}\ncontroller: {type: cockroach}\n"
+                    "run: {duration: 1, replicates: 1}\n")
+    world = sa.load_world(path, set={"controller.stop_probability": np.array([0.1, 0.4])})
+    assert "stop_probability: [0.1, 0.4]" in world.to_yaml()
+    overrides = sa.run(world, threads=1).summary()["overrides"]
+    assert overrides == ["controller.stop_probability=[0.1, 0.4]"]
+
+
 def test_set_takes_python_values(demo):
     world = sa.load_world(str(demo), set={"robots.count": 12, "controller.join": False,
                                           "engine.type": "box2d", "run.duration": 2.5})

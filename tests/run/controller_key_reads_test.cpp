@@ -1,5 +1,6 @@
 // A shared controller key that a controller's registration does not list is left out of its
-// resolved world (world.resolved.yaml, `validate`) and refused in its world files. It must
+// resolved world (world.resolved.yaml, `validate`) and refused in its world files and from
+// --set, but `reproduce --set` applies one override to worlds of every controller. It must
 // then not act on its runs either, or the resolved world would not load back as the world
 // that ran: controller.tumble once turned Soysal searchers through `--set` while their
 // registration left it out. Each registered controller is run with every shared key it does
@@ -12,6 +13,7 @@
 
 #include "config/controller_catalog.hpp"
 #include "config/world_loader.hpp"
+#include "config/world_override.hpp"
 #include "run/replicate.hpp"
 #include "run/state_hash.hpp"
 
@@ -48,10 +50,10 @@ bool is_shared_controller_key(const WorldKey& key) {
 
 std::uint64_t hash_after_steps(const std::string& type, const std::vector<std::string>& extra) {
   // The demo world is sparse enough that Soysal searchers perceive nobody for a while.
-  std::vector<std::string> overrides = {"controller.type=" + type, "run.seed=5"};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const WorldSpec spec =
-      load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/demo.yaml", overrides);
+  WorldSpec spec = load_world(std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/demo.yaml",
+                              {"controller.type=" + type, "run.seed=5"});
+  // Applied as `reproduce --set` applies them: the loader refuses an unlisted key from --set.
+  for (const WorldOverride& o : parse_overrides(extra)) apply_override(spec, o);
   Replicate replicate(spec, 0);
   for (int step = 0; step < 400; ++step) replicate.step();
   return state_hash(replicate);

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/sweep_loader.hpp"
+#include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_runner.hpp"
 #include "sweep/sweep_summary.hpp"
 #include "sweep_testing.hpp"
@@ -56,6 +57,40 @@ TEST_F(SweepMergeTest, ShardsMergeToTheUnshardedSweepByteForByte) {
   // The order of the folders does not matter either.
   merge_sweep({dir_ / "shard-3", dir_ / "shard-1", dir_ / "shard-2"}, dir_ / "reordered");
   expect_same_files("full-merged", "reordered");
+}
+
+// A merge into another sweep's merged folder, or into a run's folder, would mix their files
+// with its own: refused unless forced. The sweep plots of the earlier merge go either way.
+// (Other files may stay: the shards' folders and logs, as examples/slurm/submit.sh merges.)
+TEST_F(SweepMergeTest, AnotherSweepsFolderOrOtherFilesAreMergedIntoOnlyWithForce) {
+  run(testing::kGridSweep, "full");
+  merge_sweep({dir_ / "full"}, dir_ / "m");
+  for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
+                           "sweep_partitions.csv"})
+    testing::write_file_text(dir_ / "m" / name, "earlier\n");
+  run("name: other\nbase: worlds/tiny.yaml\nparameters:\n  robots.count: [10]\nreplicates: 1\n"
+      "seed: 1\n",
+      "o");
+  EXPECT_THAT([&] { merge_sweep({dir_ / "o"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("m/ holds the sweep 'grid', not 'other': pass --force")));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "m" / "final-noa-vs-robots.count.png"));
+  merge_sweep({dir_ / "o"}, dir_ / "m", true);
+  EXPECT_EQ(read_manifest(dir_ / "m").name, "other");
+  for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
+                           "sweep_partitions.csv"})
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "m" / name)) << name;
+  // The same sweep merges again without --force (more shards done since, say).
+  merge_sweep({dir_ / "o"}, dir_ / "m");
+  testing::write_file_text(dir_ / "run" / "timeseries.csv", "a run's\n");
+  testing::write_file_text(dir_ / "run" / "world.resolved.yaml", "name: tiny\n");
+  EXPECT_THAT([&] { merge_sweep({dir_ / "o"}, dir_ / "run"); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("run/ holds a run (world.resolved.yaml): pass --force")));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "run" / "sweep_summary.csv"));
+  merge_sweep({dir_ / "o"}, dir_ / "run", true);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "run" / "sweep_summary.csv"));
+  EXPECT_EQ(read_file_text(dir_ / "run" / "timeseries.csv"), "a run's\n");
 }
 
 TEST_F(SweepMergeTest, TheTimeseriesIsTidyWithParametersFirst) {

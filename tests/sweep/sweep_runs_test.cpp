@@ -37,6 +37,27 @@ TEST(SweepPoints, LongIdsStayShortAndUnique) {
   EXPECT_NE(points[0].id, points[1].id);
 }
 
+// A point whose controller would ignore a swept key would differ from its neighbours only in
+// its seed, while its folder and the merged tables name the key as changed.
+TEST_F(SweepTest, APointSettingAKeyItsControllerDoesNotReadIsRefused) {
+  const SweepPlan plan = load_sweep(
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.approach_radius: [8, 12]\n"));
+  try {
+    expand_sweep(plan);
+    ADD_FAILURE() << "a Bayindir sweep over approach_radius was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("parameters: controller.approach_radius: controller type "
+                                    "'bayindir' of "));
+    EXPECT_THAT(e.what(), HasSubstr("(point controller.approach_radius=8) does not read"));
+  }
+  // Over controller types, each point is checked against its own type.
+  const SweepPlan types = load_sweep(
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [bayindir, soysal]\n"
+                 "  controller.p_leave: [0.001]\n",
+                 "types.yaml"));
+  EXPECT_THROW(expand_sweep(types), InputError);
+}
+
 TEST_F(SweepTest, EachRunIsOneReplicateWithItsOwnSeed) {
   const std::vector<SweepRun> runs = expand_sweep(load_sweep(sweep_file(testing::kGridSweep)));
   ASSERT_EQ(runs.size(), 12u);
