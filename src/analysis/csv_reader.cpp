@@ -49,15 +49,24 @@ void throw_not_a_number(const std::string& where, const std::string& column,
 }
 
 CsvReader::CsvReader(const std::filesystem::path& file) : in_(file), source_(file.string()) {
-  if (!in_) throw InputError("cannot read " + source_);
+  if (!in_) throw InputError(unreadable());
   if (std::getline(in_, text_) && !text_.empty()) split_line(text_, header_);
   throw_if_unreadable();
+}
+
+// Why the file cannot be read, in the words a user can act on.
+std::string CsvReader::unreadable() const {
+  std::error_code error;
+  if (std::filesystem::is_directory(source_, error))
+    return source_ + ": is a folder; expected a CSV file";
+  if (!std::filesystem::exists(source_, error)) return source_ + ": no such file";
+  return "cannot read " + source_;
 }
 
 // A folder opens as a file and fails only when read (EISDIR), as does a failing disk: not the
 // end of the file.
 void CsvReader::throw_if_unreadable() const {
-  if (in_.bad()) throw InputError("cannot read " + source_);
+  if (in_.bad()) throw InputError(unreadable());
 }
 
 std::size_t CsvReader::column(const std::string& name) const {

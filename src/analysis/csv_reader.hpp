@@ -42,6 +42,7 @@ class CsvReader {
   std::size_t line_ = 1;
 
   void throw_if_unreadable() const;
+  std::string unreadable() const;
 };
 
 // Shared with CsvTable, which reads every row at once.

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
 
 #include "analysis/csv_reader.hpp"
 #include "analysis/noa_error.hpp"
 #include "analysis/partition_comparison.hpp"
+#include "core/errors.hpp"
 #include "models/noise_floor.hpp"
 #include "output/atomic_file.hpp"
 
@@ -81,15 +83,31 @@ nlohmann::json model_errors_json(const std::vector<ModelError>& errors) {
   return list;
 }
 
-void write_model_errors(const std::filesystem::path& run_folder) {
+namespace {
+
+// summary.json rewritten with `change` applied; InputError when it is no JSON object.
+void rewrite_summary(const std::filesystem::path& run_folder,
+                     const std::function<void(nlohmann::json&)>& change) {
   const std::filesystem::path file = run_folder / "summary.json";
   nlohmann::json summary;
   {
     std::ifstream in(file);
-    summary = nlohmann::json::parse(in);
+    summary = nlohmann::json::parse(in, nullptr, false);
   }
-  summary["model_errors"] = model_errors_json(run_model_errors(run_folder));
+  if (!summary.is_object()) throw InputError(file.string() + ": not a run's summary (JSON object)");
+  change(summary);
   write_file_atomic(file, summary.dump(2) + "\n");
+}
+
+}  // namespace
+
+void write_model_errors(const std::filesystem::path& run_folder) {
+  const nlohmann::json errors = model_errors_json(run_model_errors(run_folder));
+  rewrite_summary(run_folder, [&](nlohmann::json& summary) { summary["model_errors"] = errors; });
+}
+
+void remove_model_errors(const std::filesystem::path& run_folder) {
+  rewrite_summary(run_folder, [](nlohmann::json& summary) { summary.erase("model_errors"); });
 }
 
 }  // namespace swarmagg

@@ -29,7 +29,10 @@ std::vector<ModelError> run_model_errors(const std::filesystem::path& run_folder
 
 nlohmann::json model_errors_json(const std::vector<ModelError>& errors);
 
-// Adds (or replaces) summary.json's model_errors, atomically.
+// Adds (or replaces) summary.json's model_errors, atomically; InputError when summary.json
+// or a series is damaged.
 void write_model_errors(const std::filesystem::path& run_folder);
+// Removes them: a model of another run replaced the one they described.
+void remove_model_errors(const std::filesystem::path& run_folder);
 
 }  // namespace swarmagg

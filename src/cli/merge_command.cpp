@@ -27,6 +27,12 @@ int merge_command(const MergeCommandOptions& command) {
     for (const std::filesystem::path& file : report.files)
       std::cout << " " << file.filename().string();
     std::cout << "\n";
+    if (!report.removed.empty()) {
+      std::cout << "removed what the earlier merge in " << command.out
+                << "/ drew or held that this one outdates:";
+      for (const std::filesystem::path& file : report.removed) std::cout << " " << file.string();
+      std::cout << "\n`swarmagg plot " << command.out << "` draws the sweep's plots\n";
+    }
   }
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "config/world_difference.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -59,6 +60,35 @@ std::string measured_start_note(const MeasuredTerms& terms, const std::string& r
   return text.str();
 }
 
+// In a run's folder, summary.json's model errors describe the model beside the run: the one
+// just written, not an earlier model's (which may list a variant this one has not), nor none
+// (a run stopped before its model, or run with --no-model). A model of another run (its
+// length, recorded steps or replicates differ: the errors and noise floors would compare
+// unlike things) leaves none. Returns what was done, for the user; a damaged summary is a
+// warning, since the model itself was written.
+std::optional<std::string> update_run_model_errors(const std::filesystem::path& out,
+                                                   const WorldSpec& spec) {
+  if (!holds_complete_run(out)) return std::nullopt;
+  const std::string folder = out.string();
+  try {
+    const std::vector<std::string> differences =
+        measured_run_differences(resolved_world_in(out), spec);
+    if (differences.empty()) {
+      write_model_errors(out);
+      return "the run's summary.json has their errors; `swarmagg plot " + folder +
+             "` redraws its plots with them";
+    }
+    remove_model_errors(out);
+    return "the run in " + folder + "/ is another run (" + differences_text(differences) +
+           "): its summary.json keeps no model_errors; `swarmagg model " + folder +
+           "/world.resolved.yaml --out " + folder + "` gives them";
+  } catch (const InputError& e) {
+    std::cerr << "warning: the model is written, but not its errors in the run's summary.json: "
+              << e.what() << "\n";
+    return std::nullopt;
+  }
+}
+
 int model_command(const ModelCommandOptions& options) {
   const WorldSpec spec = options.world.load();
   const std::filesystem::path out =
@@ -75,11 +105,7 @@ int model_command(const ModelCommandOptions& options) {
   const std::vector<VariantPrediction> predictions = write_model_outputs(
       spec, pending_predictions(spec, measured ? &*measured : nullptr, sample ? &*sample : nullptr),
       out, options.progress.shown(options.quiet));
-  // In a run's folder, summary.json's model errors describe the model beside the run: the one
-  // just written, not an earlier model's (which may list a variant this one has not), nor none
-  // (a run interrupted before its model, or run with --no-model).
-  const bool in_run = holds_complete_run(out);
-  if (in_run) write_model_errors(out);
+  const std::optional<std::string> errors_note = update_run_model_errors(out, spec);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
@@ -92,10 +118,7 @@ int model_command(const ModelCommandOptions& options) {
   }
   std::cout << spec.name << ": " << predictions.size() << " model variants in " << elapsed.count()
             << " s; outputs in " << out.string() << "/\n";
-  if (in_run) {
-    std::cout << "the run's summary.json has their errors; `swarmagg plot " << out.string()
-              << "` redraws its plots with them\n";
-  }
+  if (errors_note) std::cout << *errors_note << "\n";
   return 0;
 }
 

@@ -1,4 +1,7 @@
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -148,14 +151,72 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
   if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
 }
 
-// Ctrl-C while the models are computed keeps the simulation, a complete run (its
-// world.resolved.yaml is written): says so, and how to add the model it lacks.
-std::string model_left_out(const std::filesystem::path& out, bool rates) {
-  const std::string folder = out.string();
-  return "swarmagg: the simulation's outputs in " + folder +
-         "/ are complete, its model is not; to add it: swarmagg model " + folder +
-         "/world.resolved.yaml --out " + folder +
-         (rates ? " --rates " + folder + "/rates.csv" : "") + "\n";
+// `text` as one word of a POSIX shell command: as it is when it is plain, else in single
+// quotes, so that a printed command can be pasted.
+std::string shell_word(const std::string& text) {
+  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_./-+=:,@", c) != nullptr;
+  });
+  if (plain) return text;
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Ctrl-C after the simulation's outputs were written (a complete run: its world.resolved.yaml
+// is there) and before its rates or model were: says so, and which commands add them. The
+// measured variants and a measured start need the rates first.
+std::string what_is_left(const std::filesystem::path& out, const RunCommandOptions& options,
+                         bool rates_measured) {
+  const std::string folder = shell_word(out.string());
+  const std::string world = shell_word((out / "world.resolved.yaml").string());
+  const std::string rates_csv = shell_word((out / "rates.csv").string());
+  const bool rates_wanted = options.rates || (rates_measured && !options.no_model);
+  std::string commands;
+  std::error_code error;
+  if (rates_wanted && !std::filesystem::exists(out / "rates.csv", error))
+    commands = "swarmagg rates " + world + " --out " + folder;
+  if (!options.no_model) {
+    commands += (commands.empty() ? "" : " && ") + std::string("swarmagg model ") + world +
+                (rates_wanted ? " --rates " + rates_csv : "") + " --out " + folder;
+  }
+  if (commands.empty()) return "";
+  return "swarmagg: the simulation's outputs in " + out.string() + "/ are complete, not the " +
+         (options.no_model ? "rates" : "model") + " that follows them; to add it: " + commands +
+         "\n";
+}
+
+struct RatesAndModel {
+  std::optional<MeasuredTerms> measured;
+  std::vector<RateRow> rows;
+};
+
+// What follows the simulation's outputs: the rates it measured (rates.csv with --rates) and
+// the model predictions with their errors (model.csv, model-timeseries/, summary.json).
+RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptions& options,
+                                    const MeasuredRun& run, const std::filesystem::path& out) {
+  // The models' start, for the rates' `initial` rows and the models (unless they refuse the
+  // world: then it would be drawn for nothing, seconds for a large swarm).
+  const std::optional<PlacementSample> start = run.rates || (!options.no_model && predictable(spec))
+                                                   ? placement_start(spec, 0)
+                                                   : std::nullopt;
+  const PlacementSample* sample = start ? &*start : nullptr;
+  RatesAndModel written;
+  if (run.rates) {
+    written.rows = measured_rate_rows(spec, *run.rates, sample);
+    if (options.rates) {
+      write_rate_outputs(spec, *run.rates, written.rows, out,
+                         options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw);
+    }
+    written.measured = measured_terms(written.rows);
+  }
+  if (!options.no_model) {
+    options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
+    write_predictions(spec, out, written.measured ? &*written.measured : nullptr, sample,
+                      options.progress.shown(options.quiet));
+    write_model_errors(out);
+  }
+  return written;
 }
 
 // Every output path is checked before the first step: a long run must not be lost to a
@@ -227,33 +288,15 @@ int run_command(const RunCommandOptions& options) {
     std::filesystem::remove(out / trajectory_layout::kFileName);
   }
   write_run_folder(spec, result, out, options.world.changes(), &timeseries);
-  // The models' start, for the rates' `initial` rows and the models (unless they refuse the
-  // world: then it would be drawn for nothing, seconds for a large swarm).
-  const std::optional<PlacementSample> start = run.rates || (!options.no_model && predictable(spec))
-                                                   ? placement_start(spec, 0)
-                                                   : std::nullopt;
-  const PlacementSample* sample = start ? &*start : nullptr;
-  std::optional<MeasuredTerms> measured;
-  std::vector<RateRow> rows;
-  if (run.rates) {
-    rows = measured_rate_rows(spec, *run.rates, sample);
-    if (options.rates) {
-      write_rate_outputs(spec, *run.rates, rows, out,
-                         options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw);
-    }
-    measured = measured_terms(rows);
+  RatesAndModel after;
+  try {
+    after = write_rates_and_model(spec, options, run, out);
+  } catch (const Interrupted&) {
+    std::cerr << what_is_left(out, options, run.rates.has_value());
+    throw;
   }
-  if (!options.no_model) {
-    options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
-    try {
-      write_predictions(spec, out, measured ? &*measured : nullptr, sample,
-                        options.progress.shown(options.quiet));
-      write_model_errors(out);
-    } catch (const Interrupted&) {
-      std::cerr << model_left_out(out, options.rates);
-      throw;
-    }
-  }
+  const std::vector<RateRow>& rows = after.rows;
+  const std::optional<MeasuredTerms>& measured = after.measured;
   if (!options.quiet && options.rates) {
     for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
     if (controller_rules(spec).model != ModelFamily::Encounters)

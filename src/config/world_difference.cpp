@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
 #include "config/world_loader.hpp"
@@ -29,10 +31,22 @@ void flatten(const YAML::Node& node, const std::string& key, FlatKeys& keys) {
   keys.emplace_back(key, text.c_str());
 }
 
-FlatKeys system_keys(const YAML::Node& world) {
+// The run keys a model's errors against a run depend on: its length, its recorded steps and
+// (for the noise floors, batches of run.replicates) its replicates.
+constexpr const char* kMeasuredRunKeys[] = {"run.duration", "run.record_every", "run.replicates"};
+
+FlatKeys system_keys(const YAML::Node& world, bool with_run) {
   FlatKeys keys;
   for (const char* section : kSystemSections) {
     if (world[section]) flatten(world[section], section, keys);
+  }
+  if (!with_run || !world["run"]) return keys;
+  FlatKeys run;
+  flatten(world["run"], "run", run);
+  for (const auto& [key, value] : run) {
+    if (std::find(std::begin(kMeasuredRunKeys), std::end(kMeasuredRunKeys), key) !=
+        std::end(kMeasuredRunKeys))
+      keys.emplace_back(key, value);
   }
   return keys;
 }
@@ -64,17 +78,16 @@ bool inert(const std::string& key, const FlatKeys& a, const FlatKeys& b) {
   return key.starts_with("engine.box2d.") && kinematic(a) && kinematic(b);
 }
 
-}  // namespace
-
-std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here) {
+std::vector<std::string> differences_of(const std::string& there, const WorldSpec& here,
+                                        bool with_run) {
   FlatKeys theirs;
   try {
-    theirs = system_keys(YAML::Load(as_written_here(there)));
+    theirs = system_keys(YAML::Load(as_written_here(there)), with_run);
   } catch (const YAML::Exception&) {
     theirs.clear();
   }
   if (theirs.empty()) return {"the world text: unreadable"};
-  const FlatKeys ours = system_keys(YAML::Load(world_to_yaml(here)));
+  const FlatKeys ours = system_keys(YAML::Load(world_to_yaml(here)), with_run);
   std::vector<std::string> differences;
   for (const auto& [key, value] : ours) {
     const std::string* other = value_of(theirs, key);
@@ -86,6 +99,16 @@ std::vector<std::string> system_differences(const std::string& there, const Worl
     if (!value_of(ours, key)) differences.push_back(key + ": " + value + " there, none here");
   }
   return differences;
+}
+
+}  // namespace
+
+std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here) {
+  return differences_of(there, here, false);
+}
+
+std::vector<std::string> measured_run_differences(const std::string& there, const WorldSpec& here) {
+  return differences_of(there, here, true);
 }
 
 std::string differences_text(const std::vector<std::string>& differences) {

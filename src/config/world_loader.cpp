@@ -113,7 +113,8 @@ class DocumentReader {
     }
     const WorldKey* key = find_world_key(path);
     if (key == nullptr) unknown_key(at, path);
-    apply_value(spec_, *key, value, where(source_, value));
+    // A missing value's mark is where the next token starts (the next line): its key names it.
+    apply_value(spec_, *key, value, value.IsNull() ? at : where(source_, value));
   }
 
   WorldSpec& spec_;
@@ -284,20 +285,29 @@ std::string readers_of(const std::string& path) {
   return types.empty() ? "" : " (read by controller type " + types + ")";
 }
 
+// A controller.* key (not the type itself) that `controller` does not read.
+bool unread_controller_key(const ControllerCatalogEntry& controller, const std::string& path) {
+  return path.starts_with("controller.") && path != "controller.type" &&
+         find_world_key(path) != nullptr && !reads(controller, path);
+}
+
+// A sweep over controller types sets each type's keys in every point, so a world whose
+// controller.type an override sets may hold keys its type does not read.
+bool sets_controller_type(const std::vector<WorldOverride>& overrides) {
+  return std::any_of(overrides.begin(), overrides.end(),
+                     [](const WorldOverride& o) { return o.key == "controller.type"; });
+}
+
 // A controller key the world file gives that its controller never reads would be dropped in
 // silence (the resolved world writes only what acts on the run): a Soysal key left in a file
-// switched to Bayindir, say. A file whose controller.type an override sets is exempt, as a
-// sweep over controller types needs; the overrides themselves are checked (check_overrides_read).
+// switched to Bayindir, say. The overrides are checked too (check_overrides_read).
 void check_controller_reads(const WorldSpec& spec, const std::map<std::string, std::string>& seen,
                             const std::vector<WorldOverride>& overrides) {
+  if (sets_controller_type(overrides)) return;
   check_overrides_read(spec, overrides);
-  for (const WorldOverride& override : overrides) {
-    if (override.key == "controller.type") return;
-  }
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
   for (const auto& [path, at] : seen) {
-    if (!path.starts_with("controller.") || path == "controller.type") continue;
-    if (find_world_key(path) == nullptr || reads(controller, path)) continue;
+    if (!unread_controller_key(controller, path)) continue;
     throw InputError(at + ": " + path + ": controller type '" + spec.controller.type +
                      "' does not read this key" + readers_of(path) +
                      "; remove it or change controller.type");
@@ -342,19 +352,28 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
 
 void apply_override(WorldSpec& spec, const WorldOverride& override) {
   const WorldKey* key = find_world_key(override.key);
+  if (key == nullptr && is_block(override.key)) {
+    const std::vector<std::string>& paths = world_key_paths();
+    const auto first = std::find_if(paths.begin(), paths.end(), [&](const std::string& path) {
+      return path.starts_with(override.key + ".");
+    });
+    throw InputError(override.origin + ": '" + override.key +
+                     "' is a block of keys: set one of them" +
+                     (first == paths.end() ? "" : ", e.g. " + *first + "=..."));
+  }
   if (key == nullptr) unknown_key(override.origin, override.key);
   apply_value(spec, *key, override.value, override.origin);
 }
 
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides) {
+  if (sets_controller_type(overrides)) return;
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
   for (const WorldOverride& override : overrides) {
-    const std::string& path = override.key;
-    if (!path.starts_with("controller.") || path == "controller.type") continue;
-    if (find_world_key(path) == nullptr || reads(controller, path)) continue;
-    throw InputError(override.origin + ": " + path + ": controller type '" + spec.controller.type +
-                     "' of " + spec.source + " does not read this key, so the run would ignore it" +
-                     readers_of(path));
+    if (!unread_controller_key(controller, override.key)) continue;
+    throw InputError(override.origin + ": " + override.key + ": the world's controller type '" +
+                     spec.controller.type + "' (" + spec.source +
+                     ") does not read this key, so the run would ignore it" +
+                     readers_of(override.key) + "; remove it or set controller.type too");
   }
 }
 

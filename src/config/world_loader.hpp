@@ -25,7 +25,8 @@ void apply_override(WorldSpec& spec, const WorldOverride& override);
 void check_world(const WorldSpec& spec);
 // Refuses (InputError) an override of a controller.* key that the world's controller type does
 // not read: the run would ignore it, while summary.json and the plots list it as a change.
-// `reproduce` applies one override to worlds of several controllers, and does not call this.
+// Overrides that set controller.type themselves pass (a sweep over controller types), and
+// `reproduce`, which applies one override to worlds of several controllers, does not call this.
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides);
 
 }  // namespace swarmagg

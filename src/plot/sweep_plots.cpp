@@ -125,6 +125,11 @@ void plot_against(const std::vector<std::string>& keys, std::size_t p,
 
 }  // namespace
 
+FigureFiles sweep_plot_files(const std::filesystem::path& out, const std::string& key,
+                             const PlotSize& size) {
+  return {out / kPlotsFolder, "final-noa-vs-" + key, size, ".."};
+}
+
 PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,
                              const std::filesystem::path& out, const PlotSize& size) {
   const auto summary = sweep_folder / kSweepSummaryFile;
@@ -144,7 +149,7 @@ PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,
   std::filesystem::create_directories(out / kPlotsFolder);
   PlotCollection batch;
   for (std::size_t p = 0; p < keys.size(); ++p) {
-    batch.prepare({out / kPlotsFolder, kSweepPlotPrefix + keys[p], size, ".."},
+    batch.prepare(sweep_plot_files(out, keys[p], size),
                   [&](const FigureFiles& files) { plot_against(keys, p, points, files); });
   }
   return batch.draw();

@@ -5,15 +5,19 @@
 // other parameters. Like a run's plots, the PNGs go to the top of `out`, their scripts
 // and CSVs to `out`/plots/.
 #include <filesystem>
+#include <string>
 
+#include "plot/figure_files.hpp"
 #include "plot/png_terminal.hpp"
 #include "plot/run_plots.hpp"
 
 namespace swarmagg {
 
 inline constexpr const char* kSweepSummaryFile = "sweep_summary.csv";
-// Every sweep plot's files (PNG, script, CSV) are named by this and the parameter's key.
-inline constexpr const char* kSweepPlotPrefix = "final-noa-vs-";
+// The files of the sweep plot against parameter `key`: out/final-noa-vs-<key>.png, its script
+// and CSV in out/plots/.
+FigureFiles sweep_plot_files(const std::filesystem::path& out, const std::string& key,
+                             const PlotSize& size = {});
 
 // Throws InputError when the folder has no sweep_summary.csv (or it holds no noa rows).
 PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,

@@ -51,6 +51,10 @@ std::string rates_csv(const std::vector<RateRow>& rows) {
 }
 
 std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
+  if (std::error_code error; std::filesystem::is_directory(file, error)) {
+    throw InputError(file.string() + ": is a folder; expected the rates.csv of `swarmagg rates` " +
+                     "or `run --rates` (" + (file / "rates.csv").string() + "?)");
+  }
   CsvTable table;
   try {
     table = read_csv(file);

@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "rates/rate_rows.hpp"
 #include "rates/rates_origin.hpp"
+#include "run/run_folder.hpp"
 
 namespace swarmagg {
 namespace {
@@ -51,9 +52,7 @@ void refuse_another_worlds_run(const std::filesystem::path& out, const WorldSpec
     throw InputError(resolved.string() + " is not a file: `" + command +
                      "` cannot tell whose folder this is." + pass_out_or_force());
   }
-  std::ifstream in(resolved);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  refuse_another_system(text, spec, out, "a run", command,
+  refuse_another_system(resolved_world_in(out), spec, out, "a run", command,
                         "` would write this world's outputs beside that run, whose plots would "
                         "draw them as its own");
 }

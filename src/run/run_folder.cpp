@@ -1,11 +1,14 @@
 #include "run/run_folder.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "config/world_keys.hpp"
 #include "config/world_writer.hpp"
 #include "controllers/controller_registry.hpp"
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
@@ -149,6 +152,14 @@ bool holds_complete_run(const std::filesystem::path& folder) {
   return std::filesystem::is_regular_file(folder / "world.resolved.yaml", error) &&
          std::filesystem::is_regular_file(folder / "summary.json", error) &&
          std::filesystem::is_regular_file(folder / "timeseries.csv", error);
+}
+
+std::string resolved_world_in(const std::filesystem::path& folder) {
+  std::ifstream in(folder / "world.resolved.yaml", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError((folder / "world.resolved.yaml").string() + ": cannot be read");
+  return text.str();
 }
 
 std::filesystem::path default_run_folder(const WorldSpec& spec) {

@@ -27,10 +27,12 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
                       const std::vector<std::string>& overrides = {},
                       TimeseriesSpool* timeseries = nullptr);
 
-// runs/<world name> unless --out says otherwise.
 // Whether `folder` holds a complete run: its world.resolved.yaml, summary.json and timeseries.csv.
 bool holds_complete_run(const std::filesystem::path& folder);
+// The text of the folder's world.resolved.yaml; InputError when it cannot be read.
+std::string resolved_world_in(const std::filesystem::path& folder);
 
+// runs/<world name> unless --out says otherwise.
 std::filesystem::path default_run_folder(const WorldSpec& spec);
 
 }  // namespace swarmagg

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "analysis/csv_reader.hpp"
@@ -238,18 +240,47 @@ void check_merge_folder(const std::filesystem::path& out, const SweepPlan& plan)
   }
 }
 
-// The sweep plots drew the earlier merge (another sweep's keys, or fewer runs): gone, for
-// `swarmagg plot` (or the sweep itself) to draw the new one; and an earlier merge's
-// partitions, when this one has none.
-void remove_earlier_merge_outputs(const std::filesystem::path& out, bool has_partitions) {
+// What an earlier merge in `out` left that this one may outdate: its plots (drawn from its
+// sweep_summary.csv, by its parameters' keys) and its partitions.
+struct EarlierMerge {
+  std::vector<std::string> keys;
+  std::string summary;  // sweep_summary.csv's text
+};
+
+std::optional<EarlierMerge> earlier_merge(const std::filesystem::path& out) {
   std::error_code error;
-  if (!has_partitions) std::filesystem::remove(out / kSweepPartitionsFile, error);
-  for (const std::filesystem::path& folder : {out, out / kPlotsFolder}) {
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-      if (entry.path().filename().string().starts_with(kSweepPlotPrefix))
-        std::filesystem::remove(entry.path(), error);
-    }
+  if (!std::filesystem::exists(out / kManifestFile, error)) return std::nullopt;
+  try {
+    std::ifstream in(out / kSweepSummaryFile, std::ios::binary);
+    std::ostringstream summary;
+    summary << in.rdbuf();
+    return EarlierMerge{parameter_keys(read_manifest(out)), summary.str()};
+  } catch (const InputError&) {
+    return std::nullopt;  // a damaged manifest (merge --force): no plots of its to know
   }
+}
+
+// The earlier merge's plots drew another summary (another sweep, or fewer runs): they go,
+// for `swarmagg plot` (or the sweep itself) to draw the new one; a plot of the same summary
+// stays. So does nothing else in the folder. An earlier merge's partitions go when this one
+// has none. Returns what was removed.
+std::vector<std::filesystem::path> remove_outdated(const std::filesystem::path& out,
+                                                   const std::optional<EarlierMerge>& earlier,
+                                                   const std::string& summary,
+                                                   bool has_partitions) {
+  std::vector<std::filesystem::path> removed;
+  std::error_code error;
+  const auto remove = [&](const std::filesystem::path& file) {
+    if (std::filesystem::remove(file, error)) removed.push_back(file);
+  };
+  if (!has_partitions) remove(out / kSweepPartitionsFile);
+  if (!earlier || earlier->summary == summary) return removed;
+  for (const std::string& key : earlier->keys) {
+    const FigureFiles files = sweep_plot_files(out, key);
+    for (const std::filesystem::path& file : {files.png(), files.script(), files.csv("")})
+      remove(file);
+  }
+  return removed;
 }
 
 }  // namespace
@@ -258,6 +289,7 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
                         const std::filesystem::path& out, bool force) {
   const SweepPlan plan = common_plan(folders);
   if (!force) check_merge_folder(out, plan);
+  const std::optional<EarlierMerge> earlier = earlier_merge(out);
   const std::vector<SweepRun> runs = expand_sweep(plan);
   const std::vector<std::filesystem::path> locations = run_locations(runs, folders);
   const std::vector<std::string> keys = parameter_keys(plan);
@@ -288,7 +320,7 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);
     }
   }
-  MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}};
+  MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}, {}};
   // Every file complete and synced before the first takes its place: a full disk fails them
   // all, and a merge stopped before the first rename leaves the earlier merged files as they
   // were (not transactional: a rename failing after it would leave old and new side by side).
@@ -304,9 +336,10 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
     write_file_atomic(out / name, text);
     report.files.push_back(out / name);
   };
-  write("sweep_summary.csv", sweep_summary_csv(keys, observable_names(), finals));
+  const std::string summary = sweep_summary_csv(keys, observable_names(), finals);
+  write(kSweepSummaryFile, summary);
   write(kManifestFile, manifest_text(plan));
-  remove_earlier_merge_outputs(out, partitions.appended());
+  report.removed = remove_outdated(out, earlier, summary, partitions.appended());
   return report;
 }
 

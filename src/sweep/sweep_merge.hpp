@@ -18,11 +18,15 @@ struct MergeReport {
   int points = 0;
   int runs = 0;
   std::vector<std::filesystem::path> files;
+  // The earlier merge's files this one outdated: its plots (of another summary) and
+  // partitions (when this merge has none).
+  std::vector<std::filesystem::path> removed;
 };
 
-// `out` must be missing, empty or a folder of the same sweep, unless `force` (merge --force):
-// a run's folder, or another sweep's merge, would be mixed with this one. The sweep plots
-// of an earlier merge in `out` are removed (they drew other data): `swarmagg plot` draws anew.
+// Unless `force` (merge --force), `out` must hold no run (world.resolved.yaml) and no other
+// sweep's manifest: their files would be mixed with this merge's. Other files may stay (the
+// shards' folders, a cluster's logs). The sweep plots of an earlier merge in `out` whose
+// summary differs from this one's are removed: `swarmagg plot` draws them anew.
 MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
                         const std::filesystem::path& out, bool force = false);
 

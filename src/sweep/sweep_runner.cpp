@@ -96,13 +96,15 @@ void check_is_this_sweeps_folder(const std::filesystem::path& out, const SweepPl
     const SweepPlan earlier = read_manifest(out);
     if (earlier.name == plan.name || replace) return;
     throw InputError(out.string() + "/ holds the sweep '" + earlier.name + "', not '" + plan.name +
-                     "'; pass --force to write this one there anyway, or --out DIR");
+                     "'; pass --force to write this one there anyway, or --out DIR (force=True or "
+                     "out= in Python)");
   }
   std::error_code missing;
   for (const auto& entry : std::filesystem::directory_iterator(out, missing)) {
     if (entry.path().filename().string().starts_with(".")) continue;
-    throw InputError(out.string() + "/ holds files but no " + kManifestFile +
-                     ": not a sweep's folder (an earlier run?); use --out DIR for the sweep");
+    throw InputError(
+        out.string() + "/ holds files but no " + kManifestFile +
+        ": not a sweep's folder (an earlier run?); use --out DIR (out= in Python) for the sweep");
   }
 }
 

@@ -93,6 +93,11 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       {"rnu worlds/examples/demo.yaml", "unknown command 'rnu'; did you mean 'run'?"},
       {"frobnicate", "unknown command 'frobnicate'"},
       {"run worlds/examples/demo.yaml --out ''", "--out: expected a path, got ''"},
+      {"validate worlds/examples/demo.yaml --set robots=5",
+       "--set: 'robots' is a block of keys: set one of them, e.g. robots."},
+      {"model worlds/examples/demo.yaml --rates worlds --out " + temp_dir("model-rates").string(),
+       "worlds: is a folder; expected the rates.csv of `swarmagg rates` or `run --rates`"},
+      {"video /nonexistent-frames v.mp4", "/nonexistent-frames: no such folder"},
       // Frame and video options a run would not use: the frames or video expected would not
       // come.
       {"run worlds/examples/demo.yaml --render-size 100x100", "--render-size needs frames"},
@@ -151,11 +156,11 @@ TEST(Cli, ModelIntoARunFolderUpdatesItsModelErrors) {
       for (const auto& e : errors) names.push_back(e.at("variant").get<std::string>());
     return names;
   };
-  const std::string world = "worlds/examples/demo.yaml --set run.duration=30 --quiet ";
-  ASSERT_EQ(swarmagg("run " + world + "--replicates 2 --no-plots --rates --no-model --out " +
-                     out.string())
-                .exit_code,
-            0);
+  const std::string world =
+      "worlds/examples/demo.yaml --set run.duration=30 --set run.replicates=2 --quiet ";
+  ASSERT_EQ(
+      swarmagg("run " + world + "--no-plots --rates --no-model --out " + out.string()).exit_code,
+      0);
   EXPECT_THAT(variants(), ::testing::IsEmpty());
   ASSERT_EQ(swarmagg("model " + world + "--rates " + (out / "rates.csv").string() + " --out " +
                      out.string())
@@ -165,10 +170,17 @@ TEST(Cli, ModelIntoARunFolderUpdatesItsModelErrors) {
   const Outcome without_rates = swarmagg("model " + world + "--out " + out.string());
   ASSERT_EQ(without_rates.exit_code, 0) << without_rates.output;
   EXPECT_THAT(variants(), ::testing::ElementsAre("collision", "original", "returns"));
+  // A model of another run (its noise floors batches of 4 replicates, the run's of 2) leaves
+  // the run no errors, rather than errors beside floors of another run.
+  const Outcome other =
+      swarmagg("model worlds/examples/demo.yaml --set run.duration=30 --progress never --out " +
+               out.string());
+  ASSERT_EQ(other.exit_code, 0) << other.output;
+  EXPECT_THAT(other.output, HasSubstr("is another run (run.replicates: 2 there, 4 here)"));
+  EXPECT_THAT(variants(), ::testing::IsEmpty());
   std::filesystem::remove_all(out);
 }
 
-// A video the run could not make is refused before the simulation, not after it.
 // compare, as run, replaces what its folder holds only with --force, and then its arms whole.
 TEST(Cli, CompareReplacesAnEarlierFolderOnlyWithForce) {
   const auto out = temp_dir("compare-force");
@@ -198,6 +210,7 @@ TEST(Cli, CompareReplacesAnEarlierFolderOnlyWithForce) {
   std::filesystem::remove_all(out);
 }
 
+// A video the run could not make is refused before the simulation, not after it.
 TEST(Cli, ABadVideoRequestIsRefusedBeforeTheRun) {
   const std::filesystem::path dir = temp_dir("video");
   const std::string out = (dir / "run").string();

@@ -158,8 +158,9 @@ TEST(WorldLoaderErrors, UnknownKeysSuggestTheClosestKnownOne) {
 // A controller key the file gives that its controller never reads would be dropped without a
 // word (a Soysal key left in a file switched to Bayindir): refused, naming who reads it. So is
 // the same key from --set or a sweep point, which summary.json would list as a change the run
-// never made (`reproduce --set`, one override for worlds of every controller, applies its
-// overrides itself and is not checked).
+// never made, unless the overrides set controller.type too (a sweep over controller types).
+// `reproduce --set`, one override for worlds of every controller, applies its overrides itself
+// and is not checked.
 TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
   EXPECT_THAT(error_of("controller:\n  type: bayindir\n  approach_radius: 12\n"),
               AllOf(HasSubstr("w.yaml:3:3"), HasSubstr("controller.approach_radius"),
@@ -170,19 +171,26 @@ TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
   EXPECT_EQ(error_of("controller: {type: soysal, approach_radius: 12}\n"), "no error");
   EXPECT_EQ(error_of("controller: {type: soysal, tumble: 0.001}\n"), "no error");
   EXPECT_THAT(error_of("controller: {type: bayindir}\n", {"controller.approach_radius=12"}),
-              AllOf(HasSubstr("--set: controller.approach_radius: controller type 'bayindir' of "
-                              "w.yaml does not read this key"),
-                    HasSubstr("read by controller type 'soysal'")));
+              AllOf(HasSubstr("--set: controller.approach_radius: the world's controller type "
+                              "'bayindir' (w.yaml) does not read this key"),
+                    HasSubstr("read by controller type 'soysal'"),
+                    HasSubstr("remove it or set controller.type too")));
   EXPECT_EQ(error_of("controller: {type: bayindir}\n", {"controller.p_leave=0.5"}), "no error");
   // A file whose controller.type an override sets (a sweep over controller types) may hold
   // keys for each of them.
   EXPECT_EQ(
       error_of("controller: {type: bayindir, approach_radius: 12}\n", {"controller.type=soysal"}),
       "no error");
-  // The overrides still have to be read by the type they set.
-  EXPECT_THAT(error_of("controller: {type: bayindir}\n",
-                       {"controller.type=soysal", "controller.p_leave=0.5"}),
-              HasSubstr("controller.p_leave: controller type 'soysal' of w.yaml does not read"));
+  // So may the overrides: a sweep over controller types sets every type's keys in each point.
+  EXPECT_EQ(error_of("controller: {type: bayindir}\n",
+                     {"controller.type=soysal", "controller.p_leave=0.5"}),
+            "no error");
+}
+
+// A key given no value is named where it stands, not where the next token starts.
+TEST(WorldLoaderErrors, AMissingValueNamesTheLineOfItsKey) {
+  EXPECT_THAT(error_of("robots:\n  count:\n"),
+              AllOf(HasSubstr("w.yaml:2:3: robots.count"), HasSubstr("got nothing")));
 }
 
 TEST(WorldLoaderErrors, WrongTypesSayWhatWasExpected) {

@@ -37,8 +37,8 @@ def test_a_set_value_of_the_wrong_kind_names_the_key(demo):
 
 def test_a_set_key_the_controller_does_not_read_is_refused(demo):
     # The run would ignore it, while the world's changes list it.
-    with pytest.raises(sa.WorldError, match=r"controller\.approach_radius: controller type "
-                                            r"'bayindir' of .* does not read this key"):
+    with pytest.raises(sa.WorldError, match=r"controller\.approach_radius: the world's "
+                                            r"controller type 'bayindir' \(.*\) does not read"):
         sa.load_world(str(demo), set={"controller.approach_radius": 12})
 
 

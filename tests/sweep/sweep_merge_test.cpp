@@ -60,14 +60,19 @@ TEST_F(SweepMergeTest, ShardsMergeToTheUnshardedSweepByteForByte) {
 }
 
 // A merge into another sweep's merged folder, or into a run's folder, would mix their files
-// with its own: refused unless forced. The sweep plots of the earlier merge go either way.
-// (Other files may stay: the shards' folders and logs, as examples/slurm/submit.sh merges.)
-TEST_F(SweepMergeTest, AnotherSweepsFolderOrOtherFilesAreMergedIntoOnlyWithForce) {
+// with its own: refused unless forced. The earlier merge's plots go when they drew another
+// summary. Other files stay: the shards' folders and logs, as examples/slurm/submit.sh merges.
+TEST_F(SweepMergeTest, AnotherSweepsFolderOrARunAreMergedIntoOnlyWithForce) {
   run(testing::kGridSweep, "full");
   merge_sweep({dir_ / "full"}, dir_ / "m");
   for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
-                           "sweep_partitions.csv"})
+                           "sweep_partitions.csv", "logs/slurm-1.out", "final-noa-vs-mine.png"})
     testing::write_file_text(dir_ / "m" / name, "earlier\n");
+  // The same sweep merged again draws the same plots: they stay, and so do other files.
+  EXPECT_THAT(merge_sweep({dir_ / "full"}, dir_ / "m").removed,
+              ::testing::ElementsAre(dir_ / "m" / "sweep_partitions.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "m" / "final-noa-vs-robots.count.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "m" / "logs" / "slurm-1.out"));
   run("name: other\nbase: worlds/tiny.yaml\nparameters:\n  robots.count: [10]\nreplicates: 1\n"
       "seed: 1\n",
       "o");
@@ -75,11 +80,11 @@ TEST_F(SweepMergeTest, AnotherSweepsFolderOrOtherFilesAreMergedIntoOnlyWithForce
               ::testing::ThrowsMessage<InputError>(
                   HasSubstr("m/ holds the sweep 'grid', not 'other': pass --force")));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "m" / "final-noa-vs-robots.count.png"));
-  merge_sweep({dir_ / "o"}, dir_ / "m", true);
+  EXPECT_EQ(merge_sweep({dir_ / "o"}, dir_ / "m", true).removed.size(), 2u);
   EXPECT_EQ(read_manifest(dir_ / "m").name, "other");
-  for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
-                           "sweep_partitions.csv"})
+  for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp"})
     EXPECT_FALSE(std::filesystem::exists(dir_ / "m" / name)) << name;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "m" / "final-noa-vs-mine.png")) << "yours stay";
   // The same sweep merges again without --force (more shards done since, say).
   merge_sweep({dir_ / "o"}, dir_ / "m");
   testing::write_file_text(dir_ / "run" / "timeseries.csv", "a run's\n");
