@@ -56,7 +56,9 @@ int compare_command(const CompareCommandOptions& options) {
     for (const std::string& failure : failures)
       std::cerr << "warning: could not remove the earlier outputs' " << failure << "\n";
   }
-  write_compare_folder(result.kinematic, result.box2d, result.stats, out);
+  for (const std::string& failure :
+       write_compare_folder(result.kinematic, result.box2d, result.stats, out))
+    std::cerr << "warning: " << failure << "\n";
   if (!options.quiet) {
     std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";
   }

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/follow_up_commands.hpp"
 #include "output/output_check.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/sweep_merge.hpp"
@@ -31,8 +32,10 @@ int merge_command(const MergeCommandOptions& command) {
       std::cout << "removed what the earlier merge in " << command.out
                 << "/ drew or held that this one outdates:";
       for (const std::filesystem::path& file : report.removed) std::cout << " " << file.string();
-      std::cout << "\n`swarmagg plot " << command.out << "` draws the sweep's plots\n";
+      std::cout << "\n";
     }
+    if (report.plots_removed)
+      std::cout << "`swarmagg plot " << shell_word(command.out) << "` draws the sweep's plots\n";
   }
   return 0;
 }

@@ -8,9 +8,11 @@
 
 #include "analysis/model_errors.hpp"
 #include "cli/commands.hpp"
+#include "cli/follow_up_commands.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
 #include "config/world_difference.hpp"
+#include "config/world_loader.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -69,19 +71,20 @@ std::string measured_start_note(const MeasuredTerms& terms, const std::string& r
 std::optional<std::string> update_run_model_errors(const std::filesystem::path& out,
                                                    const WorldSpec& spec) {
   if (!holds_complete_run(out)) return std::nullopt;
-  const std::string folder = out.string();
   try {
-    const std::vector<std::string> differences =
-        measured_run_differences(resolved_world_in(out), spec);
+    const std::string resolved = resolved_world_in(out);
+    const std::vector<std::string> differences = measured_run_differences(resolved, spec);
     if (differences.empty()) {
       write_model_errors(out);
-      return "the run's summary.json has their errors; `swarmagg plot " + folder +
+      return "the run's summary.json has their errors; `swarmagg plot " + shell_word(out.string()) +
              "` redraws its plots with them";
     }
     remove_model_errors(out);
-    return "the run in " + folder + "/ is another run (" + differences_text(differences) +
-           "): its summary.json keeps no model_errors; `swarmagg model " + folder +
-           "/world.resolved.yaml --out " + folder + "` gives them";
+    const WorldSpec run = load_world_text(resolved, (out / "world.resolved.yaml").string());
+    return "the run in " + out.string() + "/ is another run (" + differences_text(differences) +
+           "): its summary.json keeps no model_errors; `" +
+           rates_and_model_commands(out, run.model.initial_state == InitialState::Measured) +
+           "` gives them";
   } catch (const InputError& e) {
     std::cerr << "warning: the model is written, but not its errors in the run's summary.json: "
               << e.what() << "\n";

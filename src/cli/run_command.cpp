@@ -1,13 +1,11 @@
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cctype>
-#include <cstring>
 #include <iostream>
 #include <optional>
 #include <string>
 
 #include "analysis/model_errors.hpp"
 #include "cli/commands.hpp"
+#include "cli/follow_up_commands.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
@@ -151,39 +149,16 @@ void refuse_idle_render_options(const RunCommandOptions& options, const WorldSpe
   if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
 }
 
-// `text` as one word of a POSIX shell command: as it is when it is plain, else in single
-// quotes, so that a printed command can be pasted.
-std::string shell_word(const std::string& text) {
-  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_./-+=:,@", c) != nullptr;
-  });
-  if (plain) return text;
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // Ctrl-C after the simulation's outputs were written (a complete run: its world.resolved.yaml
 // is there) and before its rates or model were: says so, and which commands add them. The
 // measured variants and a measured start need the rates first.
 std::string what_is_left(const std::filesystem::path& out, const RunCommandOptions& options,
                          bool rates_measured) {
-  const std::string folder = shell_word(out.string());
-  const std::string world = shell_word((out / "world.resolved.yaml").string());
-  const std::string rates_csv = shell_word((out / "rates.csv").string());
   const bool rates_wanted = options.rates || (rates_measured && !options.no_model);
-  std::string commands;
-  std::error_code error;
-  if (rates_wanted && !std::filesystem::exists(out / "rates.csv", error))
-    commands = "swarmagg rates " + world + " --out " + folder;
-  if (!options.no_model) {
-    commands += (commands.empty() ? "" : " && ") + std::string("swarmagg model ") + world +
-                (rates_wanted ? " --rates " + rates_csv : "") + " --out " + folder;
-  }
+  const std::string commands = rates_and_model_commands(out, rates_wanted, !options.no_model);
   if (commands.empty()) return "";
-  return "swarmagg: the simulation's outputs in " + out.string() + "/ are complete, not the " +
-         (options.no_model ? "rates" : "model") + " that follows them; to add it: " + commands +
-         "\n";
+  return "swarmagg: the simulation's outputs in " + out.string() +
+         "/ are complete; what follows them is not. To add it: " + commands + "\n";
 }
 
 struct RatesAndModel {

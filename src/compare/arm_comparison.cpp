@@ -49,9 +49,17 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   return c;
 }
 
+bool Comparison::sizes_judged() const {
+  return ks_sizes.n_a > 0 && ks_sizes.n_b > 0;
+}
+
+bool Comparison::escape_fraction_judged() const {
+  return has_leaving && a.leave.attempts.total() > 0 && b.leave.attempts.total() > 0;
+}
+
 bool Comparison::noa_differs() const {
   return noa_difference.p_value < kSignificance || ks_noa.p_value < kSignificance ||
-         ks_sizes.p_value < kSignificance;
+         (sizes_judged() && ks_sizes.p_value < kSignificance);
 }
 
 bool Comparison::encounter_rate_differs() const {
@@ -59,7 +67,7 @@ bool Comparison::encounter_rate_differs() const {
 }
 
 bool Comparison::escape_fraction_differs() const {
-  return has_leaving && escape_fraction.p_value < kSignificance;
+  return escape_fraction_judged() && escape_fraction.p_value < kSignificance;
 }
 
 bool Comparison::net_merge_rate_differs() const {

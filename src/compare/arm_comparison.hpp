@@ -46,6 +46,10 @@ struct Comparison {
   // mean, KS on the final NOA and on the final aggregate sizes), the encounter rate (Welch),
   // the escape fraction (two-proportion test; only when agents leave) and the net merge rate
   // (Welch).
+  // The KS test on the final sizes needs aggregates in both arms, the escape fraction LEAVE
+  // attempts in both (0 of 0 is no fraction): otherwise "not judged", not "no difference".
+  bool sizes_judged() const;
+  bool escape_fraction_judged() const;
   bool noa_differs() const;
   bool encounter_rate_differs() const;
   bool escape_fraction_differs() const;

@@ -46,8 +46,15 @@ std::string final_script(const std::string& world_name, const Comparison& c) {
      << gnuplot_quote(c.a.label) << ", \\\n"
      << "     '' skip 1 using ($1+0.2):3 with boxes lc rgb '#d62728' title "
      << gnuplot_quote(c.b.label) << "\n"
-     << "set ylabel 'aggregates'\nset xlabel 'final aggregate size'\n"
-     << "plot 'sizes.csv' skip 1 using ($1-0.2):2 with boxes lc rgb '#1f77b4' title "
+     << "set ylabel 'aggregates'\nset xlabel 'final aggregate size'\n";
+  if (c.a.final_sizes.empty() && c.b.final_sizes.empty()) {
+    // An empty table has no x range to plot over: the panel says why it is empty.
+    gp << "set xrange [0:1]\nset yrange [0:1]\nunset xtics\nunset ytics\n"
+       << "set label 'no aggregate at the end of any replicate' at graph 0.5, 0.5 center\n"
+       << "plot NaN notitle\nunset multiplot\n";
+    return gp.str();
+  }
+  gp << "plot 'sizes.csv' skip 1 using ($1-0.2):2 with boxes lc rgb '#1f77b4' title "
      << gnuplot_quote(c.a.label) << ", \\\n"
      << "     '' skip 1 using ($1+0.2):3 with boxes lc rgb '#d62728' title "
      << gnuplot_quote(c.b.label) << "\nunset multiplot\n";
@@ -173,8 +180,9 @@ std::string histogram_csv(const std::string& value_name, const std::string& labe
   return csv.str();
 }
 
-void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
-                            const Comparison& c, const std::filesystem::path& out) {
+std::vector<std::string> write_comparison_plots(const std::string& world_name, const ArmResult& a,
+                                                const ArmResult& b, const Comparison& c,
+                                                const std::filesystem::path& out) {
   write_file_atomic(out / "noa.csv", noa_band_csv(a, b, out));
   write_file_atomic(out / "final_noa.csv",
                     histogram_csv("final_noa", c.a.label, c.a.final_noa, c.b.label, c.b.final_noa));
@@ -186,10 +194,22 @@ void write_comparison_plots(const std::string& world_name, const ArmResult& a, c
   // The escape-rate curves are the controller's leave law by aggregate size (Bayindir's,
   // Soysal's), for controllers whose leaving follows from the size.
   if (c.has_leaving && registration_of(a.spec.controller.type).leave_probability_at_size) {
-    write_file_atomic(out / "escape_rate.csv", escape_rate_csv(a, b, c));
-    run_gnuplot(out / "escape_rate.gp", escape_rate_script(world_name, c));
+    const std::string rates = escape_rate_csv(a, b, c);
+    write_file_atomic(out / "escape_rate.csv", rates);
+    // No aggregate of two or more in either arm: no row, nothing to draw.
+    if (std::count(rates.begin(), rates.end(), '\n') > 1)
+      run_gnuplot(out / "escape_rate.gp", escape_rate_script(world_name, c));
   }
-  batch.draw_or_throw();
+  if (!gnuplot_available()) {
+    return {
+        "plots skipped: gnuplot is not on PATH (install it with 'sudo apt-get install "
+        "gnuplot-nox'; the scripts are beside their CSVs in " +
+        out.string() + ": `gnuplot noa.gp` there draws one)"};
+  }
+  std::vector<std::string> failures;
+  for (const GnuplotFailure& failure : batch.draw())
+    failures.push_back("cannot draw " + failure.script.string() + ": " + failure.message);
+  return failures;
 }
 
 }  // namespace swarmagg

@@ -30,7 +30,10 @@ std::string histogram_csv(const std::string& value_name, const std::string& labe
 // aggregate of that size.
 std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Comparison& c);
 
-void write_comparison_plots(const std::string& world_name, const ArmResult& a, const ArmResult& b,
-                            const Comparison& c, const std::filesystem::path& out);
+// Writes the figures' CSVs and scripts and draws them; returns what could not be drawn (gnuplot
+// missing, a script it failed on), for the caller to warn about: the comparison stands.
+std::vector<std::string> write_comparison_plots(const std::string& world_name, const ArmResult& a,
+                                                const ArmResult& b, const Comparison& c,
+                                                const std::filesystem::path& out);
 
 }  // namespace swarmagg

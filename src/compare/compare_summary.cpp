@@ -19,6 +19,12 @@ const char* verdict(double p) {
   return p < kSignificance ? "different" : "no significant difference";
 }
 
+constexpr const char* kKsMethod =
+    "exact (lattice walk) up to 10^7 replicate pairs, else the asymptotic Kolmogorov series "
+    "with Stephens' correction; conservative with ties";
+constexpr const char* kNoAggregates = "an arm ended with no aggregate";
+constexpr const char* kNoAttempts = "an arm made no LEAVE attempt";
+
 std::string judged(bool differs) {
   return differs ? "different" : "no significant difference";
 }
@@ -125,11 +131,14 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
       << format_text(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
       << verdict(c.ks_noa.p_value) << "\n";
   out << "KS final aggregate sizes (" << c.ks_sizes.n_a << " vs " << c.ks_sizes.n_b
-      << " aggregates):"
-      << format_text(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
-      << verdict(c.ks_sizes.p_value) << "\n";
-  out << "  (KS p-values: asymptotic Kolmogorov series with Stephens' correction; conservative "
-         "with ties)\n";
+      << " aggregates):";
+  if (c.sizes_judged()) {
+    out << format_text(" D = %.3f, p = %.3g: ", c.ks_sizes.statistic, c.ks_sizes.p_value)
+        << verdict(c.ks_sizes.p_value) << "\n";
+  } else {
+    out << " not judged (" << kNoAggregates << ")\n";
+  }
+  out << "  (KS p-values: " << kKsMethod << ")\n";
   welch_line(out, "encounters per tu", c, &ArmSummary::encounter_rate, c.encounter_rate_difference,
              " %.2f +- %.2f");
   const ProportionResult& f = c.escape_fraction;
@@ -137,8 +146,12 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
     out << "LEAVE attempts that got out (" << kRimRuleText << "):\n";
     leave_line(out, c.a);
     leave_line(out, c.b);
-    out << "  escape fraction: " << c.a.label << format_text(" %.3f, ", f.fraction_a) << c.b.label
-        << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
+    if (c.escape_fraction_judged()) {
+      out << "  escape fraction: " << c.a.label << format_text(" %.3f, ", f.fraction_a) << c.b.label
+          << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
+    } else {
+      out << "  escape fraction: not judged (" << kNoAttempts << ")\n";
+    }
   }
   out << "where the aggregates came from, mean per replicate over the run (final NOA = births - "
          "deaths - merges + splits; the models have no merges or splits):\n";
@@ -148,13 +161,14 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
              c.net_merge_rate_difference, " %.4f +- %.4f");
   out << format_text("verdicts at the %.0f%% level (per test), one per quantity:\n",
                      100.0 * (1.0 - kSignificance));
-  out << "  final NOA: " << judged(c.noa_differs())
-      << " (Welch on the mean, KS on NOA and sizes)\n";
+  out << "  final NOA: " << judged(c.noa_differs()) << " (Welch on the mean, KS on NOA"
+      << (c.sizes_judged() ? " and sizes)\n" : ")\n");
   out << "  encounter rate: " << judged(c.encounter_rate_differs()) << " (Welch)\n";
   out << "  escape fraction: "
-      << (c.has_leaving
+      << (c.escape_fraction_judged()
               ? judged(c.escape_fraction_differs()) + std::string(" (two-proportion z test)")
-              : std::string("not judged (no agent leaves in this world)"))
+              : std::string("not judged (") +
+                    (c.has_leaving ? kNoAttempts : "no agent leaves in this world") + ")")
       << "\n";
   out << "  net merge rate: " << judged(c.net_merge_rate_differs()) << " (Welch)\n";
   return out.str();
@@ -168,7 +182,8 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
           {"final_noa_difference", welch_json(w)},
           {"ks_final_noa", ks_json(c.ks_noa)},
           {"ks_final_aggregate_sizes", ks_json(c.ks_sizes)},
-          {"ks_p_value_method", "asymptotic Kolmogorov series, Stephens small-sample correction"},
+          {"ks_final_aggregate_sizes_judged", c.sizes_judged()},
+          {"ks_p_value_method", kKsMethod},
           {"rim_rule", std::string(kRimRuleText) +
                            "; got out: perceives (within s) no still-waiting member of the "
                            "aggregate it left when its LEAVE timeout ends"},
@@ -178,7 +193,8 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
            {{"a", c.escape_fraction.fraction_a},
             {"b", c.escape_fraction.fraction_b},
             {"z", c.escape_fraction.z},
-            {"p_value", c.escape_fraction.p_value}}},
+            {"p_value", c.escape_fraction.p_value},
+            {"judged", c.escape_fraction_judged()}}},
           {"has_leaving", c.has_leaving},
           {"significance", kSignificance},
           {"verdicts",

@@ -36,8 +36,9 @@ EngineComparison compare_engines(const WorldSpec& spec, bool progress,
   return result;
 }
 
-void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
-                          const std::filesystem::path& out) {
+std::vector<std::string> write_compare_folder(const ArmResult& a, const ArmResult& b,
+                                              const Comparison& c,
+                                              const std::filesystem::path& out) {
   const std::string& world = a.spec.name;
   for (const ArmResult* arm : {&a, &b}) {
     // Spooled rows land where compare_engines was told; noa.csv reads them back from `out`.
@@ -52,7 +53,7 @@ void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparis
   write_file_atomic(out / "summary.txt", comparison_text(world, c));
   // Absolute: run_gnuplot fails to start gnuplot for a relative script path (seen with
   // --out runs/x; reported to the plot owner).
-  write_comparison_plots(world, a, b, c, std::filesystem::absolute(out));
+  return write_comparison_plots(world, a, b, c, std::filesystem::absolute(out));
 }
 
 std::vector<std::string> remove_earlier_comparison(const std::filesystem::path& out) {

@@ -24,8 +24,10 @@ struct EngineComparison {
 EngineComparison compare_engines(const WorldSpec& spec, bool progress = false,
                                  const std::filesystem::path& out = {});
 
-void write_compare_folder(const ArmResult& a, const ArmResult& b, const Comparison& c,
-                          const std::filesystem::path& out);
+// Returns the plots that could not be drawn (write_comparison_plots), to warn about.
+std::vector<std::string> write_compare_folder(const ArmResult& a, const ArmResult& b,
+                                              const Comparison& c,
+                                              const std::filesystem::path& out);
 
 // What `compare --force` does to the comparison already in `out` once the new one is
 // computed: the files above go, and the arms' folders whole (a comparison without leaving

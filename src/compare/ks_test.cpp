@@ -2,8 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace swarmagg {
+namespace {
+
+// Samples whose sizes multiply to at most this get the exact p-value (a walk over n m
+// points, milliseconds); larger ones, where the asymptotic series is accurate, get that.
+constexpr double kExactPairs = 1e7;
+
+}  // namespace
 
 double kolmogorov_tail(double lambda) {
   // The series converges badly near 0, where the tail is 1 to double precision anyway.
@@ -38,9 +46,42 @@ KsResult ks_two_sample(std::vector<double> a, std::vector<double> b) {
     while (j < b.size() && b[j] == x) ++j;
     result.statistic = std::max(result.statistic, std::abs(i / na - j / nb));
   }
+  if (na * nb <= kExactPairs) {
+    result.p_value = ks_exact_p_value(a.size(), b.size(), result.statistic);
+    return result;
+  }
   const double ne = std::sqrt(na * nb / (na + nb));
   result.p_value = kolmogorov_tail((ne + 0.12 + 0.11 / ne) * result.statistic);
   return result;
+}
+
+double ks_exact_p_value(std::size_t n, std::size_t m, double statistic) {
+  // D n m is a whole number (D = |i m - j n| / (n m) at some point of the walk); a walk keeps
+  // D below it while |i m - j n| stays below it.
+  const auto nm = static_cast<double>(n) * static_cast<double>(m);
+  const double bound = std::round(statistic * nm);
+  if (bound <= 0.0) return 1.0;
+  const auto inside = [&](std::size_t i, std::size_t j) {
+    return std::abs(static_cast<double>(i) * static_cast<double>(m) -
+                    static_cast<double>(j) * static_cast<double>(n)) < bound;
+  };
+  // below[j]: the fraction of the C(i + j, i) walks to (i, j) that stayed inside. A walk to
+  // (i, j) came from (i - 1, j) in i of every i + j cases, from (i, j - 1) in j of them.
+  std::vector<double> below(m + 1, 0.0);
+  for (std::size_t i = 0; i <= n; ++i) {
+    for (std::size_t j = 0; j <= m; ++j) {
+      if (i == 0 && j == 0) {
+        below[0] = 1.0;
+      } else if (!inside(i, j)) {
+        below[j] = 0.0;
+      } else {
+        const double total = static_cast<double>(i + j);
+        below[j] = (i > 0 ? below[j] * static_cast<double>(i) / total : 0.0) +
+                   (j > 0 ? below[j - 1] * static_cast<double>(j) / total : 0.0);
+      }
+    }
+  }
+  return std::clamp(1.0 - below[m], 0.0, 1.0);
 }
 
 }  // namespace swarmagg

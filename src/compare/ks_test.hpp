@@ -1,9 +1,13 @@
 #pragma once
-// Two-sample Kolmogorov-Smirnov test. Boost.Math 1.74 (Debian) has no Kolmogorov
-// distribution, so the p-value is the asymptotic Kolmogorov series with Stephens'
-// small-sample correction (Numerical Recipes 14.3): lambda = (sqrt(ne) + 0.12 +
-// 0.11 / sqrt(ne)) D with ne = n m / (n + m). With ties (discrete data such as NOA) the
-// test is conservative: the p-value is too large, never too small.
+// Two-sample Kolmogorov-Smirnov test. For samples whose sizes multiply to at most 10^7 (every
+// `compare` of up to a few thousand replicates per engine) the p-value is exact: the share of
+// the C(n + m, n) orderings of the pooled sample whose D reaches the observed one, counted by
+// walking the lattice of the two empirical CDFs (Hodges 1958). Larger samples get the
+// asymptotic Kolmogorov series with Stephens' correction (Numerical Recipes 14.3), which
+// understates p for small ones (n = m = 3, D = 1: 0.033 where the exact p is 0.1). Both
+// assume no ties; with ties (discrete data such as NOA) D can only be smaller, so the exact
+// p-value is conservative: too large, never too small.
+#include <cstddef>
 #include <vector>
 
 namespace swarmagg {
@@ -16,6 +20,8 @@ struct KsResult {
 };
 
 KsResult ks_two_sample(std::vector<double> a, std::vector<double> b);
+// P(D >= statistic) for samples of n and m distinct values under the null hypothesis.
+double ks_exact_p_value(std::size_t n, std::size_t m, double statistic);
 // Q_KS(lambda) = 2 sum_{j>=1} (-1)^(j-1) exp(-2 j^2 lambda^2), clamped to [0, 1].
 double kolmogorov_tail(double lambda);
 

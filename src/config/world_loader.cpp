@@ -291,8 +291,8 @@ bool unread_controller_key(const ControllerCatalogEntry& controller, const std::
          find_world_key(path) != nullptr && !reads(controller, path);
 }
 
-// A sweep over controller types sets each type's keys in every point, so a world whose
-// controller.type an override sets may hold keys its type does not read.
+// A file switched to another controller type by an override (a sweep over controller types)
+// may hold keys of the type it was written for.
 bool sets_controller_type(const std::vector<WorldOverride>& overrides) {
   return std::any_of(overrides.begin(), overrides.end(),
                      [](const WorldOverride& o) { return o.key == "controller.type"; });
@@ -303,8 +303,8 @@ bool sets_controller_type(const std::vector<WorldOverride>& overrides) {
 // switched to Bayindir, say. The overrides are checked too (check_overrides_read).
 void check_controller_reads(const WorldSpec& spec, const std::map<std::string, std::string>& seen,
                             const std::vector<WorldOverride>& overrides) {
-  if (sets_controller_type(overrides)) return;
   check_overrides_read(spec, overrides);
+  if (sets_controller_type(overrides)) return;
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
   for (const auto& [path, at] : seen) {
     if (!unread_controller_key(controller, path)) continue;
@@ -365,11 +365,14 @@ void apply_override(WorldSpec& spec, const WorldOverride& override) {
   apply_value(spec, *key, override.value, override.origin);
 }
 
+bool controller_type_reads(const std::string& type, const std::string& path) {
+  return !unread_controller_key(catalog_entry(type), path);
+}
+
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides) {
-  if (sets_controller_type(overrides)) return;
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
   for (const WorldOverride& override : overrides) {
-    if (!unread_controller_key(controller, override.key)) continue;
+    if (override.any_controller || !unread_controller_key(controller, override.key)) continue;
     throw InputError(override.origin + ": " + override.key + ": the world's controller type '" +
                      spec.controller.type + "' (" + spec.source +
                      ") does not read this key, so the run would ignore it" +

@@ -25,8 +25,12 @@ void apply_override(WorldSpec& spec, const WorldOverride& override);
 void check_world(const WorldSpec& spec);
 // Refuses (InputError) an override of a controller.* key that the world's controller type does
 // not read: the run would ignore it, while summary.json and the plots list it as a change.
-// Overrides that set controller.type themselves pass (a sweep over controller types), and
-// `reproduce`, which applies one override to worlds of several controllers, does not call this.
+// Overrides marked any_controller pass (a sweep over controller types gives a key one type
+// reads to every point), and `reproduce`, which applies one override to worlds of several
+// controllers, does not call this.
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides);
+// Whether controller type `type` reads `path` (false for a controller.* key it ignores; true
+// for any other key).
+bool controller_type_reads(const std::string& type, const std::string& path);
 
 }  // namespace swarmagg

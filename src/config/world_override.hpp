@@ -18,6 +18,9 @@ struct WorldOverride {
   std::string key;     // a world key path, e.g. "render.dir"
   YAML::Node value;    // a scalar (or a list, from --set)
   std::string origin;  // names it in messages: "--set", "--render-dir"
+  // Set for a sweep over controller types: a controller.* key that one swept type reads is
+  // given to every point, so the types that ignore it do not refuse it.
+  bool any_controller = false;
 };
 
 // `key.path=value` as `--set` takes it; throws InputError when there is no `=` or the value

@@ -16,12 +16,15 @@ void write_rate_outputs(const WorldSpec& world, const RateTally& tally,
   std::filesystem::create_directories(folder);
   write_file_atomic(folder / "rates.csv", rates_csv(rows));
   write_file_atomic(folder / "rates.json", rates_json(world, tally, rows));
-  if (plots == RatePlots::ScriptsOnly) {
-    write_rate_plot_scripts(world, rows, folder);
-  } else if (gnuplot_available()) {
+  if (plots == RatePlots::Draw && gnuplot_available()) {
     plot_rates(world, rows, folder);
-  } else {
-    std::cerr << "note: gnuplot not found: no rate plots (install gnuplot-nox)\n";
+    return;
+  }
+  // The scripts and their CSVs still go beside rates.csv: gnuplot, once installed, draws them.
+  write_rate_plot_scripts(world, rows, folder);
+  if (plots == RatePlots::Draw) {
+    std::cerr << "note: gnuplot not found: rate plots not drawn (install gnuplot-nox; the "
+                 "rates-<term>.gp scripts are beside rates.csv)\n";
   }
 }
 

@@ -15,11 +15,15 @@ std::vector<std::string> rate_summary_lines(const std::vector<RateRow>& rows) {
     // measurement, where "from 0 events" read as one too few to report.
     const bool fraction = row.term == "return";
     const auto trials = static_cast<std::uint64_t>(e.exposure);
+    const bool geometry = row.term == "radius" || row.term == "rim";
     if (!e.rate) {
-      line += fraction ? "too few attempts (" + std::to_string(trials) + ")"
-                       : "too few events (" + std::to_string(e.events) + ")";
+      // A size's geometry is a regression over replicates: many observations in one
+      // replicate still give no interval.
+      line += fraction   ? "too few attempts (" + std::to_string(trials) + ")"
+              : geometry ? "not estimated (" + std::to_string(e.events) +
+                               " observations; needs 10, from 2 replicates or more)"
+                         : "too few events (" + std::to_string(e.events) + ")";
     } else {
-      const bool geometry = row.term == "radius" || row.term == "rim";
       line += format_text("%.4g [%.4g, %.4g]", *e.rate, *e.low, *e.high);
       line += fraction
                   ? ": " + std::to_string(e.events) + " of " + std::to_string(trials) +

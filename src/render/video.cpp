@@ -283,15 +283,20 @@ std::filesystem::path check_video_request(const std::filesystem::path& output,
 
 void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
                     const VideoOptions& options) {
-  const std::filesystem::path program = video_program(output, options);
   if (std::error_code error; !std::filesystem::is_directory(frames_dir, error)) {
-    throw InputError(frames_dir.string() + ": no such folder (expected the frames of a run: " +
-                     "`swarmagg run WORLD --render-every K` or `swarmagg render`)");
+    throw InputError(
+        frames_dir.string() +
+        (std::filesystem::exists(frames_dir, error) ? ": is not a folder" : ": no such folder") +
+        " (expected the frames of a run: `swarmagg run WORLD --render-every K` or "
+        "`swarmagg render`)");
   }
   if (!std::filesystem::exists(frames_dir / "frame_000000.png")) {
     throw InputError("no frames to assemble in " + frames_dir.string() +
                      " (expected frame_000000.png, frame_000001.png, ...)");
   }
+  // The request checked as `run --video` checks it, so that a container ffmpeg cannot make is
+  // bad input (exit 2) here too, not a failed ffmpeg run.
+  const std::filesystem::path program = check_video_request(output, options);
   check_frames_contiguous(frames_dir);
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
   const auto temporary =

@@ -79,9 +79,14 @@ std::string returns_text(const ReturnSummary& returns) {
          report_number(returns.fraction()) + ")";
 }
 
-// Fewer than 10 returns of a size are not timed (rates' rule): "-" when none was.
+// Fewer than 10 returns of a size are not timed (rates' rule): "-" when none was, and the
+// share timed when it is not all of them, so that the mean is not read as every return's.
 std::string time_text(const ReturnSummary& returns) {
-  return returns.mean_time > 0.0 ? report_number(returns.mean_time) + " tu" : "-";
+  if (returns.timed == 0) return "-";
+  std::string text = report_number(returns.mean_time) + " tu";
+  if (returns.timed < returns.returns)
+    text += " (" + std::to_string(returns.timed) + " of the returns timed)";
+  return text;
 }
 
 std::string timeout_label(const TimeoutPoint& p) {
@@ -147,12 +152,11 @@ ReturnSummary pooled_returns(const std::vector<RateRow>& rates, int smallest) {
       time_sum += *row.estimate.rate * static_cast<double>(row.estimate.events);
     }
   }
-  std::uint64_t timed = 0;
   for (const RateRow& row : rates) {
     if (row.term == "return_time" && row.size && *row.size >= smallest && row.estimate.rate)
-      timed += row.estimate.events;
+      summary.timed += row.estimate.events;
   }
-  if (timed) summary.mean_time = time_sum / static_cast<double>(timed);
+  if (summary.timed) summary.mean_time = time_sum / static_cast<double>(summary.timed);
   return summary;
 }
 

@@ -14,7 +14,9 @@ namespace swarmagg {
 // Pooled over the sizes from `smallest` on: returns / attempts and the mean return time (tu).
 struct ReturnSummary {
   std::uint64_t attempts = 0, returns = 0;
-  double mean_time = 0.0;  // 0 without returns
+  // Over the `timed` returns: rates.csv times a size's returns only from 10 of them on.
+  double mean_time = 0.0;  // 0 without timed returns
+  std::uint64_t timed = 0;
   double fraction() const {
     return attempts ? static_cast<double>(returns) / static_cast<double>(attempts) : 0.0;
   }

@@ -9,6 +9,7 @@
 
 #include "analysis/csv_reader.hpp"
 #include "analysis/csv_text.hpp"
+#include "config/world_keys.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
@@ -247,17 +248,21 @@ struct EarlierMerge {
   std::string summary;  // sweep_summary.csv's text
 };
 
+// The plots were drawn from sweep_summary.csv, named by its parameter columns (those before
+// `observable`), as draw_sweep_plots names them; only world keys, so that no file name can
+// leave the folder (an edited "../x" column).
 std::optional<EarlierMerge> earlier_merge(const std::filesystem::path& out) {
-  std::error_code error;
-  if (!std::filesystem::exists(out / kManifestFile, error)) return std::nullopt;
-  try {
-    std::ifstream in(out / kSweepSummaryFile, std::ios::binary);
-    std::ostringstream summary;
-    summary << in.rdbuf();
-    return EarlierMerge{parameter_keys(read_manifest(out)), summary.str()};
-  } catch (const InputError&) {
-    return std::nullopt;  // a damaged manifest (merge --force): no plots of its to know
+  std::ifstream in(out / kSweepSummaryFile, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  EarlierMerge earlier{{}, text.str()};
+  const std::string header = earlier.summary.substr(0, earlier.summary.find('\n'));
+  for (const std::string& column : split(header, ',')) {
+    if (column == "observable") break;
+    if (find_world_key(column) != nullptr) earlier.keys.push_back(column);
   }
+  return earlier;
 }
 
 // The earlier merge's plots drew another summary (another sweep, or fewer runs): they go,
@@ -320,7 +325,7 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);
     }
   }
-  MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}, {}};
+  MergeReport report{static_cast<int>(finals.size()), static_cast<int>(runs.size()), {}, {}, false};
   // Every file complete and synced before the first takes its place: a full disk fails them
   // all, and a merge stopped before the first rename leaves the earlier merged files as they
   // were (not transactional: a rename failing after it would leave old and new side by side).
@@ -340,6 +345,9 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
   write(kSweepSummaryFile, summary);
   write(kManifestFile, manifest_text(plan));
   report.removed = remove_outdated(out, earlier, summary, partitions.appended());
+  report.plots_removed = std::any_of(
+      report.removed.begin(), report.removed.end(),
+      [](const std::filesystem::path& file) { return file.filename() != kSweepPartitionsFile; });
   return report;
 }
 

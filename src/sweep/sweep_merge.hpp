@@ -21,6 +21,7 @@ struct MergeReport {
   // The earlier merge's files this one outdated: its plots (of another summary) and
   // partitions (when this merge has none).
   std::vector<std::filesystem::path> removed;
+  bool plots_removed = false;  // among them, sweep plots
 };
 
 // Unless `force` (merge --force), `out` must hold no run (world.resolved.yaml) and no other

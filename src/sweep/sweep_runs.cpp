@@ -1,5 +1,6 @@
 #include "sweep/sweep_runs.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "config/world_loader.hpp"
@@ -24,8 +25,18 @@ std::string point_id(const std::vector<Assignment>& assignments) {
 
 // Cross-key checks (check_world) name the world's source, so the source names the point.
 WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
+  // Swept controller types: a controller key one of them reads is given to every point (the
+  // others ignore it); one that none reads is refused at the point.
+  std::vector<std::string> types;
+  for (const SweepParameter& p : plan.parameters)
+    if (p.key == "controller.type") types = p.values;
   std::vector<WorldOverride> overrides = parse_overrides(point_overrides(point));
-  for (WorldOverride& o : overrides) o.origin = "parameters";
+  for (WorldOverride& o : overrides) {
+    o.origin = "parameters";  // messages name the sweep file's section, not --set
+    o.any_controller = std::any_of(types.begin(), types.end(), [&](const std::string& type) {
+      return controller_type_reads(type, o.key);
+    });
+  }
   return load_world_text_with(plan.base_world,
                               plan.source + " (point " + describe_point(point) + ")", overrides);
 }

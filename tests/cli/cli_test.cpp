@@ -299,6 +299,33 @@ TEST(Cli, ARunWithoutGnuplotSucceedsAndSaysOnceThatPlotsWereSkipped) {
   std::filesystem::remove_all(out);
 }
 
+// `rates` and `compare` without gnuplot: they succeed, say so, and leave the plots' scripts
+// and CSVs to draw later (`rates` wrote no plot file at all, `compare` failed with exit 1).
+TEST(Cli, RatesAndCompareWithoutGnuplotKeepTheirScripts) {
+  const auto rates = temp_dir("no-gnuplot-rates");
+  const Outcome r =
+      swarmagg_with_env("PATH=/nonexistent",
+                        "rates worlds/examples/demo.yaml --set run.duration=30 --replicates 2 "
+                        "--threads 1 --quiet --out " +
+                            rates.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("rate plots not drawn"));
+  EXPECT_TRUE(std::filesystem::exists(rates / "rates-escape.gp"));
+  EXPECT_TRUE(std::filesystem::exists(rates / "rates-escape.csv"));
+  const auto compare = temp_dir("no-gnuplot-compare");
+  const Outcome c =
+      swarmagg_with_env("PATH=/nonexistent",
+                        "compare worlds/examples/demo.yaml --set run.duration=20 --replicates 2 "
+                        "--threads 1 --progress never --out " +
+                            compare.string());
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_THAT(c.output, HasSubstr("plots skipped: gnuplot is not on PATH"));
+  EXPECT_TRUE(std::filesystem::exists(compare / "noa.gp"));
+  EXPECT_TRUE(std::filesystem::exists(compare / "summary.txt"));
+  std::filesystem::remove_all(rates);
+  std::filesystem::remove_all(compare);
+}
+
 TEST(Cli, NoPlotsSkipsThemSilently) {
   const auto out = temp_dir("undrawn");
   const Outcome o = swarmagg(kTinyRun + std::string("--no-plots --out ") + out.string());

@@ -299,9 +299,10 @@ TEST(Interrupt, ASignalAfterTheSimulationStopsBeforeThePlotsWithExitCode130) {
   expect_interrupted(o, 130);
   EXPECT_THAT(o.output, ::testing::Not(HasSubstr("drawing the plots")));
   EXPECT_TRUE(fs::exists(out / "world.resolved.yaml")) << "the simulation's outputs stay";
-  EXPECT_THAT(o.output, HasSubstr("not the model that follows them; to add it: swarmagg model " +
-                                  out.string() + "/world.resolved.yaml --out " + out.string() +
-                                  "\n"));
+  EXPECT_THAT(o.output,
+              HasSubstr("are complete; what follows them is not. To add it: swarmagg "
+                        "model " +
+                        out.string() + "/world.resolved.yaml --out " + out.string() + "\n"));
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   fs::remove_all(out);
 }

@@ -21,12 +21,15 @@ WorldSpec small_world(double p_leave, std::uint64_t seed, int agents = 30) {
 name: small
 arena: {width: 50, height: 50}
 robots: {count: )";
-  text += std::to_string(agents) + R"(}
+  text += std::to_string(agents);
+  text += R"(}
 controller: {type: bayindir, join: true, leave: true, leave_timeout: 10,
-             compaction: {enabled: false}, p_leave: )" +
-          std::to_string(p_leave) + R"(}
-run: {duration: 300, replicates: 12, record_every: 50, threads: 2, seed: )" +
-          std::to_string(seed) + "}\n";
+             compaction: {enabled: false}, p_leave: )";
+  text += std::to_string(p_leave);
+  text += R"(}
+run: {duration: 300, replicates: 12, record_every: 50, threads: 2, seed: )";
+  text += std::to_string(seed);
+  text += "}\n";
   return load_world_text(text, "small");
 }
 
@@ -124,6 +127,43 @@ TEST(ArmComparison, LineageAccountsForEachReplicatesFinalNoa) {
   EXPECT_EQ(json["a"]["lineage"]["merges"].size(), 12u);
   EXPECT_TRUE(json["verdicts"].contains("net_merge_rate"));
   EXPECT_TRUE(json["net_merge_rate_difference"].contains("p_value"));
+}
+
+// Undefined statistics are not judged: KS against an empty sample of final sizes (one arm
+// ended with no aggregate), an escape fraction of 0 attempts. They used to read "D = 0, p = 1:
+// no significant difference" and "0.000 (p = 1)".
+TEST(ArmComparison, UndefinedStatisticsAreNotJudged) {
+  Comparison c;
+  c.a.label = "kinematic";
+  c.b.label = "box2d";
+  c.noa_difference.p_value = 1.0;
+  c.ks_noa.p_value = 1.0;
+  c.ks_sizes = {0.0, 1.0, 6, 0};
+  c.encounter_rate_difference.p_value = 1.0;
+  c.net_merge_rate_difference.p_value = 1.0;
+  c.escape_fraction.p_value = 1.0;
+  c.has_leaving = true;
+  c.a.leave.attempts.rim = 3;  // the other arm made none
+  EXPECT_FALSE(c.sizes_judged());
+  EXPECT_FALSE(c.escape_fraction_judged());
+  const std::string text = comparison_text("small", c);
+  EXPECT_NE(text.find("KS final aggregate sizes (6 vs 0 aggregates): not judged (an arm ended "
+                      "with no aggregate)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  escape fraction: not judged (an arm made no LEAVE attempt)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  final NOA: no significant difference (Welch on the mean, KS on NOA)\n"),
+            std::string::npos)
+      << text;
+  // A significant p of an undefined test decides nothing.
+  c.ks_sizes.p_value = 0.0;
+  c.escape_fraction.p_value = 0.0;
+  EXPECT_FALSE(c.differs());
+  const nlohmann::json json = comparison_json("small", c);
+  EXPECT_FALSE(json["ks_final_aggregate_sizes_judged"].get<bool>());
+  EXPECT_FALSE(json["escape_fraction"]["judged"].get<bool>());
 }
 
 }  // namespace

@@ -53,6 +53,26 @@ TEST(EngineComparison, RefusesAWorldTheBox2dEngineCannotRunBeforeRunning) {
               ::testing::ThrowsMessage<InputError>(::testing::HasSubstr("engine.contact")));
 }
 
+// A comparison ending with no aggregate in any replicate (two agents far apart, 1 tu) is a
+// result like any other: every plot drawn, the sizes panel saying why it is empty, no escape
+// rate plot for a table without rows. gnuplot used to fail on the empty table ("x range is
+// invalid") and `compare` with it.
+TEST(EngineComparison, NoAggregateAtTheEndStillDrawsEveryPlot) {
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not installed";
+  WorldSpec world = tiny_world();
+  world.robots.count = 2;
+  world.run.duration = 1.0;
+  world.run.record_every = 1;
+  const EngineComparison result = compare_engines(world);
+  ASSERT_TRUE(result.stats.a.final_sizes.empty() && result.stats.b.final_sizes.empty());
+  const testing::ScratchDir scratch("compare-test");
+  EXPECT_THAT(write_compare_folder(result.kinematic, result.box2d, result.stats, scratch.path()),
+              ::testing::IsEmpty());
+  EXPECT_TRUE(std::filesystem::exists(scratch.path() / "final.png"));
+  EXPECT_TRUE(std::filesystem::exists(scratch.path() / "escape_rate.csv"));
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "escape_rate.png"));
+}
+
 TEST(EngineComparison, WritesTheFolder) {
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot not installed";
   const EngineComparison result = compare_engines(tiny_world());

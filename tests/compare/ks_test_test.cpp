@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace swarmagg {
 namespace {
 
@@ -12,13 +14,13 @@ TEST(KolmogorovTail, MatchesTheClassicFivePercentPoint) {
   EXPECT_LT(kolmogorov_tail(3.0), 1e-6);
 }
 
-TEST(KsTwoSample, StatisticAndPValueByHand) {
-  // CDFs at 5: a = 5/5, b = 2/6, ... the largest gap is at 5: 1 - 3/6 = 0.5.
-  // ne = 5*6/11; lambda = (sqrt(ne) + 0.12 + 0.11/sqrt(ne)) * 0.5 = 0.919027;
-  // Q_KS(0.919027) = 0.367001 (series summed by hand in Python).
+TEST(KsTwoSample, StatisticAndExactPValueByHand) {
+  // CDFs at 5: a = 5/5, b = 2/6, ... the largest gap is at 5: 1 - 3/6 = 0.5. Of the
+  // C(11, 5) = 462 orderings of 11 distinct values, 165 reach D >= 1/2 (enumerated in Python;
+  // scipy.stats.ks_2samp(method='exact') agrees).
   const KsResult ks = ks_two_sample({5, 1, 3, 2, 4}, {3, 4, 5, 6, 7, 8});
   EXPECT_DOUBLE_EQ(ks.statistic, 0.5);
-  EXPECT_NEAR(ks.p_value, 0.367001, 1e-6);
+  EXPECT_NEAR(ks.p_value, 165.0 / 462.0, 1e-12);
   EXPECT_EQ(ks.n_a, 5);
   EXPECT_EQ(ks.n_b, 6);
 }
@@ -29,6 +31,27 @@ TEST(KsTwoSample, TiesDoNotInflateTheStatistic) {
   EXPECT_DOUBLE_EQ(same.p_value, 1.0);
   // Both step at 1; only after 2 do they part: a = 3/4, b = 1/4.
   EXPECT_DOUBLE_EQ(ks_two_sample({1, 2, 2, 3}, {1, 3, 3, 3}).statistic, 0.5);
+}
+
+// Three replicates an engine, all apart: only the 2 of the C(6, 3) = 20 orderings that keep
+// the samples apart reach D = 1, so p = 0.1, not significant (the asymptotic series said
+// 0.033). Two against two: 2 / 6.
+TEST(KsTwoSample, SmallSamplesGetTheExactPValue) {
+  EXPECT_NEAR(ks_two_sample({2, 2, 2}, {0, 0, 0}).p_value, 0.1, 1e-12);
+  EXPECT_NEAR(ks_two_sample({1, 2, 3}, {4, 5, 6}).p_value, 0.1, 1e-12);
+  EXPECT_NEAR(ks_two_sample({1, 2}, {3, 4}).p_value, 1.0 / 3.0, 1e-12);
+  // Four against four, D = 1: 2 / 70.
+  EXPECT_NEAR(ks_two_sample({1, 2, 3, 4}, {5, 6, 7, 8}).p_value, 2.0 / 70.0, 1e-12);
+}
+
+// A larger case against scipy.stats.ks_2samp(method='exact') (scipy 1.10): 0..99 against
+// 19..118, D = 0.19, p = 0.05390207893129876; the asymptotic series is within 0.01 of it.
+TEST(KsExactPValue, MatchesScipyForALargerSample) {
+  const double exact = ks_exact_p_value(100, 100, 0.19);
+  EXPECT_NEAR(exact, 0.05390207893129876, 1e-9);
+  const double ne = std::sqrt(100.0 * 100.0 / 200.0);
+  EXPECT_NEAR(exact, kolmogorov_tail((ne + 0.12 + 0.11 / ne) * 0.19), 0.01);
+  EXPECT_DOUBLE_EQ(ks_exact_p_value(5, 7, 0.0), 1.0);
 }
 
 TEST(KsTwoSample, SeparatedSamplesAreSignificant) {

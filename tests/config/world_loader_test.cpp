@@ -158,9 +158,8 @@ TEST(WorldLoaderErrors, UnknownKeysSuggestTheClosestKnownOne) {
 // A controller key the file gives that its controller never reads would be dropped without a
 // word (a Soysal key left in a file switched to Bayindir): refused, naming who reads it. So is
 // the same key from --set or a sweep point, which summary.json would list as a change the run
-// never made, unless the overrides set controller.type too (a sweep over controller types).
-// `reproduce --set`, one override for worlds of every controller, applies its overrides itself
-// and is not checked.
+// never made. `reproduce --set`, one override for worlds of every controller, applies its
+// overrides itself and is not checked.
 TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
   EXPECT_THAT(error_of("controller:\n  type: bayindir\n  approach_radius: 12\n"),
               AllOf(HasSubstr("w.yaml:3:3"), HasSubstr("controller.approach_radius"),
@@ -181,10 +180,11 @@ TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
   EXPECT_EQ(
       error_of("controller: {type: bayindir, approach_radius: 12}\n", {"controller.type=soysal"}),
       "no error");
-  // So may the overrides: a sweep over controller types sets every type's keys in each point.
-  EXPECT_EQ(error_of("controller: {type: bayindir}\n",
-                     {"controller.type=soysal", "controller.p_leave=0.5"}),
-            "no error");
+  // Not so the overrides: they act on the type they set (a sweep over controller types marks
+  // the keys that one of its types reads, tests/sweep/sweep_runs_test.cpp).
+  EXPECT_THAT(error_of("controller: {type: bayindir}\n",
+                       {"controller.type=soysal", "controller.p_leave=0.5"}),
+              HasSubstr("controller.p_leave: the world's controller type 'soysal'"));
 }
 
 // A key given no value is named where it stands, not where the next token starts.

@@ -29,5 +29,14 @@ TEST(RatesText, RatesSayHowManyEventsTheyCameFrom) {
   EXPECT_EQ(lines[1], "growth 2: too few events (3)");
 }
 
+// A size's geometry needs observations from two replicates or more: 789 observations in one
+// replicate are not "too few events".
+TEST(RatesText, AnUnestimatedGeometrySaysWhatItNeeds) {
+  const std::vector<std::string> lines =
+      rate_summary_lines({{.term = "radius", .size = 2, .estimate = {.events = 789}}});
+  EXPECT_EQ(lines[0],
+            "radius 2: not estimated (789 observations; needs 10, from 2 replicates or more)");
+}
+
 }  // namespace
 }  // namespace swarmagg

@@ -33,6 +33,28 @@ TEST(ReturnsReport, PoolsReturnsFromAggregatesOfThreeOrMore) {
   EXPECT_DOUBLE_EQ(returning_share_of_joins(soysal_figure().rates), 0.8);
 }
 
+// rates.csv times a size's returns only from 10 of them on: the mean time away is over the
+// timed ones, and says how many those are when not all (it read as every return's).
+TEST(ReturnsReport, TheMeanTimeAwaySaysWhichReturnsItCovers) {
+  FigureResult r = soysal_figure();
+  const auto timed = [](int size, std::uint64_t returns, double mean) {
+    RateRow row = counted("return_time", size, returns, static_cast<double>(returns));
+    row.estimate.rate = mean;
+    return row;
+  };
+  r.rates.push_back(timed(3, 90, 10.0));
+  r.rates.push_back(timed(4, 290, 20.0));
+  EXPECT_DOUBLE_EQ(pooled_returns(r.rates).mean_time, (90 * 10.0 + 290 * 20.0) / 380.0);
+  EXPECT_NE(why_models_miss_section({r}, {}).find("(mean time away 17.63 tu)"), std::string::npos)
+      << why_models_miss_section({r}, {});
+  r.rates.back() = counted("return_time", 4, 290, 290.0);  // too few to time, say
+  const ReturnSummary partly = pooled_returns(r.rates);
+  EXPECT_EQ(partly.timed, 90u);
+  EXPECT_NE(why_models_miss_section({r}, {}).find("10 tu (90 of the returns timed)"),
+            std::string::npos)
+      << why_models_miss_section({r}, {});
+}
+
 TEST(ReturnsReport, EveryErrorStandsBesideItsFloor) {
   const std::string text = noise_floor_section({soysal_figure()}, {});
   EXPECT_NE(text.find("original 0.8 / 0.08 (10x)"), std::string::npos) << text;

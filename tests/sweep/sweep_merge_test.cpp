@@ -68,6 +68,16 @@ TEST_F(SweepMergeTest, AnotherSweepsFolderOrARunAreMergedIntoOnlyWithForce) {
   for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
                            "sweep_partitions.csv", "logs/slurm-1.out", "final-noa-vs-mine.png"})
     testing::write_file_text(dir_ / "m" / name, "earlier\n");
+  // Plots are named by the earlier summary's world keys only: an edited column cannot name
+  // a file outside the folder.
+  testing::write_file_text(dir_ / "victim.png", "yours\n");
+  const std::string summary = read_file_text(dir_ / "m" / "sweep_summary.csv");
+  testing::write_file_text(dir_ / "m" / "sweep_summary.csv", "../../../victim," + summary);
+  merge_sweep({dir_ / "full"}, dir_ / "m");
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "victim.png"));
+  for (const char* name : {"final-noa-vs-robots.count.png", "plots/final-noa-vs-robots.count.gp",
+                           "sweep_partitions.csv"})
+    testing::write_file_text(dir_ / "m" / name, "earlier\n");
   // The same sweep merged again draws the same plots: they stay, and so do other files.
   EXPECT_THAT(merge_sweep({dir_ / "full"}, dir_ / "m").removed,
               ::testing::ElementsAre(dir_ / "m" / "sweep_partitions.csv"));

@@ -56,6 +56,12 @@ TEST_F(SweepTest, APointSettingAKeyItsControllerDoesNotReadIsRefused) {
                  "  controller.p_leave: [0.001]\n",
                  "types.yaml"));
   EXPECT_EQ(expand_sweep(types).size(), 2u * 5u);
+  // A key none of the swept types reads is refused.
+  const SweepPlan none = load_sweep(
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [bayindir, cockroach]\n"
+                 "  controller.approach_radius: [8]\n",
+                 "none.yaml"));
+  EXPECT_THROW(expand_sweep(none), InputError);
 }
 
 TEST_F(SweepTest, EachRunIsOneReplicateWithItsOwnSeed) {
