@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 namespace swarmagg {
 namespace {
@@ -52,6 +54,25 @@ TEST(KsExactPValue, MatchesScipyForALargerSample) {
   const double ne = std::sqrt(100.0 * 100.0 / 200.0);
   EXPECT_NEAR(exact, kolmogorov_tail((ne + 0.12 + 0.11 / ne) * 0.19), 0.01);
   EXPECT_DOUBLE_EQ(ks_exact_p_value(5, 7, 0.0), 1.0);
+}
+
+// Under the null hypothesis a 5 % test rejects at most 5 % of the time. The asymptotic
+// series rejected 10 % of pairs of 3 uniform samples, 8 % of pairs of 5 or 8 (20,000 pairs
+// each); the exact p-values reject 0, 0.8 and 1.7 %.
+TEST(KsTwoSample, ATrueNullIsRejectedAtMostAtTheTestsLevel) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> uniform;
+  for (const int n : {3, 5, 8}) {
+    int rejected = 0;
+    const int pairs = 4000;
+    for (int t = 0; t < pairs; ++t) {
+      std::vector<double> a(static_cast<std::size_t>(n)), b(static_cast<std::size_t>(n));
+      for (double& x : a) x = uniform(rng);
+      for (double& x : b) x = uniform(rng);
+      rejected += ks_two_sample(a, b).p_value < 0.05;
+    }
+    EXPECT_LE(rejected, pairs / 20) << n << " values a sample";
+  }
 }
 
 TEST(KsTwoSample, SeparatedSamplesAreSignificant) {
