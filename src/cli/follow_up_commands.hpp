@@ -6,7 +6,7 @@
 
 namespace swarmagg::cli {
 
-// `text` as one word of a POSIX shell command: as it is when plain, else in single quotes. A
+// A path as one word of a POSIX shell command: as it is when plain, else in single quotes; a
 // relative path starting with '-' gains "./", so that it is not read as an option.
 std::string shell_word(const std::string& text);
 

@@ -20,8 +20,8 @@ const char* verdict(double p) {
 }
 
 constexpr const char* kKsMethod =
-    "exact (lattice walk) up to 10^7 replicate pairs, else the asymptotic Kolmogorov series "
-    "with Stephens' correction; conservative with ties";
+    "exact (lattice walk) when the two samples' sizes multiply to 10^7 or less, else the "
+    "asymptotic Kolmogorov series with Stephens' correction; conservative with ties";
 constexpr const char* kNoAggregates = "an arm ended with no aggregate";
 constexpr const char* kNoAttempts = "an arm made no LEAVE attempt";
 
@@ -110,7 +110,11 @@ nlohmann::json arm_json(const ArmSummary& arm) {
 }
 
 nlohmann::json ks_json(const KsResult& ks) {
-  return {{"statistic", ks.statistic}, {"p_value", ks.p_value}, {"n_a", ks.n_a}, {"n_b", ks.n_b}};
+  return {{"statistic", ks.statistic},
+          {"p_value", ks.p_value},
+          {"n_a", ks.n_a},
+          {"n_b", ks.n_b},
+          {"p_value_exact", ks.exact}};
 }
 
 }  // namespace
@@ -200,8 +204,8 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
           {"verdicts",
            {{"final_noa", judged(c.noa_differs())},
             {"encounter_rate", judged(c.encounter_rate_differs())},
-            {"escape_fraction",
-             c.has_leaving ? judged(c.escape_fraction_differs()) : std::string("not judged")},
+            {"escape_fraction", c.escape_fraction_judged() ? judged(c.escape_fraction_differs())
+                                                           : std::string("not judged")},
             {"net_merge_rate", judged(c.net_merge_rate_differs())}}},
           {"differs", c.differs()}};
 }

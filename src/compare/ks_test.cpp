@@ -48,6 +48,7 @@ KsResult ks_two_sample(std::vector<double> a, std::vector<double> b) {
   }
   if (na * nb <= kExactPairs) {
     result.p_value = ks_exact_p_value(a.size(), b.size(), result.statistic);
+    result.exact = true;
     return result;
   }
   const double ne = std::sqrt(na * nb / (na + nb));
@@ -65,23 +66,25 @@ double ks_exact_p_value(std::size_t n, std::size_t m, double statistic) {
     return std::abs(static_cast<double>(i) * static_cast<double>(m) -
                     static_cast<double>(j) * static_cast<double>(n)) < bound;
   };
-  // below[j]: the fraction of the C(i + j, i) walks to (i, j) that stayed inside. A walk to
-  // (i, j) came from (i - 1, j) in i of every i + j cases, from (i, j - 1) in j of them.
-  std::vector<double> below(m + 1, 0.0);
+  // left[j]: the fraction of the C(i + j, i) walks to (i, j) that have left the band, the
+  // p-value's own terms (summing those that stayed and taking 1 - their sum would cancel to 0
+  // for p below 1e-16). A walk to (i, j) came from (i - 1, j) in i of every i + j cases, from
+  // (i, j - 1) in j of them; one outside the band has left.
+  std::vector<double> left(m + 1, 0.0);
   for (std::size_t i = 0; i <= n; ++i) {
     for (std::size_t j = 0; j <= m; ++j) {
       if (i == 0 && j == 0) {
-        below[0] = 1.0;
+        left[0] = 0.0;
       } else if (!inside(i, j)) {
-        below[j] = 0.0;
+        left[j] = 1.0;
       } else {
         const double total = static_cast<double>(i + j);
-        below[j] = (i > 0 ? below[j] * static_cast<double>(i) / total : 0.0) +
-                   (j > 0 ? below[j - 1] * static_cast<double>(j) / total : 0.0);
+        left[j] = (i > 0 ? left[j] * static_cast<double>(i) / total : 0.0) +
+                  (j > 0 ? left[j - 1] * static_cast<double>(j) / total : 0.0);
       }
     }
   }
-  return std::clamp(1.0 - below[m], 0.0, 1.0);
+  return std::clamp(left[m], 0.0, 1.0);
 }
 
 }  // namespace swarmagg

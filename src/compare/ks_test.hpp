@@ -1,6 +1,7 @@
 #pragma once
-// Two-sample Kolmogorov-Smirnov test. For samples whose sizes multiply to at most 10^7 (every
-// `compare` of up to a few thousand replicates per engine) the p-value is exact: the share of
+// Two-sample Kolmogorov-Smirnov test. For samples whose sizes multiply to at most 10^7 (the
+// final NOA of up to about 3,000 replicates an engine; final sizes count aggregates, so
+// fewer) the p-value is exact: the share of
 // the C(n + m, n) orderings of the pooled sample whose D reaches the observed one, counted by
 // walking the lattice of the two empirical CDFs (Hodges 1958). Larger samples get the
 // asymptotic Kolmogorov series with Stephens' correction (Numerical Recipes 14.3), which
@@ -17,6 +18,7 @@ struct KsResult {
   double p_value = 1.0;
   int n_a = 0;
   int n_b = 0;
+  bool exact = false;  // the p-value from the lattice walk, not the asymptotic series
 };
 
 KsResult ks_two_sample(std::vector<double> a, std::vector<double> b);

@@ -371,12 +371,17 @@ bool controller_type_reads(const std::string& type, const std::string& path) {
 
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides) {
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);
+  // Overrides that set the type already (a sweep over types: then none of them reads it).
+  const std::string remedy = sets_controller_type(overrides)
+                                 ? "; no controller type given reads it: remove it, or add a "
+                                   "type that does"
+                                 : "; remove it or set controller.type too";
   for (const WorldOverride& override : overrides) {
     if (override.any_controller || !unread_controller_key(controller, override.key)) continue;
     throw InputError(override.origin + ": " + override.key + ": the world's controller type '" +
                      spec.controller.type + "' (" + spec.source +
                      ") does not read this key, so the run would ignore it" +
-                     readers_of(override.key) + "; remove it or set controller.type too");
+                     readers_of(override.key) + remedy);
   }
 }
 

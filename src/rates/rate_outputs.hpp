@@ -1,6 +1,7 @@
 #pragma once
 // The measured-rates outputs of a run (docs/models.md), written atomically into a folder:
-// rates.csv, rates.json and, when gnuplot is installed, a plot per term (rates-<term>.png).
+// rates.csv, rates.json and a plot per term (rates-<term>.png, drawn when gnuplot is
+// installed, its script and CSV beside it either way).
 #include <filesystem>
 #include <vector>
 
@@ -14,8 +15,8 @@ namespace swarmagg {
 // runs of `reproduce` and `run --no-plots`: `gnuplot rates-<term>.gp` in the folder draws it).
 enum class RatePlots { Draw, ScriptsOnly };
 
-// Writes `rows` (measured_rate_rows of the tally). Without gnuplot the plots are skipped with
-// a note on stderr.
+// Writes `rows` (measured_rate_rows of the tally). Without gnuplot the plots' scripts and CSVs
+// are written undrawn, with a note on stderr.
 void write_rate_outputs(const WorldSpec& world, const RateTally& tally,
                         const std::vector<RateRow>& rows, const std::filesystem::path& folder,
                         RatePlots plots = RatePlots::Draw);

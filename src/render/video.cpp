@@ -294,10 +294,10 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
     throw InputError("no frames to assemble in " + frames_dir.string() +
                      " (expected frame_000000.png, frame_000001.png, ...)");
   }
+  check_frames_contiguous(frames_dir);
   // The request checked as `run --video` checks it, so that a container ffmpeg cannot make is
   // bad input (exit 2) here too, not a failed ffmpeg run.
   const std::filesystem::path program = check_video_request(output, options);
-  check_frames_contiguous(frames_dir);
   if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
   const auto temporary =
       output.parent_path() / ("." + output.stem().string() + "." + std::to_string(::getpid()) +

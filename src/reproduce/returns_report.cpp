@@ -85,7 +85,8 @@ std::string time_text(const ReturnSummary& returns) {
   if (returns.timed == 0) return "-";
   std::string text = report_number(returns.mean_time) + " tu";
   if (returns.timed < returns.returns)
-    text += " (" + std::to_string(returns.timed) + " of the returns timed)";
+    text += " (over " + std::to_string(returns.timed) + " of " + std::to_string(returns.returns) +
+            " returns)";
   return text;
 }
 
@@ -150,11 +151,8 @@ ReturnSummary pooled_returns(const std::vector<RateRow>& rates, int smallest) {
       summary.returns += row.estimate.events;
     } else if (row.term == "return_time" && row.estimate.rate) {
       time_sum += *row.estimate.rate * static_cast<double>(row.estimate.events);
-    }
-  }
-  for (const RateRow& row : rates) {
-    if (row.term == "return_time" && row.size && *row.size >= smallest && row.estimate.rate)
       summary.timed += row.estimate.events;
+    }
   }
   if (summary.timed) summary.mean_time = time_sum / static_cast<double>(summary.timed);
   return summary;

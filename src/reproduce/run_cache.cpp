@@ -1,12 +1,14 @@
 #include "reproduce/run_cache.hpp"
 
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "analysis/model_errors.hpp"
 #include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
+#include "run/earlier_run.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
 #include "run/placement_sample.hpp"
@@ -56,6 +58,12 @@ bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
   const std::optional<PlacementSample> start = placement_start(spec, options.threads);
   const PlacementSample* sample = start ? &*start : nullptr;
   const std::vector<RateRow> rows = measured_rate_rows(spec, *run.rates, sample);
+  // An earlier reproduction's rate plots (drawn with --run-plots) would stay beside the new
+  // rates, whose scripts alone are written by default.
+  std::vector<std::string> failures;
+  clear_earlier_rates(folder, failures);
+  for (const std::string& failure : failures)
+    std::cerr << "warning: cannot remove the earlier rates' " << failure << "\n";
   write_rate_outputs(spec, *run.rates, rows, folder, rate_plots);
   const MeasuredTerms terms = measured_terms(rows);
   write_model_outputs(spec, paper_predictions(spec, &terms, sample), folder);

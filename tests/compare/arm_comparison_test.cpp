@@ -164,6 +164,7 @@ TEST(ArmComparison, UndefinedStatisticsAreNotJudged) {
   const nlohmann::json json = comparison_json("small", c);
   EXPECT_FALSE(json["ks_final_aggregate_sizes_judged"].get<bool>());
   EXPECT_FALSE(json["escape_fraction"]["judged"].get<bool>());
+  EXPECT_EQ(json["verdicts"]["escape_fraction"], "not judged");
 }
 
 }  // namespace
