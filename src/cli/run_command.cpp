@@ -180,8 +180,10 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
   if (run.rates) {
     written.rows = measured_rate_rows(spec, *run.rates, sample);
     if (options.rates) {
+      // Without gnuplot the run's own "plots skipped" note says it once for all plots.
+      const bool draw = !options.no_plots && plots_unavailable_reason().empty();
       write_rate_outputs(spec, *run.rates, written.rows, out,
-                         options.no_plots ? RatePlots::ScriptsOnly : RatePlots::Draw);
+                         draw ? RatePlots::Draw : RatePlots::ScriptsOnly);
     }
     written.measured = measured_terms(written.rows);
   }

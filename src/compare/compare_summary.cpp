@@ -1,5 +1,6 @@
 #include "compare/compare_summary.hpp"
 
+#include <optional>
 #include <sstream>
 
 #include "output/format_text.hpp"
@@ -7,8 +8,21 @@
 namespace swarmagg {
 namespace {
 
-double fraction(std::int64_t part, std::int64_t whole) {
-  return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+// A fraction of no attempts is none: "-" in the text, null in the JSON (0 read as "none got
+// out").
+std::optional<double> fraction(std::int64_t part, std::int64_t whole) {
+  if (whole <= 0) return std::nullopt;
+  return static_cast<double>(part) / static_cast<double>(whole);
+}
+
+std::string fraction_text(std::int64_t part, std::int64_t whole) {
+  const std::optional<double> f = fraction(part, whole);
+  return f ? format_text("%.3f", *f) : "-";
+}
+
+nlohmann::json fraction_json(std::int64_t part, std::int64_t whole) {
+  const std::optional<double> f = fraction(part, whole);
+  return f ? nlohmann::json(*f) : nlohmann::json(nullptr);
 }
 
 constexpr const char* kRimRuleText =
@@ -33,18 +47,17 @@ void leave_line(std::ostringstream& out, const ArmSummary& arm) {
   const RimSplit& tried = arm.leave.attempts;
   const RimSplit& out_of = arm.leave.escapes;
   out << "  " << arm.label << ": rim " << out_of.rim << "/" << tried.rim << " got out ("
-      << format_text("%.3f", fraction(out_of.rim, tried.rim)) << "), inside " << out_of.inside
-      << "/" << tried.inside << " (" << format_text("%.3f", fraction(out_of.inside, tried.inside))
-      << ")\n";
+      << fraction_text(out_of.rim, tried.rim) << "), inside " << out_of.inside << "/"
+      << tried.inside << " (" << fraction_text(out_of.inside, tried.inside) << ")\n";
 }
 
 nlohmann::json leave_json(const LeaveTally& l) {
   return {{"rim_attempts", l.attempts.rim},
           {"rim_got_out", l.escapes.rim},
-          {"rim_fraction_out", fraction(l.escapes.rim, l.attempts.rim)},
+          {"rim_fraction_out", fraction_json(l.escapes.rim, l.attempts.rim)},
           {"inside_attempts", l.attempts.inside},
           {"inside_got_out", l.escapes.inside},
-          {"inside_fraction_out", fraction(l.escapes.inside, l.attempts.inside)}};
+          {"inside_fraction_out", fraction_json(l.escapes.inside, l.attempts.inside)}};
 }
 
 // "<what>: a <mean +- half width>, b <...> (Welch, p = ...)" for a quantity measured per

@@ -312,6 +312,15 @@ TEST(Cli, RatesAndCompareWithoutGnuplotKeepTheirScripts) {
   EXPECT_THAT(r.output, HasSubstr("rate plots not drawn"));
   EXPECT_TRUE(std::filesystem::exists(rates / "rates-escape.gp"));
   EXPECT_TRUE(std::filesystem::exists(rates / "rates-escape.csv"));
+  // `run --rates` says it once, for its own plots and the rates' together.
+  const auto run = temp_dir("no-gnuplot-run-rates");
+  const Outcome both = swarmagg_with_env("PATH=/nonexistent",
+                                         kTinyRun + std::string("--rates --out ") + run.string());
+  EXPECT_EQ(both.exit_code, 0) << both.output;
+  EXPECT_EQ(occurrences(both.output, "plots skipped"), 1) << both.output;
+  EXPECT_EQ(occurrences(both.output, "not drawn"), 0) << both.output;
+  EXPECT_TRUE(std::filesystem::exists(run / "rates-escape.gp"));
+  std::filesystem::remove_all(run);
   const auto compare = temp_dir("no-gnuplot-compare");
   const Outcome c =
       swarmagg_with_env("PATH=/nonexistent",

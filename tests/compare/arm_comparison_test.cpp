@@ -82,6 +82,7 @@ TEST(ArmComparison, EveryQuantityGetsItsOwnVerdict) {
   const nlohmann::json json = comparison_json("small", c);
   EXPECT_EQ(json["verdicts"]["encounter_rate"], "different");
   EXPECT_EQ(json["verdicts"]["escape_fraction"], "not judged");
+  EXPECT_TRUE(json["a"]["leave_attempts"]["rim_fraction_out"].is_null());  // nobody leaves
 }
 
 TEST(ArmComparison, TwoProportionsTestLikeAHandComputation) {
@@ -154,6 +155,8 @@ TEST(ArmComparison, UndefinedStatisticsAreNotJudged) {
   EXPECT_NE(text.find("  escape fraction: not judged (an arm made no LEAVE attempt)"),
             std::string::npos)
       << text;
+  EXPECT_NE(text.find("kinematic: rim 0/3 got out (0.000), inside 0/0 (-)"), std::string::npos)
+      << text;
   EXPECT_NE(text.find("  final NOA: no significant difference (Welch on the mean, KS on NOA)\n"),
             std::string::npos)
       << text;
@@ -165,6 +168,8 @@ TEST(ArmComparison, UndefinedStatisticsAreNotJudged) {
   EXPECT_FALSE(json["ks_final_aggregate_sizes_judged"].get<bool>());
   EXPECT_FALSE(json["escape_fraction"]["judged"].get<bool>());
   EXPECT_EQ(json["verdicts"]["escape_fraction"], "not judged");
+  EXPECT_TRUE(json["a"]["leave_attempts"]["inside_fraction_out"].is_null());
+  EXPECT_EQ(json["a"]["leave_attempts"]["rim_fraction_out"], 0.0);
 }
 
 }  // namespace
