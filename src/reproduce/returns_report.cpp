@@ -85,8 +85,8 @@ std::string time_text(const ReturnSummary& returns) {
   if (returns.timed == 0) return "-";
   std::string text = report_number(returns.mean_time) + " tu";
   if (returns.timed < returns.returns)
-    text += " (over " + std::to_string(returns.timed) + " of " + std::to_string(returns.returns) +
-            " returns)";
+    text += ", over " + std::to_string(returns.timed) + " of " + std::to_string(returns.returns) +
+            " returns";
   return text;
 }
 

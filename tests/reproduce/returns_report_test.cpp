@@ -50,7 +50,7 @@ TEST(ReturnsReport, TheMeanTimeAwaySaysWhichReturnsItCovers) {
   r.rates.back() = counted("return_time", 4, 290, 290.0);  // too few to time, say
   const ReturnSummary partly = pooled_returns(r.rates);
   EXPECT_EQ(partly.timed, 90u);
-  EXPECT_NE(why_models_miss_section({r}, {}).find("10 tu (over 90 of 380 returns)"),
+  EXPECT_NE(why_models_miss_section({r}, {}).find("(mean time away 10 tu, over 90 of 380 returns)"),
             std::string::npos)
       << why_models_miss_section({r}, {});
 }
