@@ -2,8 +2,6 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <algorithm>
-#include <iterator>
 #include <utility>
 
 #include "config/world_loader.hpp"
@@ -33,7 +31,7 @@ void flatten(const YAML::Node& node, const std::string& key, FlatKeys& keys) {
 
 // The run keys a model's errors against a run depend on: its length, its recorded steps and
 // (for the noise floors, batches of run.replicates) its replicates.
-constexpr const char* kMeasuredRunKeys[] = {"run.duration", "run.record_every", "run.replicates"};
+constexpr const char* kMeasuredRunKeys[] = {"duration", "record_every", "replicates"};
 
 FlatKeys system_keys(const YAML::Node& world, bool with_run) {
   FlatKeys keys;
@@ -41,12 +39,8 @@ FlatKeys system_keys(const YAML::Node& world, bool with_run) {
     if (world[section]) flatten(world[section], section, keys);
   }
   if (!with_run || !world["run"]) return keys;
-  FlatKeys run;
-  flatten(world["run"], "run", run);
-  for (const auto& [key, value] : run) {
-    if (std::find(std::begin(kMeasuredRunKeys), std::end(kMeasuredRunKeys), key) !=
-        std::end(kMeasuredRunKeys))
-      keys.emplace_back(key, value);
+  for (const char* name : kMeasuredRunKeys) {
+    if (world["run"][name]) flatten(world["run"][name], std::string("run.") + name, keys);
   }
   return keys;
 }
