@@ -18,7 +18,8 @@ class Sweep:
 
     @property
     def report(self) -> dict:
-        """name, out, runs, already_complete, ran, threads, wall_seconds."""
+        """name, out, runs, already_complete, ran, threads, wall_seconds, removed (the earlier
+        merge's plots and tables in `out` that this merge outdated and removed, as paths)."""
         return dict(self._report)
 
     def results(self) -> pd.DataFrame:

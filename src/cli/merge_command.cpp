@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/follow_up_commands.hpp"
+#include "cli/merge_removals.hpp"
 #include "output/output_check.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/sweep_merge.hpp"
@@ -28,14 +28,7 @@ int merge_command(const MergeCommandOptions& command) {
     for (const std::filesystem::path& file : report.files)
       std::cout << " " << file.filename().string();
     std::cout << "\n";
-    if (!report.removed.empty()) {
-      std::cout << "removed what the earlier merge in " << command.out
-                << "/ drew or held that this one outdates:";
-      for (const std::filesystem::path& file : report.removed) std::cout << " " << file.string();
-      std::cout << "\n";
-    }
-    if (report.plots_removed)
-      std::cout << "`swarmagg plot " << shell_word(command.out) << "` draws the sweep's plots\n";
+    std::cout << merge_removals_text(report, command.out, false);
   }
   return 0;
 }

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/merge_removals.hpp"
 #include "cli/progress_option.hpp"
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
@@ -70,8 +71,10 @@ int sweep_command(const SweepCommandOptions& command) {
   // An unsharded sweep holds every run, so it merges itself.
   command.progress.phase(command.quiet, plan.name, "merging the runs");
   const MergeReport merged = merge_sweep({options.out}, options.out);
-  if (!command.quiet)
-    std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n";
+  if (!command.quiet) {
+    std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n"
+              << merge_removals_text(merged, options.out.string(), sweep_plots);
+  }
   if (!sweep_plots) return 0;
   command.progress.phase(command.quiet, plan.name, "drawing the sweep's plots (gnuplot)");
   const PlotOutcome plots = draw_sweep_plots(options.out, options.out);

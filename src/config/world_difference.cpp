@@ -29,9 +29,26 @@ void flatten(const YAML::Node& node, const std::string& key, FlatKeys& keys) {
   keys.emplace_back(key, text.c_str());
 }
 
-// The run keys a model's errors against a run depend on: its length, its recorded steps and
-// (for the noise floors, batches of run.replicates) its replicates.
-constexpr const char* kMeasuredRunKeys[] = {"duration", "record_every", "replicates"};
+// The run keys a model's errors against a run depend on, beside its length: its recorded
+// steps and (for the noise floors, batches of run.replicates) its replicates.
+constexpr const char* kMeasuredRunKeys[] = {"record_every", "replicates"};
+constexpr const char* kRunLengthKey = "run.duration / engine.dt";
+
+// A run's length as the steps it runs (WorldSpec::steps), not as text: durations of 100 and
+// 100.01 at dt 0.1 are the same 1,000 steps. A length that is not numbers is compared as text.
+void flatten_run_length(const YAML::Node& world, FlatKeys& keys) {
+  const YAML::Node duration = world["run"]["duration"];
+  if (!duration) return;
+  try {
+    WorldSpec spec;
+    spec.run.duration = duration.as<double>();
+    if (world["engine"] && world["engine"]["dt"])
+      spec.engine.dt = world["engine"]["dt"].as<double>();
+    keys.emplace_back(kRunLengthKey, std::to_string(spec.steps()) + " steps");
+  } catch (const YAML::Exception&) {
+    flatten(duration, "run.duration", keys);
+  }
+}
 
 FlatKeys system_keys(const YAML::Node& world, bool with_run) {
   FlatKeys keys;
@@ -39,6 +56,7 @@ FlatKeys system_keys(const YAML::Node& world, bool with_run) {
     if (world[section]) flatten(world[section], section, keys);
   }
   if (!with_run || !world["run"]) return keys;
+  flatten_run_length(world, keys);
   for (const char* name : kMeasuredRunKeys) {
     if (world["run"][name]) flatten(world["run"][name], std::string("run.") + name, keys);
   }

@@ -18,9 +18,9 @@ namespace swarmagg {
 // kinematic worlds apart.
 std::vector<std::string> system_differences(const std::string& there, const WorldSpec& here);
 // The system's differences and those of the run keys a model's errors against a run depend on
-// (run.duration, run.record_every, run.replicates: the noise floors are batches of replicates).
-std::vector<std::string> measured_run_differences(const std::string& there,
-                                                  const WorldSpec& here);
+// (the steps run.duration / engine.dt, run.record_every, run.replicates: the noise floors are
+// batches of replicates).
+std::vector<std::string> measured_run_differences(const std::string& there, const WorldSpec& here);
 
 // The first few differences joined for a message ("robots.count: 60 there, 10 here; ...").
 std::string differences_text(const std::vector<std::string>& differences);

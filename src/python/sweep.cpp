@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "python/bindings.hpp"
 #include "python/errors.hpp"
@@ -26,11 +27,14 @@ py::dict sweep(const std::string& path, std::optional<std::string> out, int thre
   options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;
   options.threads = threads;
   options.replace_outdated = force;
+  MergeReport merged;
   const SweepReport report = call_interruptibly([&] {
     const SweepReport ran = run_sweep(plan, options);
-    merge_sweep({options.out}, options.out);
+    merged = merge_sweep({options.out}, options.out);
     return ran;
   });
+  std::vector<std::string> removed;
+  for (const std::filesystem::path& file : merged.removed) removed.push_back(file.string());
   py::dict result;
   result["name"] = plan.name;
   result["out"] = options.out.string();
@@ -39,6 +43,8 @@ py::dict sweep(const std::string& path, std::optional<std::string> out, int thre
   result["ran"] = report.ran;
   result["threads"] = report.threads;
   result["wall_seconds"] = report.wall_seconds;
+  // The earlier merge's plots and tables this merge outdated (the CLI names them).
+  result["removed"] = removed;
   return result;
 }
 

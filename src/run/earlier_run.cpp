@@ -107,7 +107,11 @@ std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
     remove_earlier_output(path, failures);
   };
   std::error_code missing;
-  if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing)) return failures;
+  // rates.json marks a folder `rates` wrote: its rates.csv, of another run, would otherwise
+  // stay beside this run's outputs and be taken for its rates.
+  if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing) &&
+      !std::filesystem::is_regular_file(out / "rates.json", missing))
+    return failures;
   remove(out / "world.resolved.yaml");
   clear_earlier_rates(out, failures);
   for (const char* name :

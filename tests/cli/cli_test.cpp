@@ -143,6 +143,45 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
   std::filesystem::remove_all(out);
 }
 
+// A folder `rates` wrote holds the rates of another run: `run --force` without --rates leaves
+// no rates.csv there that a later `model --rates` (or the Ctrl-C note) would take for its own.
+TEST(Cli, ForceLeavesNoRatesOfAnEarlierRatesCommand) {
+  const std::filesystem::path out = temp_dir("force-rates");
+  const std::string world = "worlds/examples/demo.yaml --set run.duration=30 --quiet ";
+  ASSERT_EQ(swarmagg("rates " + world + "--replicates 2 --out " + out.string()).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(out / "rates.json"));
+  const Outcome run =
+      swarmagg("run " + world + "--no-plots --no-model --force --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  for (const char* name : {"rates.csv", "rates.json", "rates-escape.gp"})
+    EXPECT_FALSE(std::filesystem::exists(out / name)) << name;
+  EXPECT_TRUE(std::filesystem::exists(out / "world.resolved.yaml"));
+  std::filesystem::remove_all(out);
+}
+
+// A sweep merges itself; what that merge removes of an earlier one (here a stale
+// sweep_partitions.csv: the demo's controller records no partitions) is named, as `merge` names
+// it, with or without the sweep's plots.
+TEST(Cli, ASweepNamesWhatItsMergeRemoved) {
+  const std::filesystem::path out = temp_dir("sweep-removed");
+  const std::filesystem::path file = out.string() + ".yaml";
+  std::ofstream(file) << "name: small\nbase: " SWARMAGG_SOURCE_DIR
+                         "/worlds/examples/demo.yaml\nparameters:\n"
+                         "  controller.p_leave: [0.001, 0.01]\n  run.duration: [15]\n"
+                         "replicates: 1\nseed: 11\n";
+  const std::string sweep = "sweep " + file.string() + " --no-plots --out " + out.string();
+  const Outcome first = swarmagg(sweep);
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  std::ofstream(out / "sweep_partitions.csv") << "earlier\n";
+  const Outcome again = swarmagg(sweep);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_THAT(again.output,
+              HasSubstr("this one outdates: " + (out / "sweep_partitions.csv").string()));
+  EXPECT_FALSE(std::filesystem::exists(out / "sweep_partitions.csv"));
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(file);
+}
+
 // summary.json's model errors describe the model beside the run: `model` into a run's folder
 // writes them, whether the run had no model (--no-model, or Ctrl-C while it was computed) or
 // another one (with measured variants this one lacks).

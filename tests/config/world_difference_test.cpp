@@ -72,5 +72,19 @@ TEST(WorldDifference, GivenPositionsAndUnreadableTextsDiffer) {
   }
 }
 
+// A model's errors against a run depend on the run's steps, recorded rows and replicates, not
+// on how its length is spelt: 100 and 100.01 tu at dt 0.1 are the same 1,000 steps.
+TEST(WorldDifference, AMeasuredRunIsTheSameRunWhenItRunsTheSameSteps) {
+  const std::string there = world_to_yaml(demo({"run.duration=100"}));
+  EXPECT_TRUE(measured_run_differences(there, demo({"run.duration=100.01", "run.seed=4"})).empty());
+  EXPECT_EQ(
+      measured_run_differences(there, demo({"run.duration=200"})),
+      std::vector<std::string>{"run.duration / engine.dt: 1000 steps there, 2000 steps here"});
+  EXPECT_EQ(measured_run_differences(there, demo({"run.duration=100", "run.replicates=3"})),
+            std::vector<std::string>{"run.replicates: 4 there, 3 here"});
+  EXPECT_EQ(measured_run_differences(there, demo({"run.duration=100", "engine.dt=0.05"})).size(),
+            2u);
+}
+
 }  // namespace
 }  // namespace swarmagg

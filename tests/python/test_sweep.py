@@ -30,8 +30,13 @@ def test_sweep_results_equal_the_cli_sweep(cli, demo, tmp_path):
 def test_a_sweep_run_again_keeps_its_complete_runs(demo, tmp_path):
     path = write_sweep(tmp_path, demo)
     first = sa.sweep(path, out=tmp_path / "out")
+    assert first.report["removed"] == []
+    # The demo's controller records no partitions: a sweep_partitions.csv is an earlier
+    # merge's, outdated, and the report names it as `swarmagg merge` does.
+    (tmp_path / "out" / "sweep_partitions.csv").write_text("earlier\n")
     again = sa.sweep(path, out=tmp_path / "out")
     assert (again.report["already_complete"], again.report["ran"]) == (4, 0)
+    assert again.report["removed"] == [str(tmp_path / "out" / "sweep_partitions.csv")]
     pd.testing.assert_frame_equal(first.results(), again.results())
 
 
