@@ -14,7 +14,8 @@ class Sweep:
 
     def __init__(self, report: dict):
         self._report = report
-        self.out = Path(report["out"])
+        # Absolute, so that the frames still load after the caller changes folder.
+        self.out = Path(report["out"]).absolute()
 
     @property
     def report(self) -> dict:

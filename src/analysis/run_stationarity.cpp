@@ -19,17 +19,24 @@ NoaTrend second_half_trend(const StepSeries& noa) {
     spread += (noa.times[i] - mean_time) * (noa.times[i] - mean_time);
   const double length = noa.times.back() - noa.times[first];
   std::vector<double> changes;
+  int frozen = 0;
   for (std::size_t k = 0; k < replicates; ++k) {
     double covariance = 0.0;
+    bool constant = true;
     for (std::size_t i = first; i < noa.steps.size(); ++i) {
-      if (k < noa.values[i].size()) covariance += (noa.times[i] - mean_time) * noa.values[i][k];
+      if (k >= noa.values[i].size()) continue;
+      covariance += (noa.times[i] - mean_time) * noa.values[i][k];
+      constant = constant && noa.values[i][k] == noa.values[first][k];
     }
     changes.push_back(covariance / spread * length);
+    frozen += constant ? 1 : 0;
   }
   const MeanInterval interval = mean_interval(changes);
   NoaTrend trend{.change = interval.mean};
   trend.low = interval.mean - interval.half_width;
   trend.high = interval.mean + interval.half_width;
+  trend.frozen = frozen;
+  trend.replicates = static_cast<int>(replicates);
   return trend;
 }
 

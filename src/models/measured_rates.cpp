@@ -1,6 +1,7 @@
 #include "models/measured_rates.hpp"
 
 #include <cstdio>
+#include <map>
 
 #include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
@@ -9,10 +10,18 @@ namespace swarmagg {
 
 namespace {
 
+// The measured joins the variant grows by: the new joins (join_new) once returns are taken out
+// of the losses anywhere, else every join. Never every join beside returns taken out: a
+// return would then be no loss but still a join into any aggregate. A size without a measured
+// rate keeps the model's term, the new encounters at its capture radius.
+const std::map<int, double>& joins_used(const MeasuredTerms& terms) {
+  return terms.returned.empty() ? terms.growth : terms.new_growth;
+}
+
 int growth_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
   if (!world.controller.join) return 0;
   int used = 0;
-  for (const auto& [size, rate] : terms.growth) used += size >= 2 && size < world.robots.count;
+  for (const auto& [size, rate] : joins_used(terms)) used += size >= 2 && size < world.robots.count;
   return used;
 }
 
@@ -23,17 +32,10 @@ int leave_sizes_used(const WorldSpec& world, const MeasuredTerms& terms) {
   return used;
 }
 
-// Per size: the measured loss per step, attempt (1 - returned), and the growth per step, the
-// new joins where returns were measured (docs/models-returns.md).
+// Per size: the measured loss per step, attempt (1 - returned) (docs/models-returns.md).
 double measured_loss(const MeasuredTerms& terms, int size, double attempt_rate, double dt) {
   const auto returned = terms.returned.find(size);
   return attempt_rate * dt * (1.0 - (returned == terms.returned.end() ? 0.0 : returned->second));
-}
-
-double measured_growth(const MeasuredTerms& terms, int size, double growth_rate, double dt) {
-  const auto fresh = terms.new_growth.find(size);
-  return (terms.returned.empty() || fresh == terms.new_growth.end() ? growth_rate : fresh->second) *
-         dt;
 }
 
 }  // namespace
@@ -51,9 +53,8 @@ BayindirRates measured_bayindir_rates(const WorldSpec& world, const MeasuredTerm
     }
   }
   if (!world.controller.join) return rates;
-  for (const auto& [size, rate] : terms.growth) {
-    if (size >= 2 && size < rates.agents)
-      rates.growth[static_cast<std::size_t>(size)] = measured_growth(terms, size, rate, dt);
+  for (const auto& [size, rate] : joins_used(terms)) {
+    if (size >= 2 && size < rates.agents) rates.growth[static_cast<std::size_t>(size)] = rate * dt;
   }
   return rates;
 }
@@ -69,9 +70,8 @@ SoysalRates measured_soysal_rates(const WorldSpec& world, const MeasuredTerms& t
     }
   }
   if (!world.controller.join) return rates;
-  for (const auto& [size, rate] : terms.growth) {
-    if (size >= 2 && size < rates.agents)
-      rates.join[static_cast<std::size_t>(size)] = measured_growth(terms, size, rate, dt);
+  for (const auto& [size, rate] : joins_used(terms)) {
+    if (size >= 2 && size < rates.agents) rates.join[static_cast<std::size_t>(size)] = rate * dt;
   }
   return rates;
 }
@@ -93,7 +93,8 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
   note += terms.creation ? "measured" : "from the model (too few events)";
   if (world.controller.join) {
     note += ", growth measured at " + std::to_string(growth_sizes_used(world, terms)) +
-            " aggregate sizes (the model's capture radius elsewhere)";
+            " aggregate sizes (" + (terms.returned.empty() ? "" : "new joins, returns left out; ") +
+            "the model's capture radius elsewhere)";
   }
   const ControllerRules rules = controller_rules(world);
   if (rules.leaves && rules.model != ModelFamily::Encounters) {
@@ -103,8 +104,7 @@ std::string measured_variant_note(const WorldSpec& world, const MeasuredTerms& t
         std::to_string(leave_sizes_used(world, terms)) +
         " aggregate sizes (return fraction "
         "measured at " +
-        std::to_string(terms.returned.size()) +
-        "; joins are the new joins there; the model's leave law elsewhere)";
+        std::to_string(terms.returned.size()) + "; the model's leave law elsewhere)";
   }
   return note;
 }

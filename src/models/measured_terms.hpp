@@ -18,9 +18,10 @@ struct MeasuredTerms {
   std::map<int, double> attempt;
   // [m] the fraction of attempts from size m that return to the aggregate they left, and
   // [m] new joins (joins that are not returns) per searcher per size-m aggregate per tu.
-  // The measured variant loses agents at attempt (1 - returned) and grows at new_growth:
-  // a return is neither a loss nor a join. Where a size's return fraction was not measured,
-  // it loses at the attempt rate and grows at the whole growth rate (returns included).
+  // The measured variant loses agents at attempt (1 - returned), at the attempt rate where a
+  // size's return fraction was not measured. Once any return fraction is measured it grows
+  // at new_growth, and at the model's growth where a size's new joins were too few to
+  // measure: a return is no join. Without returns it grows at the whole growth rate.
   std::map<int, double> returned;
   std::map<int, double> new_growth;
 };

@@ -22,6 +22,8 @@ namespace {
 py::dict sweep(const std::string& path, std::optional<std::string> out, int threads, bool force) {
   if (threads < 0 || threads > 1024)  // as run.threads and the CLI's sweep --threads
     throw InputError("threads: expected 0 (all cores) to 1024, got " + std::to_string(threads));
+  // An empty path would be the working folder, holding the runs before anything refused it.
+  if (out && out->empty()) throw InputError("out: expected a path, got ''");
   const SweepPlan plan = reading_file([&] { return load_sweep(path); });
   SweepOptions options;
   options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;

@@ -13,7 +13,7 @@ namespace swarmagg {
 struct ClaimCheck {
   std::string figures;   // where the paper makes it, e.g. "Figs 14-17"
   std::string claim;     // the paper's claim, paraphrased
-  std::string verdict;   // supported | not supported | not checked
+  std::string verdict;   // supported | not supported | undecided (within noise) | not checked
   std::string evidence;  // the numbers behind the verdict
 };
 

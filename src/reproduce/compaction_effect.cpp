@@ -63,15 +63,6 @@ OnOff CompactionEffect::error(const std::string& variant) const {
   return {kNaN, kNaN};
 }
 
-std::optional<double> final_member_spacing(const std::filesystem::path& run_folder) {
-  std::ifstream in(run_folder / "summary.json");
-  if (!in) return std::nullopt;
-  const nlohmann::json summary = nlohmann::json::parse(in);
-  const nlohmann::json& spacing = summary["pooled"]["final"]["mean_member_spacing"];
-  if (!spacing.is_number()) return std::nullopt;
-  return spacing.get<double>();
-}
-
 CompactionEffect compaction_effect(const FigureResult& on, const FigureResult& off) {
   CompactionEffect e;
   e.figures = on.figure.figures;
@@ -84,7 +75,10 @@ CompactionEffect compaction_effect(const FigureResult& on, const FigureResult& o
     }
   }
   e.final_noa = {final_noa(on), final_noa(off)};
-  e.member_spacing = {on.member_spacing.value_or(kNaN), off.member_spacing.value_or(kNaN)};
+  e.member_spacing = {on.summary.member_spacing.value_or(kNaN),
+                      off.summary.member_spacing.value_or(kNaN)};
+  e.inside_attempt_share = {on.summary.inside_attempt_share.value_or(kNaN),
+                            off.summary.inside_attempt_share.value_or(kNaN)};
   e.growth_vs_model = {growth_vs_model(on.rates), growth_vs_model(off.rates)};
   e.escape_fraction = {escape_fraction(on.rates), escape_fraction(off.rates)};
   return e;
@@ -100,6 +94,7 @@ std::string compaction_csv(const std::vector<CompactionEffect>& effects) {
     quantities.emplace_back("member_spacing", e.member_spacing);
     quantities.emplace_back("growth_vs_model", e.growth_vs_model);
     quantities.emplace_back("escape_fraction", e.escape_fraction);
+    quantities.emplace_back("inside_attempt_share", e.inside_attempt_share);
     for (const auto& [name, value] : quantities) {
       for (const bool enabled : {true, false}) {
         text += e.figures + "," + e.world + "," + (enabled ? "on" : "off") + "," + name + "," +

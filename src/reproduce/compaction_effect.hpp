@@ -30,20 +30,18 @@ struct CompactionEffect {
   OnOff member_spacing;   // final mean distance of a member to its nearest fellow member
   OnOff growth_vs_model;  // growths (joins) observed / expected from the model's capture radius
   OnOff escape_fraction;  // escapes / LEAVE attempts
+  OnOff inside_attempt_share;  // LEAVE attempts from inside an aggregate / all attempts
 
   // The error of `variant` (NaN both ways when the comparison has no such variant).
   OnOff error(const std::string& variant) const;
 };
 
-// The pooled final mean member spacing of a run folder's summary.json (nullopt without
-// aggregates at the end).
-std::optional<double> final_member_spacing(const std::filesystem::path& run_folder);
-
 // `on` and `off` are the same NOA or partition figure reproduced both ways.
 CompactionEffect compaction_effect(const FigureResult& on, const FigureResult& off);
 
 // Tidy: figure,world,compaction,quantity,value, one row per quantity and arm (quantity
-// `error:<variant>`, final_noa, member_spacing, growth_vs_model, escape_fraction); NaN
+// `error:<variant>`, final_noa, member_spacing, growth_vs_model, escape_fraction,
+// inside_attempt_share); NaN
 // values are left empty.
 std::string compaction_csv(const std::vector<CompactionEffect>& effects);
 

@@ -12,6 +12,7 @@
 #include "reproduce/encounter_comparison.hpp"
 #include "reproduce/noa_comparison.hpp"
 #include "reproduce/paper_figures.hpp"
+#include "reproduce/run_summary_facts.hpp"
 
 namespace swarmagg {
 
@@ -22,7 +23,7 @@ struct FigureResult {
   std::optional<NoaComparison> noa;               // Noa
   std::optional<PartitionComparison> partitions;  // Partition
   std::vector<RateRow> rates;                     // Noa / Partition: the run's measured terms
-  std::optional<double> member_spacing;           // Noa / Partition: summary.json's final, pooled
+  RunSummaryFacts summary;                        // Noa / Partition: summary.json's, pooled
   // Partition: the NOA trend over the second half (stationarity) and the distributions of
   // NOA and of the largest aggregate over every recorded step (analysis/run_stationarity).
   std::optional<NoaTrend> trend;

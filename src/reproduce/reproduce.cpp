@@ -75,14 +75,14 @@ void compare_and_plot(FigureResult& result, const std::filesystem::path& runs,
     case FigureKind::Noa:
       result.noa = compare_noa(runs / figure.worlds.front());
       result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
-      result.member_spacing = final_member_spacing(runs / figure.worlds.front());
+      result.summary = run_summary_facts(runs / figure.worlds.front());
       plot_noa(files, figure.title, *result.noa);
       break;
     case FigureKind::Partition:
       result.partitions = compare_partitions(runs / figure.worlds.front());
       result.rates = read_rates_csv(runs / figure.worlds.front() / "rates.csv");
       add_run_distributions(result, runs / figure.worlds.front());
-      result.member_spacing = final_member_spacing(runs / figure.worlds.front());
+      result.summary = run_summary_facts(runs / figure.worlds.front());
       plot_partitions(files, figure.title, *result.partitions);
       break;
   }

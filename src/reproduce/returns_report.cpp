@@ -10,9 +10,6 @@ namespace swarmagg {
 
 namespace {
 
-// A variant fits when its error is within this multiple of its noise floor.
-constexpr double kFitsWithin = 2.0;
-
 std::string ratio_text(const VariantError& e) {
   if (!e.noise_floor || *e.noise_floor <= 0.0) return "-";
   return report_number(e.error / *e.noise_floor) + "x";
@@ -42,20 +39,13 @@ std::string distribution_text(const std::map<int, double>& distribution) {
 
 std::string trend_text(const NoaTrend& trend) {
   return report_number(trend.change) + " [" + report_number(trend.low) + ", " +
-         report_number(trend.high) + "] " + (trend.stationary() ? "stationary" : "**trending**");
-}
-
-const VariantError* find_error(const std::vector<VariantError>& errors, const std::string& name) {
-  for (const VariantError& e : errors) {
-    if (e.variant == name) return &e;
-  }
-  return nullptr;
-}
-
-std::optional<double> ratio_of(const std::vector<VariantError>& errors, const std::string& name) {
-  const VariantError* e = find_error(errors, name);
-  if (!e || !e->noise_floor || *e->noise_floor <= 0.0) return std::nullopt;
-  return e->error / *e->noise_floor;
+         report_number(trend.high) + "] " +
+         (!trend.stationary() ? "**trending**"
+          : trend.replicates > 0 && trend.frozen == trend.replicates
+              ? "absorbed (every replicate's NOA constant)"
+          : trend.frozen > 0 ? "stationary, " + std::to_string(trend.frozen) + " of " +
+                                   std::to_string(trend.replicates) + " replicates constant"
+                             : "stationary");
 }
 
 std::string ratio_words(const std::optional<double>& ratio) {
@@ -112,8 +102,9 @@ std::string remaining_miss(const std::vector<FigureResult>& results,
       judge(r.worlds.front().name, *errors);
     trending |= r.trend && !r.trend->stationary();
   }
+  // The series' point at the worlds' own timeout is its figure's run, judged above already.
   for (const TimeoutPoint& p : series) {
-    judge(timeout_label(p), p.comparison.errors);
+    if (!p.paper_run) judge(timeout_label(p), p.comparison.errors);
     trending |= !p.trend.stationary();
   }
   std::string text = "\nWith returns accounted for, the `measured` variant is within " +
@@ -198,7 +189,11 @@ std::string soysal_distribution_section(const std::vector<FigureResult>& results
       "out), and the NOA change over the second half of the run (mean of the replicates' "
       "least-squares slopes times the half's length, 95% t interval): stationary when the "
       "interval holds 0. The partition comparison assumes a stationary run where the run "
-      "average is dominated by the late part.\n\n| Fig | world | NOA | largest aggregate | NOA "
+      "average is dominated by the late part. Absorbed: every replicate's NOA is constant over "
+      "the second half, so no trend shows, but the run does not mix either; which partition "
+      "each replicate froze in is then chance, and the noise floor (the chain's own noise, "
+      "which mixes) understates how far another set of replicates could fall from this one.\n\n| "
+      "Fig | world | NOA | largest aggregate | NOA "
       "change over the second half |\n|---|---|---|---|---|\n";
   for (const FigureResult& r : results) {
     if (!r.partitions || !r.trend) continue;
@@ -217,7 +212,7 @@ std::string timeout_series_section(const std::vector<TimeoutPoint>& series) {
       "numbers in `timeout-series.csv`). Returns: LEAVE attempts from aggregates of 3 or more "
       "that came back; q predicted: the `returns` variant's q(5).\n\n| world | timeout | tu x "
       "replicates | returns (measured) | mean return time | q(5) predicted | TV / floor: "
-      "original, peripheral, returns, measured | NOA change over 2nd half | run s |\n"
+      "original, peripheral, returns, measured | NOA change over 2nd half | simulation s |\n"
       "|---|---|---|---|---|---|---|---|---|\n";
   for (const TimeoutPoint& p : series) {
     const ReturnSummary returns = pooled_returns(p.rates);
@@ -236,7 +231,7 @@ std::string timeout_series_section(const std::vector<TimeoutPoint>& series) {
             report_number(p.duration) + " x " + std::to_string(p.replicates) + " | " +
             returns_text(returns) + " | " + time_text(returns) + " | " +
             (predicted ? report_number(predicted->models.front().rate) : "-") + " | " + ratios +
-            " | " + trend_text(p.trend) + " | " + report_number(p.wall_seconds) + " |\n";
+            " | " + trend_text(p.trend) + " | " + report_number(p.simulation_seconds) + " |\n";
   }
   return text + "\n![Error against the leave timeout](plots/timeout-series.png)\n\n";
 }

@@ -5,6 +5,7 @@
 
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
+#include "analysis/run_files.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
 #include "output/atomic_file.hpp"
@@ -89,11 +90,13 @@ TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun
                      .agents = world.robots.count,
                      .leave_timeout = run.leave_timeout,
                      .duration = world.run.duration,
-                     .replicates = world.run.replicates};
+                     .replicates = world.run.replicates,
+                     .paper_run = paper};
   point.reused = ensure_run(world, folder, run_options, run_rate_plots(options));
   point.comparison = compare_partitions(folder);
   point.rates = read_rates_csv(folder / "rates.csv");
   point.trend = second_half_trend(read_step_series(folder / "timeseries.csv", "noa"));
+  point.simulation_seconds = read_run_files(folder).summary.value("wall_seconds", 0.0);
   point.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return point;
 }

@@ -33,7 +33,10 @@ struct TimeoutPoint {
   std::vector<RateRow> rates = {};
   NoaTrend trend = {};
   bool reused = false;
-  double wall_seconds = 0.0;
+  bool paper_run = false;     // the paper world's own run (its figure's), not one of the series'
+  double wall_seconds = 0.0;  // this reproduce's time on the point (reading a reused run back)
+  // The simulation's own wall time (its summary.json), also for a run reused from a figure.
+  double simulation_seconds = 0.0;
 };
 
 // Whether the options ask for the series (no --only, or an --only that names it).

@@ -102,6 +102,7 @@ TEST(MeasuredRates, AModelThatOvershootsTheAgentsIsRefusedNotWrittenAsNan) {
   world.run.duration = 200.0;
   MeasuredTerms growing = plausible_terms();
   growing.growth = {{2, 9.0}, {3, 9.0}, {4, 9.0}};
+  growing.returned.clear();  // else it would grow by its new joins (none measured)
   // 1.5 attempts per step from a pair, none returning: a pair loses more than it has, in a
   // step between two recorded ones (record_every 100), so the rows alone would not show it.
   MeasuredTerms leaving = plausible_terms();
@@ -120,6 +121,35 @@ TEST(MeasuredRates, AModelThatOvershootsTheAgentsIsRefusedNotWrittenAsNan) {
           << e.what();
     }
   }
+}
+
+// Once returns are taken out of the losses, a return is no join either: the chain grows by the
+// new joins, and where those were too few to measure by the model's own join term, never by
+// every join (returns included), which fed each return back as a join into any aggregate.
+TEST(MeasuredRates, AReturnIsNeitherALossNorAJoin) {
+  const WorldSpec world = testing::soysal_world(10, 150.0);
+  const double dt = world.engine.dt;
+  const SoysalRates model = soysal_rates(world, world.model.leaving);
+  MeasuredTerms terms;
+  terms.growth = {{4, 0.5}, {5, 0.6}};
+  terms.new_growth = {{5, 0.02}};
+  terms.attempt = {{5, 0.01}};
+  terms.returned = {{5, 0.9}};
+  const SoysalRates out = measured_soysal_rates(world, terms);
+  EXPECT_DOUBLE_EQ(out.join[5], 0.02 * dt);
+  EXPECT_DOUBLE_EQ(out.join[4], model.join[4]);
+  EXPECT_NEAR(out.leave[5], 0.01 * dt * 0.1, 1e-15);
+  // Without returns measured, every join is a join and every attempt a loss.
+  terms.returned.clear();
+  const SoysalRates all = measured_soysal_rates(world, terms);
+  EXPECT_DOUBLE_EQ(all.join[4], 0.5 * dt);
+  EXPECT_DOUBLE_EQ(all.join[5], 0.6 * dt);
+  EXPECT_DOUBLE_EQ(all.leave[5], 0.01 * dt);
+  WorldSpec bayindir = testing::bayindir_world(60, 1e-3, true, true, 120.0);
+  terms.returned = {{5, 0.9}};
+  const BayindirRates grown = measured_bayindir_rates(bayindir, terms);
+  EXPECT_DOUBLE_EQ(grown.growth[4], bayindir_rates(bayindir, bayindir.model.creation).growth[4]);
+  EXPECT_DOUBLE_EQ(grown.growth[5], 0.02 * bayindir.engine.dt);
 }
 
 }  // namespace

@@ -50,3 +50,25 @@ def test_a_changed_sweep_replaces_earlier_runs_only_with_force(demo, tmp_path):
     except ValueError as error:
         assert "4 runs hold results of another world" in str(error)
     assert sa.sweep(path, out=tmp_path / "out", force=True).report["ran"] == 4
+
+
+def test_an_empty_out_is_refused_before_anything_runs(demo, tmp_path, monkeypatch):
+    path = write_sweep(tmp_path, demo)
+    work = tmp_path / "work"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    try:
+        sa.sweep(path, out="")
+        raise AssertionError("ran a sweep into the working folder")
+    except ValueError as error:
+        assert "out: expected a path, got ''" in str(error)
+    assert list(work.iterdir()) == []
+
+
+def test_a_sweeps_frames_load_after_the_caller_changes_folder(demo, tmp_path, monkeypatch):
+    path = write_sweep(tmp_path, demo)
+    monkeypatch.chdir(tmp_path)
+    done = sa.sweep(path, out="relative")
+    monkeypatch.chdir("/")
+    assert done.out == tmp_path / "relative"
+    assert len(done.summary()) > 0

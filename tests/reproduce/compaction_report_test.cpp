@@ -53,6 +53,19 @@ TEST(CompactionReport, ParagraphFollowsTheNumbers) {
       << text;
 }
 
+// Fewer escapes with compaction are not members held in by the bodies around them when the
+// attempts start on the rim: the paragraph gives where they start.
+TEST(CompactionReport, SaysWhereTheFailedAttemptsStart) {
+  CompactionEffect full = bayindir("full", {6.0, 2.5}, {0.2, 0.98}, {1.7, 1.4});
+  full.inside_attempt_share = {0.003, 0.01};
+  const std::string text = compaction_section({full}, {}, {}, "compaction-off");
+  EXPECT_NE(text.find("They are not members held in by the bodies around them: 0.003 of the "
+                      "attempts with compaction on start inside an aggregate"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("blocked by the bodies"), std::string::npos) << text;
+}
+
 TEST(CompactionReport, ListsTheClaimsWhoseVerdictFlips) {
   const std::vector<ClaimCheck> on{{"Fig 18", "original better", "not supported", "on numbers"},
                                    {"Fig 7", "overlap", "supported", "x"}};

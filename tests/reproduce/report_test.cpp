@@ -52,5 +52,34 @@ TEST(Report, SaysSoWhenNoExperimentHasEnoughSizes) {
   EXPECT_NE(report.find("No experiment formed aggregates of enough sizes"), std::string::npos);
 }
 
+// The "why" table explains misses only: where a paper variant is within 2x its floor there is
+// none, and a term whose interval holds the model's value is no deviation.
+TEST(Report, WhyTheModelsMissNamesNoMissAndNoNoise) {
+  FigureResult fits = measured_geometry("18", "fits", {2, 4, 8, 16});
+  NoaComparison c;
+  c.errors = {{"original", 1.5, 1.0},
+              {"collision", 3.0, 1.0},
+              {"collision-paper", 9.0, 1.0},
+              {"measured", 1.0, 1.0}};
+  c.simulation = {.steps = {0}, .times = {0.0}, .values = {{10.0}}};
+  fits.noa = c;
+  fits.rates.push_back({"growth",
+                        3,
+                        {.events = 40, .exposure = 1.0, .rate = 1.1, .low = 0.8, .high = 1.4},
+                        {{"bayindir", "collision", 1.0}}});
+  FigureResult misses = fits;
+  misses.figure.figures = "19";
+  misses.worlds.back().name = "misses";
+  misses.noa->errors[0].error = 5.0;
+  misses.noa->errors[1].error = 6.0;
+  const std::string report = report_markdown({"quick", "kinematic", 1.0}, {fits, misses}, {});
+  const std::string fit_row = line_of(report, "| 18 | fits | none outside its 95% CI | - |");
+  EXPECT_NE(fit_row.find("no miss: original is within 2x its noise floor"), std::string::npos)
+      << report;
+  const std::string miss_row = line_of(report, "| 19 | misses | none outside its 95% CI |");
+  EXPECT_NE(miss_row.find("the terms: measured terms fix most of the error"), std::string::npos)
+      << miss_row;
+}
+
 }  // namespace
 }  // namespace swarmagg

@@ -70,5 +70,32 @@ TEST(ReturnsReport, WhyTheModelsMissFollowsTheNumbers) {
   EXPECT_NE(text.find("in 1 of 1 comparisons"), std::string::npos) << text;
 }
 
+// The series' point at the worlds' own timeout is the figure's run: counted once, not twice.
+TEST(ReturnsReport, TheFiguresOwnRunInTheSeriesIsJudgedOnce) {
+  TimeoutPoint own{.world = "soysal-10", .agents = 10, .leave_timeout = 10.0};
+  own.comparison = *soysal_figure().partitions;
+  own.paper_run = true;
+  TimeoutPoint longer = own;
+  longer.leave_timeout = 20.0;
+  longer.paper_run = false;
+  longer.comparison.errors.back() = {"measured", 0.5, 0.1};
+  const std::string text = why_models_miss_section({soysal_figure()}, {own, longer});
+  EXPECT_NE(text.find("in 1 of 2 comparisons; it still misses in soysal-10 at timeout 20 (5x)"),
+            std::string::npos)
+      << text;
+}
+
+// An absorbed run (every replicate's NOA constant over the second half) is no evidence of
+// mixing: the table says so instead of "stationary".
+TEST(ReturnsReport, AnAbsorbedRunIsNotCalledStationary) {
+  FigureResult r = soysal_figure();
+  r.trend = NoaTrend{.frozen = 10, .replicates = 10};
+  EXPECT_NE(soysal_distribution_section({r}).find("absorbed (every replicate's NOA constant)"),
+            std::string::npos);
+  r.trend->frozen = 8;
+  EXPECT_NE(soysal_distribution_section({r}).find("stationary, 8 of 10 replicates constant"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace swarmagg

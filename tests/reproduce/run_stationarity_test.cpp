@@ -23,6 +23,19 @@ TEST(RunStationarity, AFlatRunIsStationary) {
   EXPECT_TRUE(t.stationary());
 }
 
+// A run whose replicates all froze shows no trend, as a mixing one does; it is told apart by
+// counting the replicates whose NOA kept one value over the second half.
+TEST(RunStationarity, CountsTheReplicatesThatFroze) {
+  const NoaTrend frozen = second_half_trend(series([](int r, int) { return 3.0 + r; }));
+  EXPECT_EQ(frozen.frozen, 3);
+  EXPECT_EQ(frozen.replicates, 3);
+  // Replicate 1 alternates over the second half; the others change only in the first.
+  const NoaTrend mixing = second_half_trend(
+      series([](int r, int k) { return r == 1 ? 3.0 + (k % 2) : (k < 50 ? 5.0 : 4.0); }));
+  EXPECT_TRUE(mixing.stationary());
+  EXPECT_EQ(mixing.frozen, 2);
+}
+
 TEST(RunStationarity, ARunStillMergingTrends) {
   // Every replicate loses one aggregate per 30 tu over the second half (50 steps of 0.3 tu).
   const NoaTrend t = second_half_trend(
