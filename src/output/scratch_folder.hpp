@@ -3,6 +3,7 @@
 // in it when the object goes. Named by mkdtemp, so several threads or processes never share one.
 #include <stdlib.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -13,9 +14,21 @@ namespace swarmagg {
 class ScratchFolder {
  public:
   // `prefix` starts the folder's name (six random characters follow).
+  // Throws std::filesystem::filesystem_error (an OSError in Python) naming the temporary
+  // directory ($TMPDIR, else /tmp) when it is missing or refuses the folder.
   explicit ScratchFolder(const std::string& prefix) {
-    std::string name = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
-    if (mkdtemp(name.data()) == nullptr) throw std::runtime_error("cannot create " + name);
+    std::error_code error;
+    const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
+    if (error) {
+      throw std::filesystem::filesystem_error(
+          "no temporary directory for a scratch folder ($TMPDIR or /tmp)", error);
+    }
+    std::string name = (temporary / (prefix + "-XXXXXX")).string();
+    if (mkdtemp(name.data()) == nullptr) {
+      throw std::filesystem::filesystem_error(
+          "cannot create a scratch folder in the temporary directory ($TMPDIR or /tmp)", temporary,
+          std::error_code(errno, std::generic_category()));
+    }
     path_ = name;
   }
   ~ScratchFolder() {

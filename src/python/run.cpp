@@ -67,7 +67,8 @@ class RunOutput {
   std::string model_csv_text() const {
     const std::optional<MeasuredTerms> terms = run_terms();
     return call_interruptibly([&] {
-      return model_csv(predict(*spec_, terms ? &*terms : nullptr, start()), spec_->engine.dt);
+      return swarmagg::model_csv_text(
+          *spec_, pending_predictions(*spec_, terms ? &*terms : nullptr, start()));
     });
   }
   bool measured() const { return run_.rates.has_value(); }

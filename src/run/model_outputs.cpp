@@ -1,14 +1,17 @@
 #include "run/model_outputs.hpp"
 
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <set>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "models/model_csv.hpp"
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
+#include "run/interrupt.hpp"
 #include "run/model_progress.hpp"
 
 namespace swarmagg {
@@ -47,15 +50,19 @@ void keep_if_latest(std::vector<ModelRow>& kept, const ModelRow& row) {
   kept.push_back(row);
 }
 
+// Where a variant's text goes, piece by piece: model.csv, and its model-timeseries file
+// (none when only model.csv is wanted).
+using TextSink = std::function<void(std::string_view piece)>;
+
 // One variant's lines of model.csv and its model-timeseries file, each written as its rows
 // are walked: a stochastic variant's statistics need the replicates side by side, its file
 // lists them one after another, so it is walked twice.
-VariantPrediction write_variant(const PendingVariant& variant, AtomicFileWriter& model_csv,
-                                AtomicFileWriter& series, double dt, const WalkProgress& progress) {
+VariantPrediction write_variant(const PendingVariant& variant, const TextSink& model_csv,
+                                const TextSink& series, double dt, const WalkProgress& progress) {
   VariantPrediction written = variant.header;
   std::string text;
-  const auto write_text = [&](AtomicFileWriter& file) {
-    file.write(text);
+  const auto write_text = [&](const TextSink& sink) {
+    sink(text);
     text.clear();
   };
   if (written.stochastic) {
@@ -69,21 +76,27 @@ VariantPrediction write_variant(const PendingVariant& variant, AtomicFileWriter&
         },
         progress);
   }
-  series.write(model_timeseries_header());
+  if (series) series(model_timeseries_header());
   written.extra = variant.walk_rows(
       [&](const ModelRow& row) {
         if (!written.stochastic) {
           append_expected_row(text, written, row, dt);
           write_text(model_csv);
         }
-        append_timeseries_row(text, row, dt);
-        write_text(series);
+        if (series) {
+          append_timeseries_row(text, row, dt);
+          write_text(series);
+        }
         keep_if_latest(written.series, row);
       },
       progress, Extras::Computed);
   append_extra_values(text, written, dt);
   write_text(model_csv);
   return written;
+}
+
+TextSink into(AtomicFileWriter& file) {
+  return [&file](std::string_view piece) { file.write(piece); };
 }
 
 }  // namespace
@@ -108,8 +121,8 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
     for (const PendingVariant& variant : variants) {
       const std::string file = variant_file(variant.header);
       series_files.push_back(std::make_unique<AtomicFileWriter>(series / file));
-      written.push_back(
-          write_variant(variant, model_csv, *series_files.back(), spec.engine.dt, walk_progress));
+      written.push_back(write_variant(variant, into(model_csv), into(*series_files.back()),
+                                      spec.engine.dt, walk_progress));
       progress.finished_variant();
       stale.erase(file);
     }
@@ -131,6 +144,15 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
   std::error_code error;
   for (const std::string& file : stale) std::filesystem::remove(series / file, error);
   return written;
+}
+
+std::string model_csv_text(const WorldSpec& spec, const std::vector<PendingVariant>& variants) {
+  std::string text = kModelCsvHeader;
+  const TextSink append = [&text](std::string_view piece) { text += piece; };
+  const WalkProgress check_interrupt = [](std::int64_t) { throw_if_interrupted(); };
+  for (const PendingVariant& variant : variants)
+    write_variant(variant, append, nullptr, spec.engine.dt, check_interrupt);
+  return text;
 }
 
 }  // namespace swarmagg

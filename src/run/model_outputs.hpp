@@ -8,6 +8,7 @@
 // them once the last variant is through: an error or Ctrl-C leaves the folder's earlier
 // model outputs as they were.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "config/world_spec.hpp"
@@ -24,5 +25,9 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
                                                    const std::vector<PendingVariant>& variants,
                                                    const std::filesystem::path& out,
                                                    bool show_progress = false);
+
+// model.csv's text alone, made as write_model_outputs makes it, without holding the rows:
+// what Python's Run.model_csv returns.
+std::string model_csv_text(const WorldSpec& spec, const std::vector<PendingVariant>& variants);
 
 }  // namespace swarmagg
