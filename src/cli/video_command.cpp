@@ -3,10 +3,12 @@
 // recording (V) left in a folder.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "render/video.hpp"
+#include "run/interrupt.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -28,7 +30,15 @@ void add_video_command(CLI::App& app, Action& action) {
   command->add_option("--fps", options->fps, "Frames per second (default 25)");
   command->callback([options, &action] {
     action = [options] {
-      assemble_video(options->frames, options->output, options->fps);
+      // Ctrl-C reaches ffmpeg too; with the handlers this process outlives it, removes the
+      // half-made video and exits as interrupted (without them the temporary stayed).
+      install_interrupt_handlers();
+      try {
+        assemble_video(options->frames, options->output, options->fps);
+      } catch (const std::runtime_error&) {
+        throw_if_interrupted();
+        throw;
+      }
       std::cout << "video " << options->output << "\n";
       return 0;
     };

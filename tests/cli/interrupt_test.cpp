@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cli/cli_testing.hpp"
+#include "render/video.hpp"
 
 extern char** environ;
 
@@ -42,7 +43,9 @@ struct Outcome {
 // A running `swarmagg`, its stdout and stderr going to one pipe.
 class Child {
  public:
-  explicit Child(const std::vector<std::string>& arguments) {
+  // `own_group`: the child leads a process group of its own, as a shell's job does, so that
+  // send_to_group reaches the programs it starts (ffmpeg) as Ctrl-C in a terminal would.
+  explicit Child(const std::vector<std::string>& arguments, bool own_group = false) {
     int fds[2];
     if (pipe(fds) != 0) return;
     posix_spawn_file_actions_t actions;
@@ -53,7 +56,14 @@ class Child {
     std::vector<char*> argv;
     for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    if (posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    if (own_group) {
+      posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+      posix_spawnattr_setpgroup(&attributes, 0);
+    }
+    if (posix_spawn(&pid_, argv[0], &actions, &attributes, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     close(fds[1]);
     reader_ = fds[0];
@@ -86,6 +96,7 @@ class Child {
   }
 
   void send(int signal_number) const { kill(pid_, signal_number); }
+  void send_to_group(int signal_number) const { kill(-pid_, signal_number); }
 
   // Reads the output until it holds `text` (kept for wait()); false at the limit or the end.
   bool wait_for_text(const std::string& text, std::chrono::seconds limit) {
@@ -282,6 +293,32 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStep) {
   for (const auto& entry : fs::directory_iterator(out / "frames"))
     frames += entry.is_regular_file();
   EXPECT_LT(frames, 1000u) << "drew on after the signal";
+  fs::remove_all(out);
+}
+
+// Ctrl-C in a terminal reaches `video` and its ffmpeg alike: the half-made video goes, and the
+// command exits as interrupted (the hidden temporary stayed before).
+TEST(Interrupt, SigintStopsAVideoAndLeavesNoHalfMadeFile) {
+  if (swarmagg::find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path out = fresh_dir("video");
+  ASSERT_EQ(system((std::string(SWARMAGG_BINARY) + " run " + kLongWorld +
+                    " --replicates 1 --set run.duration=200 --render-every 1 --render-size "
+                    "256x256 --no-plots --no-model --quiet --out " +
+                    out.string() + " >/dev/null")
+                       .c_str()),
+            0);
+  Child child({SWARMAGG_BINARY, "video", (out / "frames").string(), (out / "v.mp4").string()},
+              true);
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // ffmpeg under way
+  child.send_to_group(SIGINT);
+  const Outcome o = child.wait(std::chrono::seconds(60));
+  if (o.exit_code == 0) GTEST_SKIP() << "ffmpeg finished before the signal";
+  expect_interrupted(o, 130);
+  EXPECT_FALSE(fs::exists(out / "v.mp4"));
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "left " << entry.path();
   fs::remove_all(out);
 }
 
