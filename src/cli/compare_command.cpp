@@ -10,6 +10,7 @@
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
 #include "output/output_check.hpp"
+#include "output/trajectory_layout.hpp"
 #include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
 
@@ -52,12 +53,16 @@ int compare_command(const CompareCommandOptions& options) {
   // A run's folder given as --out loses its run too, as `run --force` would remove it.
   if (options.force) {
     std::vector<std::string> failures = remove_earlier_comparison(out);
+    // A run's trajectories are its writer's to replace; a comparison writes none.
+    std::error_code error;
+    if (std::filesystem::is_regular_file(out / "world.resolved.yaml", error))
+      remove_earlier_output(out / trajectory_layout::kFileName, failures);
     for (std::string& failure : clear_earlier_run(out)) failures.push_back(std::move(failure));
     for (const std::string& failure : failures)
       std::cerr << "warning: could not remove the earlier outputs' " << failure << "\n";
   }
-  for (const std::string& failure :
-       write_compare_folder(result.kinematic, result.box2d, result.stats, out))
+  for (const std::string& failure : write_compare_folder(
+           result.kinematic, result.box2d, result.stats, out, options.world.changes()))
     std::cerr << "warning: " << failure << "\n";
   if (!options.quiet) {
     std::cout << comparison_text(spec.name, result.stats) << "outputs in " << out.string() << "/\n";

@@ -37,8 +37,8 @@ EngineComparison compare_engines(const WorldSpec& spec, bool progress,
 }
 
 std::vector<std::string> write_compare_folder(const ArmResult& a, const ArmResult& b,
-                                              const Comparison& c,
-                                              const std::filesystem::path& out) {
+                                              const Comparison& c, const std::filesystem::path& out,
+                                              const std::vector<std::string>& changes) {
   const std::string& world = a.spec.name;
   for (const ArmResult* arm : {&a, &b}) {
     // Spooled rows land where compare_engines was told; noa.csv reads them back from `out`.
@@ -47,8 +47,11 @@ std::vector<std::string> write_compare_folder(const ArmResult& a, const ArmResul
                                   arm->timeseries->target().string());
   }
   std::filesystem::create_directories(out);
-  write_run_folder(a.spec, a.run, out / a.label, {}, a.timeseries.get());
-  write_run_folder(b.spec, b.run, out / b.label, {}, b.timeseries.get());
+  for (const ArmResult* arm : {&a, &b}) {
+    std::vector<std::string> arm_changes = changes;
+    arm_changes.push_back("engine.type=" + arm->label);
+    write_run_folder(arm->spec, arm->run, out / arm->label, arm_changes, arm->timeseries.get());
+  }
   write_file_atomic(out / "compare.json", comparison_json(world, c).dump(2) + "\n");
   write_file_atomic(out / "summary.txt", comparison_text(world, c));
   // Absolute: run_gnuplot fails to start gnuplot for a relative script path (seen with

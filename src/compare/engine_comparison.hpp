@@ -25,9 +25,11 @@ EngineComparison compare_engines(const WorldSpec& spec, bool progress = false,
                                  const std::filesystem::path& out = {});
 
 // Returns the plots that could not be drawn (write_comparison_plots), to warn about.
+// `changes`: what the command line changed of the world file, for each arm's summary.json
+// (each adds its engine.type, as `run --engine` does).
 std::vector<std::string> write_compare_folder(const ArmResult& a, const ArmResult& b,
-                                              const Comparison& c,
-                                              const std::filesystem::path& out);
+                                              const Comparison& c, const std::filesystem::path& out,
+                                              const std::vector<std::string>& changes = {});
 
 // What `compare --force` does to the comparison already in `out` once the new one is
 // computed: the files above go, and the arms' folders whole (a comparison without leaving

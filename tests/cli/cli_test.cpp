@@ -182,6 +182,30 @@ TEST(Cli, ASweepNamesWhatItsMergeRemoved) {
   std::filesystem::remove(file);
 }
 
+// Each arm of a comparison is a run folder: its summary.json names what the command line
+// changed, as `run`'s does, and a run the comparison replaces (--force) leaves none of its
+// files, its trajectories included.
+TEST(Cli, CompareArmsNameTheirOverridesAndReplaceARunWhole) {
+  const std::filesystem::path out = temp_dir("compare-arms");
+  const std::string world = "worlds/examples/demo.yaml --set run.duration=20 --quiet ";
+  ASSERT_EQ(
+      swarmagg("run " + world + "--replicates 2 --no-plots --trajectories 10 --out " + out.string())
+          .exit_code,
+      0);
+  ASSERT_TRUE(std::filesystem::exists(out / "trajectories.h5"));
+  const Outcome compare =
+      swarmagg("compare " + world + "--replicates 2 --seed 9 --set robots.count=30 --force --out " +
+               out.string());
+  ASSERT_EQ(compare.exit_code, 0) << compare.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "trajectories.h5"));
+  EXPECT_FALSE(std::filesystem::exists(out / "world.resolved.yaml"));
+  std::ifstream in(out / "box2d" / "summary.json");
+  const nlohmann::json overrides = nlohmann::json::parse(in).at("overrides");
+  EXPECT_EQ(overrides, nlohmann::json({"run.duration=20", "robots.count=30", "run.replicates=2",
+                                       "run.seed=9", "engine.type=box2d"}));
+  std::filesystem::remove_all(out);
+}
+
 // summary.json's model errors describe the model beside the run: `model` into a run's folder
 // writes them, whether the run had no model (--no-model, or Ctrl-C while it was computed) or
 // another one (with measured variants this one lacks).
