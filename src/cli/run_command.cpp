@@ -21,6 +21,7 @@
 #include "plot/run_plots.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
+#include "render/staged_frames.hpp"
 #include "render/video.hpp"
 #include "run/earlier_run.hpp"
 #include "run/interrupt.hpp"
@@ -220,6 +221,8 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
+    // A killed run's staged frames (render/staged_frames.hpp) lie beside the frame folder.
+    remove_stale_temporaries(frames.has_parent_path() ? frames.parent_path() : ".");
   }
   if (!options.video.empty()) {
     check_output_file(options.video, "--video");
@@ -248,8 +251,12 @@ int run_command(const RunCommandOptions& options) {
   run_options.check = options.check;
   run_options.timeseries = &timeseries;
   const auto trajectories = trajectory_writer(spec, out);
+  // Drawn aside and moved into the frame folder once the simulation is complete: an earlier
+  // run's frames stay whole until then, as its other outputs do.
+  std::optional<StagedFrames> staged_frames;
+  if (spec.render.every > 0) staged_frames.emplace(frames);
   run_options.observers =
-      both_observers(frame_observers(spec, frames),
+      both_observers(frame_observers(spec, staged_frames ? staged_frames->staging() : frames),
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
   const MeasuredRun run = run_world_measuring(spec, run_options, options.rates);
   const RunResult& result = run.result;
@@ -257,6 +264,7 @@ int run_command(const RunCommandOptions& options) {
     for (const std::string& failure : clear_earlier_run(out))
       std::cerr << "warning: cannot remove the earlier run's " << failure << "\n";
   }
+  if (staged_frames) staged_frames->commit();
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
   if (trajectories) {

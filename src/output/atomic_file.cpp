@@ -125,7 +125,8 @@ std::size_t remove_stale_temporaries(const std::filesystem::path& folder) {
     // kill(pid, 0) fails with ESRCH only when no such process exists.
     if (!writer || !(::kill(*writer, 0) != 0 && errno == ESRCH)) continue;
     std::error_code ignored;
-    removed += std::filesystem::remove(entry.path(), ignored) ? 1 : 0;
+    // A folder so named holds a killed run's staged frames (render/staged_frames.hpp).
+    removed += std::filesystem::remove_all(entry.path(), ignored) > 0 ? 1 : 0;
   }
   return removed;
 }

@@ -48,9 +48,9 @@ void commit_temporary(const std::filesystem::path& temporary, const std::filesys
 void rename_or_discard(const std::filesystem::path& temporary, const std::filesystem::path& target);
 // Removes a temporary that will not become its output, whatever removing it says.
 void discard_temporary(const std::filesystem::path& temporary);
-// Removes the temporaries in `folder` (named as temporary_beside names them) whose process is
-// gone: what a killed run (SIGKILL, a node lost) left. Those of running processes stay, as
-// far as this machine can tell: a process id is looked up here, so a run on another node
+// Removes the temporaries in `folder` (files or folders named as temporary_beside names them)
+// whose process is gone: what a killed run (SIGKILL, a node lost) left. Those of running processes
+// stay, as far as this machine can tell: a process id is looked up here, so a run on another node
 // writing to the same shared folder (or in another PID namespace) would lose its
 // temporaries. Returns how many were removed.
 std::size_t remove_stale_temporaries(const std::filesystem::path& folder);

@@ -10,17 +10,21 @@
 #include "render/png_writer.hpp"
 
 namespace swarmagg {
+std::vector<std::filesystem::path> frame_files(const std::filesystem::path& dir) {
+  static const std::regex kFrame(R"(frame_[0-9]{6,}\.png)");
+  std::vector<std::filesystem::path> frames;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), kFrame)) {
+      frames.push_back(entry.path());
+    }
+  }
+  return frames;
+}
+
 namespace {
 
 void remove_old_frames(const std::filesystem::path& dir) {
-  static const std::regex kFrame(R"(frame_[0-9]{6,}\.png)");
-  std::vector<std::filesystem::path> old;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), kFrame)) {
-      old.push_back(entry.path());
-    }
-  }
-  for (const auto& path : old) std::filesystem::remove(path);
+  for (const auto& path : frame_files(dir)) std::filesystem::remove(path);
 }
 
 }  // namespace

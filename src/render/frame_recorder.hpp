@@ -28,6 +28,9 @@
 
 namespace swarmagg {
 
+// The numbered frames (frame_000000.png, ...) in `dir`, in no particular order.
+std::vector<std::filesystem::path> frame_files(const std::filesystem::path& dir);
+
 struct FrameRecorderOptions {
   int compression_level = 1;  // zlib level of the PNGs, 0..9
   int queue_capacity = 4;     // frames drawn but not yet encoded

@@ -277,22 +277,42 @@ TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
 
 // Drawing a frame every step, a run stops at the step the signal came in, not at the next
 // multiple of 1024 steps (it drew on for seconds, to frame 1025).
-TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStep) {
+// The frames an earlier run drew stay whole until the new simulation has finished, as its
+// other outputs do: the new frames are drawn aside (render/staged_frames.hpp), and Ctrl-C
+// leaves neither them nor a half-replaced frame folder.
+TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStepAndKeepsTheEarlierFrames) {
   const fs::path out = fresh_dir("frames");
-  Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=300",
-               "--render-every", "1", "--render-size", "64x64", "--out", out.string()});
+  const std::vector<std::string> render = {"--render-every", "1", "--render-size", "64x64"};
+  std::vector<std::string> earlier = {
+      SWARMAGG_BINARY,  "run",     kLongWorld, "--replicates", "1", "--set",
+      "run.duration=1", "--quiet", "--out",    out.string()};
+  earlier.insert(earlier.end(), render.begin(), render.end());
+  ASSERT_EQ(Child(earlier).wait(std::chrono::seconds(120)).exit_code, 0);
+  const auto before = files_below(out / "frames");
+  ASSERT_EQ(before.size(), 11u);  // steps 0..10
+  std::vector<std::string> longer = {
+      SWARMAGG_BINARY,    "run",     kLongWorld, "--replicates", "1", "--set",
+      "run.duration=300", "--force", "--out",    out.string()};
+  longer.insert(longer.end(), render.begin(), render.end());
+  Child child(longer);
   ASSERT_TRUE(child.started());
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  const auto staged_frame = [&out] {
+    for (const auto& entry : fs::directory_iterator(out)) {
+      if (entry.path().filename().string().starts_with(".frames.") &&
+          fs::exists(entry.path() / "frame_000020.png"))
+        return true;
+    }
+    return false;
+  };
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(out / "frames" / "frame_000005.png") &&
-         std::chrono::steady_clock::now() < deadline)
+  while (!staged_frame() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   child.send(SIGINT);
   expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
-  std::size_t frames = 0;
-  for (const auto& entry : fs::directory_iterator(out / "frames"))
-    frames += entry.is_regular_file();
-  EXPECT_LT(frames, 1000u) << "drew on after the signal";
+  EXPECT_EQ(files_below(out / "frames"), before);
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_FALSE(entry.path().filename().string().starts_with(".frames.")) << entry.path();
   fs::remove_all(out);
 }
 

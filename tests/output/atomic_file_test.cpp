@@ -95,7 +95,9 @@ TEST(AtomicFile, OnlyTemporariesOfProcessesThatAreGoneAreStale) {
   for (const std::string& name : {gone, scratch, running, std::string(".hidden"),
                                   std::string("notes.99999999.0.tmp"), std::string("a.csv")})
     write_file_atomic(folder.path() / name, "x");
-  EXPECT_EQ(remove_stale_temporaries(folder.path()), 2u);
+  // A killed run's staged frames: a folder so named, with frames in it.
+  write_file_atomic(folder.path() / ".frames.99999999.1.tmp" / "frame_000000.png", "x");
+  EXPECT_EQ(remove_stale_temporaries(folder.path()), 3u);
   std::vector<std::string> left = names_in(folder.path());
   std::sort(left.begin(), left.end());
   std::vector<std::string> expected = {running, ".hidden", "a.csv", "notes.99999999.0.tmp"};
