@@ -14,7 +14,7 @@ struct NoaTrend {
   double change = 0.0;           // mean NOA change over the second half (slope x its length)
   double low = 0.0, high = 0.0;  // its 95% interval (equal to change with one replicate)
   // Replicates whose NOA kept one value over the whole second half, of `replicates`: a run
-  // whose replicates all froze is absorbed, not mixing, though no trend shows either.
+  // whose replicates all kept theirs does not mix its NOA, though no trend shows either.
   int frozen = 0;
   int replicates = 0;
   // Rounding leaves a flat run's slope a few ulps from 0: within kFlat counts as flat.

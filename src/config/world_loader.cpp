@@ -424,13 +424,6 @@ void check_world(const WorldSpec& spec) {
       impossible(spec, problem->key, problem->why);
     }
   }
-  // The return window defaults to 3 leave timeouts; a timeout of 0 would make it 0, which
-  // counts no return and cannot be written back (world.resolved.yaml must load again).
-  if (!(spec.return_window() > 0.0)) {
-    impossible(spec, "controller.leave_timeout",
-               "is 0, so rates.return_window (default 3 leave timeouts) would be 0: set "
-               "rates.return_window to a positive number, or leave_timeout above 0");
-  }
   // Compaction pulls only members an agent perceives: a spacing at or beyond s would pull
   // every perceived member in and push none out, so the aggregate could never settle.
   if (spec.controller.compaction.enabled && spec.compaction_spacing() >= s) {

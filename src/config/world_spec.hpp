@@ -152,8 +152,11 @@ struct WorldSpec {
     return controller.compaction.spacing.value_or(2.0 * robots.radius);
   }
   // The tu within which a leaver that comes back counts as returning (rates.return_window).
+  // Default: 3 leave timeouts; 3 steps for a timeout of 0, so that the window is a positive
+  // number world.resolved.yaml can hold (and a leaver back at once counts as a return).
   double return_window() const {
-    return rates.return_window.value_or(3.0 * controller.leave_timeout);
+    return rates.return_window.value_or(
+        3.0 * (controller.leave_timeout > 0.0 ? controller.leave_timeout : engine.dt));
   }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }

@@ -160,16 +160,16 @@ std::string escape_sentence(const std::vector<CompactionEffect>& effects) {
                      " worlds that leave with compaction on (median on / off " +
                      report_number(s.median_ratio()) + ")";
   if (2 * s.lower_on <= s.count()) return text + ". ";
-  // Whether failed attempts are members held in by the bodies around them shows in where
-  // the attempts start.
+  // Where the attempts start: inside an aggregate (a member with 6 fellows around it, which
+  // only aggregates of 7 or more have) or on its rim.
   const Spread inside =
       spread_of(effects, [](const CompactionEffect& e) { return e.inside_attempt_share; });
   text += ", so an aggregate loses fewer members than try to leave. ";
   if (inside.empty()) return text;
-  text += "They are not members held in by the bodies around them: " +
-          range(inside.min_on, inside.max_on) +
-          " of the attempts with compaction on start inside an aggregate (the rest on its "
-          "rim). An attempt fails when its LEAVE phase ends with a member of the aggregate it "
+  text += "With compaction on, " + range(inside.min_on, inside.max_on) +
+          " of the attempts start inside an aggregate (a member with 6 fellows around it, "
+          "which only aggregates of 7 or more have), the rest on its rim. An attempt fails when "
+          "its LEAVE phase ends with a member of the aggregate it "
           "left still within reach (the approach radius for Soysal's controller, the detection "
           "radius otherwise): the same leave walk (`leave_timeout` x v) gets out of reach of a "
           "compact aggregate less often than of a loose one. These runs do not tell apart how much "

@@ -139,12 +139,17 @@ const ModelTerm* chosen_term(const WorldSpec& world, const RateRow& row) {
 // geometry (radius, rim) is a shape, not a rate: the models feel it only through the growth
 // and escape rates measured here, and it has a table of its own.
 std::string most_deviant_term(const WorldSpec& world, const std::vector<RateRow>& rows) {
+  // Where returns are measured apart, joins that are not returns (join_new) are the term the
+  // models' growth means; every join (growth, join) counts the returns too.
+  const bool new_joins_apart = std::any_of(
+      rows.begin(), rows.end(), [](const RateRow& row) { return row.term == "join_new"; });
   const RateRow* worst = nullptr;
   std::pair<double, double> worst_distance{-1.0, -1.0};
   double ratio = 0.0;
   const ModelTerm* worst_model = nullptr;
   for (const RateRow& row : rows) {
     if (row.term == "radius" || row.term == "rim" || row.term == "return") continue;
+    if (new_joins_apart && (row.term == "growth" || row.term == "join")) continue;
     const ModelTerm* model = chosen_term(world, row);
     if (!row.estimate.rate || !model || model->rate <= 0.0) continue;
     const double r = *row.estimate.rate / model->rate;

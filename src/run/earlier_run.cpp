@@ -107,11 +107,16 @@ std::vector<std::string> clear_earlier_run(const std::filesystem::path& out) {
     remove_earlier_output(path, failures);
   };
   std::error_code missing;
-  // rates.json marks a folder `rates` wrote: its rates.csv, of another run, would otherwise
-  // stay beside this run's outputs and be taken for its rates.
-  if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing) &&
-      !std::filesystem::is_regular_file(out / "rates.json", missing))
+  if (!std::filesystem::is_regular_file(out / "world.resolved.yaml", missing)) {
+    // A folder `rates` wrote (its rates.json records a world): its rates, of another run,
+    // would stay beside this run's outputs and be taken for its rates. Only they go; any
+    // other file there is the user's.
+    if (rates_json_world(out / "rates.json").found == RatesJsonWorld::Found::World) {
+      clear_earlier_rates(out, failures);
+      for (const char* name : {"rates.csv", "rates.json"}) remove(out / name);
+    }
     return failures;
+  }
   remove(out / "world.resolved.yaml");
   clear_earlier_rates(out, failures);
   for (const char* name :

@@ -7,9 +7,9 @@
 //
 // Removed: the run's own files by name, its rates-<term> files for the terms its rates.csv
 // lists, and its own folders plots/ and model-timeseries/ whole. Other files in the folder
-// (yours) stay; trajectories.h5 and frames/ are their writers' to replace. A folder with
-// neither world.resolved.yaml (a complete run) nor rates.json (a `rates` folder) holds none of
-// our outputs: nothing is removed.
+// (yours) stay; trajectories.h5 and frames/ are their writers' to replace. A folder without
+// world.resolved.yaml holds no complete run: of a folder `swarmagg rates` wrote (its rates.json
+// records a world) the rates files go, nothing else.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -157,6 +157,17 @@ TEST(Cli, ForceLeavesNoRatesOfAnEarlierRatesCommand) {
     EXPECT_FALSE(std::filesystem::exists(out / name)) << name;
   EXPECT_TRUE(std::filesystem::exists(out / "world.resolved.yaml"));
   std::filesystem::remove_all(out);
+  // A rates.json that `rates` did not write marks no rates folder: the user's files stay.
+  std::filesystem::create_directories(out / "plots");
+  std::ofstream(out / "rates.json") << "{\"mine\": 1}\n";
+  std::ofstream(out / "plots" / "my-figure.png") << "mine\n";
+  std::ofstream(out / "model.csv") << "mine\n";
+  ASSERT_EQ(
+      swarmagg("run " + world + "--no-plots --no-model --force --out " + out.string()).exit_code,
+      0);
+  for (const char* name : {"rates.json", "plots/my-figure.png", "model.csv"})
+    EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
+  std::filesystem::remove_all(out);
 }
 
 // A sweep merges itself; what that merge removes of an earlier one (here a stale

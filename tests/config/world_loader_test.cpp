@@ -81,6 +81,17 @@ TEST(WorldLoader, TheResolvedWorldLoadsBackUnchanged) {
   EXPECT_THAT(text, HasSubstr("p_leave: 0.0001"));
 }
 
+// A leave timeout of 0 made the default return window (3 leave timeouts) 0, which the key
+// refuses: the run folder's world.resolved.yaml did not load again.
+TEST(WorldLoader, AZeroLeaveTimeoutResolvesToAWorldThatLoadsAgain) {
+  const WorldSpec spec = load_world_text("controller: {leave_timeout: 0}\n", "w.yaml");
+  EXPECT_DOUBLE_EQ(spec.return_window(), 3.0 * spec.engine.dt);
+  const std::string text = world_to_yaml(spec);
+  EXPECT_EQ(world_to_yaml(load_world_text(text, "resolved.yaml")), text);
+  EXPECT_DOUBLE_EQ(load_world_text("controller: {leave_timeout: 4}\n", "w.yaml").return_window(),
+                   12.0);
+}
+
 TEST(WorldLoader, CompactionDefaultsToTouchingSpacingAndFollowsTheRadius) {
   const WorldSpec spec = load_world_text("robots: {count: 5}\n", "w.yaml");
   EXPECT_TRUE(spec.controller.compaction.enabled);

@@ -53,14 +53,13 @@ TEST(CompactionReport, ParagraphFollowsTheNumbers) {
       << text;
 }
 
-// Fewer escapes with compaction are not members held in by the bodies around them when the
-// attempts start on the rim: the paragraph gives where they start.
+// The paragraph gives where the attempts start (inside or on the rim), not a mechanism the
+// numbers do not show ("a leaver enclosed by its aggregate is blocked").
 TEST(CompactionReport, SaysWhereTheFailedAttemptsStart) {
   CompactionEffect full = bayindir("full", {6.0, 2.5}, {0.2, 0.98}, {1.7, 1.4});
   full.inside_attempt_share = {0.003, 0.01};
   const std::string text = compaction_section({full}, {}, {}, "compaction-off");
-  EXPECT_NE(text.find("They are not members held in by the bodies around them: 0.003 of the "
-                      "attempts with compaction on start inside an aggregate"),
+  EXPECT_NE(text.find("With compaction on, 0.003 of the attempts start inside an aggregate"),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("blocked by the bodies"), std::string::npos) << text;
