@@ -18,6 +18,7 @@
 
 #include "config/controller_catalog.hpp"
 #include "config/did_you_mean.hpp"
+#include "config/input_file.hpp"
 #include "config/world_keys.hpp"
 #include "config/world_override.hpp"
 #include "core/errors.hpp"
@@ -199,18 +200,6 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source) {
   } catch (const YAML::ParserException& e) {
     throw InputError(syntax_error(source, e.mark, e.msg));
   }
-}
-
-std::string read_file(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw InputError(path + ": is a folder; expected a world file (YAML)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the world file (does it exist?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the world file");
-  return text.str();
 }
 
 // Bodies must not overlap at the start (docs/worlds.md), as random placement guarantees. The pair
@@ -486,7 +475,7 @@ WorldSpec load_world_text(const std::string& text, const std::string& source,
 }
 
 WorldSpec load_world_with(const std::string& path, const std::vector<WorldOverride>& overrides) {
-  return load_world_text_with(read_file(path), path, overrides);
+  return load_world_text_with(read_input_file(path, "world file"), path, overrides);
 }
 
 WorldSpec load_world(const std::string& path, const std::vector<std::string>& assignments) {

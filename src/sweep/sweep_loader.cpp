@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "config/did_you_mean.hpp"
+#include "config/input_file.hpp"
 #include "config/world_keys.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
@@ -223,12 +224,9 @@ class SweepReader {
 };
 
 YAML::Node parse(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the sweep file (does it exist?)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_input_file(path, "sweep file");
   try {
-    return YAML::Load(text.str());
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);

@@ -149,8 +149,24 @@ TEST(WorldLoaderErrors, AMissingFileIsNamed) {
     load_world("/nonexistent/w.yaml");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("/nonexistent/w.yaml: cannot open"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("/nonexistent/w.yaml: cannot open the world file (no such file)"));
   }
+}
+
+// A device has no end: reading /dev/zero as a world grew without bound. A folder is named as
+// one. Both are refused before anything is read.
+TEST(WorldLoaderErrors, ADeviceOrAFolderIsNoWorldFile) {
+  const auto message = [](const std::string& path) {
+    try {
+      load_world(path);
+      return std::string("accepted");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  EXPECT_THAT(message("/dev/zero"), HasSubstr("/dev/zero: is a device or a socket, not a file"));
+  EXPECT_THAT(message("/tmp"), HasSubstr("/tmp: is a folder; expected a world file"));
 }
 
 TEST(WorldLoaderErrors, SyntaxErrorsGiveTheLine) {
