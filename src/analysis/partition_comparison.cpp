@@ -6,6 +6,7 @@
 #include "analysis/csv_reader.hpp"
 #include "analysis/csv_table.hpp"
 #include "analysis/model_errors.hpp"
+#include "analysis/replicate_spread.hpp"
 #include "models/noise_floor.hpp"
 #include "models/return_probability.hpp"
 
@@ -52,6 +53,19 @@ double total_variation(const Distribution& a, const Distribution& b) {
   return 0.5 * sum;
 }
 
+std::vector<Distribution> replicate_partitions(const std::filesystem::path& partitions_csv) {
+  const CsvTable table = read_csv(partitions_csv);
+  const std::size_t replicate = table.column("replicate"), partition = table.column("partition"),
+                    fraction = table.column("time_fraction");
+  std::map<double, Distribution> by_replicate;  // indices as numbers: 10 after 9
+  for (std::size_t row = 0; row < table.rows.size(); ++row)
+    by_replicate[table.number(row, replicate)][table.rows[row][partition]] +=
+        table.number(row, fraction);
+  std::vector<Distribution> replicates;
+  for (auto& [index, distribution] : by_replicate) replicates.push_back(std::move(distribution));
+  return replicates;
+}
+
 Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
   const CsvTable table = read_csv(partitions_csv);
   const std::size_t replicate = table.column("replicate"), partition = table.column("partition"),
@@ -69,6 +83,7 @@ Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder) {
   PartitionComparison comparison;
   comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
+  comparison.spread = partition_spread(replicate_partitions(run_folder / "partitions.csv"));
   // A run without predictions (--no-model, or too many agents for the chain) has only its own.
   if (!std::filesystem::exists(run_folder / "model.csv")) return comparison;
   CsvReader model(run_folder / "model.csv");

@@ -25,11 +25,14 @@ struct PartitionComparison {
   std::vector<Distribution> models;
   std::vector<Distribution> stationary;
   std::vector<VariantError> errors;  // total-variation distance per variant
+  double spread = 0.0;               // the replicates' own (analysis/replicate_spread.hpp)
 };
 
 double total_variation(const Distribution& a, const Distribution& b);
 
-// Mean over replicates of partitions.csv's time fractions.
+// partitions.csv's time fractions, one distribution per replicate (in replicate order), and
+// their mean.
+std::vector<Distribution> replicate_partitions(const std::filesystem::path& partitions_csv);
 Distribution simulated_partitions(const std::filesystem::path& partitions_csv);
 
 // Without model.csv in the folder, models, stationary and errors stay empty.

@@ -13,6 +13,7 @@
 #include "cli/world_options.hpp"
 #include "config/world_difference.hpp"
 #include "config/world_loader.hpp"
+#include "controllers/controller_registry.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -112,6 +113,10 @@ int model_command(const ModelCommandOptions& options) {
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
+  if (controller_rules(spec).model == ModelFamily::None) {
+    std::cerr << "note: no macroscopic model describes controller type '" << spec.controller.type
+              << "' (docs/models.md): model.csv holds its header only\n";
+  }
   if (measured) std::cerr << "note: " << measured_variant_note(spec, *measured) << "\n";
   if (sample) std::cerr << "note: " << placement_start_note(*sample) << "\n";
   if (measured && spec.model.initial_state == InitialState::Measured)

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "config/world_loader.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg::cli {
 
@@ -19,10 +20,19 @@ void WorldOptions::add_to(CLI::App& command, bool run_options) {
 
 WorldSpec WorldOptions::load() const {
   std::vector<WorldOverride> all = parse_overrides(overrides);
-  if (engine) all.push_back(typed_override("engine.type", *engine, "--engine"));
-  if (replicates) all.push_back(typed_override("run.replicates", *replicates, "--replicates"));
-  if (seed) all.push_back(typed_override("run.seed", *seed, "--seed"));
-  if (threads) all.push_back(typed_override("run.threads", *threads, "--threads"));
+  // An option and a --set of its key would leave one of the two silently unused.
+  const auto add_option = [&all](const std::string& key, const auto& value,
+                                 const std::string& option) {
+    for (const WorldOverride& set : all) {
+      if (set.key == key)
+        throw InputError(option + " and --set " + key + " both set " + key + ": give one of them");
+    }
+    all.push_back(typed_override(key, value, option));
+  };
+  if (engine) add_option("engine.type", *engine, "--engine");
+  if (replicates) add_option("run.replicates", *replicates, "--replicates");
+  if (seed) add_option("run.seed", *seed, "--seed");
+  if (threads) add_option("run.threads", *threads, "--threads");
   all.insert(all.end(), typed_overrides.begin(), typed_overrides.end());
   return load_world_with(path, all);
 }

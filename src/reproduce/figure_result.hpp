@@ -36,6 +36,9 @@ struct FigureResult {
 // The errors per model variant of its NOA or partition comparison; nullptr for a figure
 // with neither.
 const std::vector<VariantError>* model_errors(const FigureResult& result);
+// The replicates' own spread by the same metric (analysis/replicate_spread.hpp); 0 for a
+// figure without a model comparison.
+double replicates_spread(const FigureResult& result);
 
 // The error of `variant` in a NOA or partition comparison (throws when absent).
 double variant_error(const std::vector<VariantError>& errors, const std::string& variant);

@@ -1,6 +1,7 @@
 #include "reproduce/noa_comparison.hpp"
 
 #include "analysis/model_errors.hpp"
+#include "analysis/replicate_spread.hpp"
 #include "models/noise_floor.hpp"
 #include "models/return_probability.hpp"
 #include "models/sample_statistics.hpp"
@@ -17,6 +18,7 @@ const std::vector<std::string>& noa_variants() {
 NoaComparison compare_noa(const std::filesystem::path& run_folder) {
   NoaComparison comparison;
   comparison.simulation = read_noa_series(run_folder / "timeseries.csv");
+  comparison.spread = noa_spread(comparison.simulation);
   const std::map<std::string, double> floors =
       read_noise_floors(run_folder / "model.csv", "bayindir", kNoaMetric);
   for (const std::string& variant : noa_variants()) {

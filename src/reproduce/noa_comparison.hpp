@@ -22,6 +22,7 @@ struct NoaComparison {
   NoaSeries simulation;
   std::vector<NoaSeries> models;     // in noa_variants() order, those the run folder has
   std::vector<VariantError> errors;  // RMSE per variant, same order
+  double spread = 0.0;               // the replicates' own (analysis/replicate_spread.hpp)
 };
 
 NoaComparison compare_noa(const std::filesystem::path& run_folder);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "analysis/replicate_spread.hpp"
 #include "analysis/variant_error.hpp"
 #include "models/return_probability.hpp"
 #include "reproduce/report.hpp"
@@ -48,10 +49,18 @@ std::string trend_text(const NoaTrend& trend) {
                              : "stationary");
 }
 
-std::string ratio_words(const std::optional<double>& ratio) {
+// "12.83x its floor (misses)", with "; 4.7x the replicates' spread" where that spread exceeds
+// the variant's floor: the floor then understates the simulation's own noise.
+std::string ratio_words(const std::vector<VariantError>& errors, const std::string& name,
+                        double spread) {
+  const std::optional<double> ratio = ratio_of(errors, name);
   if (!ratio) return "has no floor";
-  return report_number(*ratio) + "x its floor (" + (*ratio <= kFitsWithin ? "fits" : "misses") +
-         ")";
+  std::string text =
+      report_number(*ratio) + "x its floor (" + (*ratio <= kFitsWithin ? "fits" : "misses");
+  const VariantError* e = find_error(errors, name);
+  if (spread > *e->noise_floor)
+    text += "; " + report_number(e->error / spread) + "x the replicates' spread";
+  return text + ")";
 }
 
 // The best of the paper's variants by error / floor.
@@ -174,16 +183,25 @@ std::string noise_floor_section(const std::vector<FigureResult>& results,
       "mean of 20 batches (`model.csv`, `summary.json`'s `model_errors`). Each cell: variant, "
       "error / floor (ratio). A variant fits when its error is within " +
       report_number(kFitsWithin) +
-      "x its floor.\n\n| Fig | world | metric | errors / noise floors |\n|---|---|---|---|\n";
+      "x its floor. The replicates' spread is the simulation's own noise by the same metric: "
+      "how far the replicates' mean curve (or partition distribution) falls, on average, from "
+      "that of " +
+      std::to_string(kSpreadResamples) +
+      " bootstrap resamples of them. Where it exceeds a floor (replicates that settle at "
+      "different values, which the model's process, mixing, does not), the floor understates "
+      "the noise, and the text below gives the error as a multiple of the spread too.\n\n"
+      "| Fig | world | metric | errors / noise floors | replicates' spread |\n"
+      "|---|---|---|---|---|\n";
   for (const FigureResult& r : results) {
     const std::vector<VariantError>* errors = model_errors(r);
     if (!errors) continue;
     text += "| " + r.figure.figures + " | " + r.worlds.front().name + " | " +
-            (r.noa ? "rmse_noa" : "tv_partition") + " | " + errors_cell(*errors) + " |\n";
+            (r.noa ? "rmse_noa" : "tv_partition") + " | " + errors_cell(*errors) + " | " +
+            report_number(replicates_spread(r)) + " |\n";
   }
   for (const TimeoutPoint& p : series) {
     text += "| timeout series | " + timeout_label(p) + " | tv_partition | " +
-            errors_cell(p.comparison.errors) + " |\n";
+            errors_cell(p.comparison.errors) + " | " + report_number(p.comparison.spread) + " |\n";
   }
   return text + "\n";
 }
@@ -268,12 +286,12 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
               time_text(returns) + "); returns were " +
               report_number(100.0 * returning_share_of_joins(r.rates)) + " % of all joins. ";
     }
-    text += "The paper's best variant (" + best + ") is at " +
-            ratio_words(ratio_of(*errors, best)) + "; `returns` (q from the parameters) at " +
-            ratio_words(ratio_of(*errors, kReturnsVariant)) +
-            "; `measured` (measured q, new "
-            "joins) at " +
-            ratio_words(ratio_of(*errors, kMeasuredVariant)) + ".";
+    const double spread = replicates_spread(r);
+    text += "The paper's best variant (" + best + ") is at " + ratio_words(*errors, best, spread) +
+            "; `returns` (q from the parameters) at " +
+            ratio_words(*errors, kReturnsVariant, spread) +
+            "; `measured` (measured q, new joins) at " +
+            ratio_words(*errors, kMeasuredVariant, spread) + ".";
     if (r.trend && !r.trend->stationary())
       text +=
           " The run was still trending over its second half, so no variant can be judged "
@@ -287,10 +305,12 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
         "ends, so the paper's L(i) counts excursions, not departures:\n\n";
     for (const TimeoutPoint& p : series) {
       const ReturnSummary returns = pooled_returns(p.rates);
+      const std::vector<VariantError>& errors = p.comparison.errors;
+      const double spread = p.comparison.spread;
       text += "- " + timeout_label(p) + ": " + returns_text(returns) + " return; peripheral " +
-              ratio_words(ratio_of(p.comparison.errors, "peripheral")) + ", returns " +
-              ratio_words(ratio_of(p.comparison.errors, kReturnsVariant)) + ", measured " +
-              ratio_words(ratio_of(p.comparison.errors, kMeasuredVariant)) +
+              ratio_words(errors, "peripheral", spread) + ", returns " +
+              ratio_words(errors, kReturnsVariant, spread) + ", measured " +
+              ratio_words(errors, kMeasuredVariant, spread) +
               (p.trend.stationary() ? "" : "; NOA still trending") + ".\n";
     }
   }

@@ -108,6 +108,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       {"plot /nonexistent-run", "/nonexistent-run: no such folder"},
       {"reproduce --quick --only soysal-10 --timeout-duration 100",
        "--timeout-duration: the leave-timeout series is not selected"},
+      // Both would set run.seed; one of them would be silently unused.
+      {"run worlds/examples/demo.yaml --seed 5 --set run.seed=6",
+       "--seed and --set run.seed both set run.seed: give one of them"},
       // A reproduction of no world would be an empty report that reads as a success.
       {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
        "--only: no paper world's name contains 'no-such-world'"},

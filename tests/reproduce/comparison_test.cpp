@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <set>
 
-#include "reproduce/paper_figures.hpp"
 #include "analysis/partition_comparison.hpp"
+#include "reproduce/paper_figures.hpp"
 
 namespace swarmagg {
 namespace {

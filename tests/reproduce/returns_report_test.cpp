@@ -70,6 +70,22 @@ TEST(ReturnsReport, WhyTheModelsMissFollowsTheNumbers) {
   EXPECT_NE(text.find("in 1 of 1 comparisons"), std::string::npos) << text;
 }
 
+// Where the replicates spread more than a variant's floor, the floor understates the
+// simulation's noise: the error is given as a multiple of the spread too, and the table shows it.
+TEST(ReturnsReport, AnErrorStandsBesideTheReplicatesSpreadWhereItExceedsTheFloor) {
+  FigureResult r = soysal_figure();
+  r.partitions->spread = 0.2;  // above every variant's floor (0.08, 0.07, 0.1)
+  const std::string text = why_models_miss_section({r}, {});
+  EXPECT_NE(text.find("(peripheral) is at 8.571x its floor (misses; 3x the replicates' spread)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("`measured` (measured q, new joins) at 1.5x its floor (fits; 0.75x the "
+                      "replicates' spread)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(noise_floor_section({r}, {}).find("(1.5x) | 0.2 |"), std::string::npos);
+}
+
 // The series' point at the worlds' own timeout is the figure's run: counted once, not twice.
 TEST(ReturnsReport, TheFiguresOwnRunInTheSeriesIsJudgedOnce) {
   TimeoutPoint own{.world = "soysal-10", .agents = 10, .leave_timeout = 10.0};
