@@ -6,23 +6,19 @@
 #include "compare/compare_summary.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_override.hpp"
+#include "engine/engine.hpp"
 #include "output/atomic_file.hpp"
 #include "run/earlier_run.hpp"
 #include "run/run_folder.hpp"
 
 namespace swarmagg {
-namespace {
-
-// Through the key table and the world's checks, so the engine switch is checked like
-// `--set engine.type=...` (a kinematic-only setting such as engine.contact: stop is refused).
 WorldSpec on_engine(const WorldSpec& spec, const std::string& engine) {
   WorldSpec copy = spec;
   apply_override(copy, typed_override("engine.type", engine, "compare"));
   check_world(copy);
+  check_engine_world(copy);  // the Box2D arm's limits, before the kinematic arm runs
   return copy;
 }
-
-}  // namespace
 
 EngineComparison compare_engines(const WorldSpec& spec, bool progress,
                                  const std::filesystem::path& out) {

@@ -20,6 +20,11 @@ struct EngineComparison {
   Comparison stats;  // a = kinematic, b = box2d
 };
 
+// The world on `engine` ("kinematic", "box2d"), through the key table and the world's and the
+// engine's checks, as `--set engine.type=...` and the engine would check it: a world one arm
+// cannot run is refused before either runs.
+WorldSpec on_engine(const WorldSpec& spec, const std::string& engine);
+
 // With `out`, the arms' rows are spooled to disk for write_compare_folder (run_arm).
 EngineComparison compare_engines(const WorldSpec& spec, bool progress = false,
                                  const std::filesystem::path& out = {});

@@ -51,5 +51,8 @@ class Engine {
 
 // Builds the engine `spec.engine.type` names, with the bodies at `initial_positions`.
 std::unique_ptr<Engine> make_engine(const WorldSpec& spec, std::span<const Vec2> initial_positions);
+// Throws the InputError make_engine would (a world the engine cannot run faithfully), without
+// building it.
+void check_engine_world(const WorldSpec& spec);
 
 }  // namespace swarmagg

@@ -15,4 +15,8 @@ std::unique_ptr<Engine> make_engine(const WorldSpec& spec,
   return nullptr;
 }
 
+void check_engine_world(const WorldSpec& spec) {
+  if (spec.engine.type == EngineType::Box2D) check_box2d_world(spec);
+}
+
 }  // namespace swarmagg

@@ -32,6 +32,21 @@ run: {duration: 60, replicates: 3, record_every: 20, seed: 5}
                          "tiny");
 }
 
+// A world Box2D cannot run faithfully (here a speed needing more than its substeps) is refused
+// before the kinematic arm runs, not after it (a long comparison lost its first arm).
+TEST(EngineComparison, AWorldBox2dCannotRunIsRefusedBeforeEitherArm) {
+  WorldSpec fast = tiny_world();
+  fast.robots.speed = 150.0;
+  fast.robots.radius = 0.01;
+  fast.robots.detection_radius = 0.04;
+  fast.engine.dt = 0.2;
+  fast.arena.width = fast.arena.height = 200.0;
+  EXPECT_NO_THROW(on_engine(fast, "kinematic"));
+  EXPECT_THAT([&] { on_engine(fast, "box2d"); },
+              ::testing::ThrowsMessage<InputError>(
+                  ::testing::HasSubstr("would need more than 4096 Box2D substeps")));
+}
+
 TEST(EngineComparison, RunsBothEnginesWithTheSameSeeds) {
   const EngineComparison result = compare_engines(tiny_world());
   EXPECT_EQ(result.kinematic.spec.engine.type, EngineType::Kinematic);

@@ -448,4 +448,8 @@ std::unique_ptr<Engine> make_box2d_engine(const WorldSpec& spec,
   return std::make_unique<Box2DEngine>(spec, initial_positions);
 }
 
+void check_box2d_world(const WorldSpec& spec) {
+  check_spec(spec, shapes_for(spec));
+}
+
 }  // namespace swarmagg

@@ -19,5 +19,8 @@ namespace swarmagg {
 // the periodic images, a speed needing thousands of substeps per step, ...).
 std::unique_ptr<Engine> make_box2d_engine(const WorldSpec& spec,
                                           std::span<const Vec2> initial_positions);
+// The same checks without building the engine: what a command that runs Box2D later (compare's
+// second arm) asks before its first step.
+void check_box2d_world(const WorldSpec& spec);
 
 }  // namespace swarmagg
