@@ -17,6 +17,12 @@ std::vector<double> extra_draws(int resample, std::size_t n) {
   return weights;
 }
 
+// A resample's mean spreads about the sample's by sqrt((n - 1) / n) of the mean's own
+// spread (the bootstrap's plug-in variance): scaled back, as the floors are unbiased.
+double unbiased(double spread, std::size_t n) {
+  return spread * std::sqrt(static_cast<double>(n) / static_cast<double>(n - 1));
+}
+
 }  // namespace
 
 std::size_t resampled_replicate(int resample, std::size_t k, std::size_t n) {
@@ -41,7 +47,7 @@ double noa_spread(const NoaSeries& simulation) {
     }
     total += std::sqrt(squares / static_cast<double>(simulation.values.size()));
   }
-  return total / kSpreadResamples;
+  return unbiased(total / kSpreadResamples, n);
 }
 
 double partition_spread(const std::vector<Distribution>& replicates) {
@@ -61,7 +67,7 @@ double partition_spread(const std::vector<Distribution>& replicates) {
     }
     total += total_variation(sample, resample);
   }
-  return total / kSpreadResamples;
+  return unbiased(total / kSpreadResamples, n);
 }
 
 }  // namespace swarmagg

@@ -2,7 +2,8 @@
 // The simulation's own noise, by the metric its model errors use: how far the replicates'
 // summary (the mean NOA curve, the mean partition time fractions) moves when the replicates
 // are drawn again. The mean, over kSpreadResamples bootstrap resamples (as many replicates,
-// drawn with replacement), of the error between a resample's summary and the sample's.
+// drawn with replacement), of the error between a resample's summary and the sample's, times
+// sqrt(n / (n - 1)) against the bootstrap's shrinking of the spread with few replicates.
 // Where the replicates settle at different values (a Soysal run whose NOA no longer moves),
 // it exceeds the noise floor, whose own process mixes, and is the fairer yardstick.
 // Deterministic: the resamples come from a fixed hash sequence, not a clock.

@@ -6,6 +6,7 @@
 #include "cli/world_options.hpp"
 #include "compare/compare_summary.hpp"
 #include "compare/engine_comparison.hpp"
+#include "config/world_override.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
@@ -26,6 +27,11 @@ struct CompareCommandOptions {
 };
 
 int compare_command(const CompareCommandOptions& options) {
+  // Each arm sets the engine itself; a --set of it would be recorded against the other arm.
+  for (const WorldOverride& set : parse_overrides(options.world.overrides)) {
+    if (set.key == "engine.type")
+      throw InputError("--set engine.type: compare runs the world on both engines; leave it out");
+  }
   const WorldSpec spec = options.world.load();
   // Welch's interval needs a spread on both sides.
   if (spec.run.replicates < 2)

@@ -221,8 +221,8 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   check_output_folder(out, options.out.empty() ? "the run folder" : "--out");
   if (spec.render.every > 0) {
     check_output_folder(frames, options.render_dir ? "--render-dir" : "the frame folder");
-    // A killed run's staged frames (render/staged_frames.hpp) lie beside the frame folder.
-    remove_stale_temporaries(frames.has_parent_path() ? frames.parent_path() : ".");
+    // A killed run's staged frames (render/staged_frames.hpp), in the frame folder.
+    remove_stale_temporaries(frames);
   }
   if (!options.video.empty()) {
     check_output_file(options.video, "--video");
@@ -260,11 +260,12 @@ int run_command(const RunCommandOptions& options) {
                      trajectory_observers(trajectories.get(), spec.run.trajectories));
   const MeasuredRun run = run_world_measuring(spec, run_options, options.rates);
   const RunResult& result = run.result;
+  // First: a move that fails then leaves the earlier run's other outputs as they were.
+  if (staged_frames) staged_frames->commit();
   if (options.force) {
     for (const std::string& failure : clear_earlier_run(out))
       std::cerr << "warning: cannot remove the earlier run's " << failure << "\n";
   }
-  if (staged_frames) staged_frames->commit();
   // Before world.resolved.yaml, which marks the folder complete; a file of an earlier run
   // that stored trajectories would not belong to this one.
   if (trajectories) {

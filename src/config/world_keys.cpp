@@ -21,6 +21,19 @@ std::string scalar_text(const YAML::Node& node, const std::string& expected) {
   return node.Scalar();
 }
 
+// An item of a list as a message shows it: a scalar quoted, a short list in flow style.
+std::string shown_item(const YAML::Node& item) {
+  if (item.IsScalar()) return "'" + item.Scalar() + "'";
+  if (item.IsSequence()) {
+    YAML::Emitter flow;
+    flow.SetSeqFormat(YAML::Flow);
+    flow << item;
+    constexpr std::size_t kLongest = 40;
+    return flow.good() && flow.size() <= kLongest ? std::string(flow.c_str()) : "a list";
+  }
+  return item.IsMap() ? "a mapping" : "empty";
+}
+
 double read_real(const YAML::Node& node, const std::string& expected) {
   const std::string text = scalar_text(node, expected);
   double value = 0.0;
@@ -218,12 +231,22 @@ WorldKey placement_key() {
       w.robots.placement.clear();
       return;
     }
-    if (!node.IsSequence() || node.size() == 0) throw KeyValueError{expected};
+    if (!node.IsSequence()) throw KeyValueError{expected};
+    if (node.size() == 0) throw KeyValueError{expected, "an empty list"};
     std::vector<PlacedAgent> placed;
     for (const YAML::Node& item : node) {
-      if (!item.IsSequence() || item.size() != 3) throw KeyValueError{expected};
-      placed.push_back({read_real(item[0], expected), read_real(item[1], expected),
-                        read_real(item[2], expected)});
+      // The agent at fault is named: "got a list" alone reads as if lists were refused.
+      const auto wrong_agent = [&](const std::string& why) {
+        return KeyValueError{expected, "a list whose item " + std::to_string(placed.size() + 1) +
+                                           " is " + shown_item(item) + " (" + why + ")"};
+      };
+      if (!item.IsSequence() || item.size() != 3) throw wrong_agent("not 3 numbers");
+      try {
+        placed.push_back({read_real(item[0], expected), read_real(item[1], expected),
+                          read_real(item[2], expected)});
+      } catch (const KeyValueError&) {
+        throw wrong_agent("not 3 finite numbers");
+      }
     }
     w.robots.placement = std::move(placed);
   };
@@ -600,11 +623,6 @@ WorldKey flag_key(std::string path, bool fallback, std::string controller) {
 namespace {
 
 // One item of a list as a message shows it: its text, or what it is instead of a number.
-std::string shown_item(const YAML::Node& item) {
-  if (item.IsScalar()) return "'" + item.Scalar() + "'";
-  return item.IsSequence() ? "a list" : item.IsMap() ? "a mapping" : "empty";
-}
-
 }  // namespace
 
 WorldKey number_list_key(std::string path, std::vector<double> fallback, double low, double high,

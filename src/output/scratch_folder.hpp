@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -20,8 +21,11 @@ class ScratchFolder {
     std::error_code error;
     const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
     if (error) {
+      const char* tmpdir = std::getenv("TMPDIR");
       throw std::filesystem::filesystem_error(
-          "no temporary directory for a scratch folder ($TMPDIR or /tmp)", error);
+          "no temporary directory for a scratch folder ($TMPDIR=" +
+              std::string(tmpdir ? tmpdir : "(unset), /tmp") + ")",
+          error);
     }
     std::string name = (temporary / (prefix + "-XXXXXX")).string();
     if (mkdtemp(name.data()) == nullptr) {

@@ -1,25 +1,15 @@
 #include "render/staged_frames.hpp"
 
+#include <set>
 #include <system_error>
-#include <utility>
 
 #include "output/atomic_file.hpp"
 #include "render/frame_recorder.hpp"
 
 namespace swarmagg {
 
-namespace {
-
-// "renders/x/" names the folder x, as "renders/x" does: the staging folder goes beside it.
-std::filesystem::path without_trailing_separator(const std::filesystem::path& folder) {
-  const std::filesystem::path normal = folder.lexically_normal();
-  return normal.has_filename() || !normal.has_parent_path() ? normal : normal.parent_path();
-}
-
-}  // namespace
-
-StagedFrames::StagedFrames(std::filesystem::path folder)
-    : folder_(without_trailing_separator(folder)), staging_(temporary_beside(folder_)) {}
+StagedFrames::StagedFrames(const std::filesystem::path& folder)
+    : folder_(folder), staging_(temporary_beside(folder / "staged-frames")) {}
 
 StagedFrames::~StagedFrames() {
   if (committed_) return;
@@ -28,13 +18,16 @@ StagedFrames::~StagedFrames() {
 }
 
 void StagedFrames::commit() {
-  std::filesystem::create_directories(folder_);
-  for (const std::filesystem::path& earlier : frame_files(folder_))
-    std::filesystem::remove(earlier);
+  std::set<std::filesystem::path> drawn;
   std::error_code none;
   if (std::filesystem::is_directory(staging_, none)) {
-    for (const std::filesystem::path& frame : frame_files(staging_))
+    for (const std::filesystem::path& frame : frame_files(staging_)) {
       std::filesystem::rename(frame, folder_ / frame.filename());
+      drawn.insert(frame.filename());
+    }
+  }
+  for (const std::filesystem::path& earlier : frame_files(folder_)) {
+    if (!drawn.contains(earlier.filename())) std::filesystem::remove(earlier);
   }
   std::filesystem::remove_all(staging_);
   committed_ = true;

@@ -1,16 +1,18 @@
 #pragma once
-// The frames of a run drawn into a hidden folder beside their frame folder and moved into it
+// The frames of a run drawn into a hidden folder inside their frame folder and moved into it
 // once the simulation is complete, so that Ctrl-C or a failure leaves the frames an earlier
 // run drew there as they were (`run --force` keeps the earlier run whole until the new
-// simulation has finished). The hidden folder is named as temporary_beside names files, so a
-// killed run's is removed by remove_stale_temporaries.
+// simulation has finished). Inside, not beside: the moves stay on one filesystem whatever the
+// frame folder is (a link, a mount), and need no write access to its parent. The hidden
+// folder is named as temporary_beside names files, so remove_stale_temporaries of the frame
+// folder removes a killed run's.
 #include <filesystem>
 
 namespace swarmagg {
 
 class StagedFrames {
  public:
-  explicit StagedFrames(std::filesystem::path folder);
+  explicit StagedFrames(const std::filesystem::path& folder);
   // Removes the staged frames unless committed.
   ~StagedFrames();
   StagedFrames(const StagedFrames&) = delete;
@@ -18,8 +20,8 @@ class StagedFrames {
 
   // Where the recorder draws.
   const std::filesystem::path& staging() const { return staging_; }
-  // The earlier frames in the frame folder go (other files stay), the staged ones take their
-  // place.
+  // The staged frames replace those of the same number; then the earlier frames beyond them
+  // go (other files stay). A failure part way never leaves the folder without frames.
   void commit();
 
  private:

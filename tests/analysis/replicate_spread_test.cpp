@@ -2,20 +2,22 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace swarmagg {
 namespace {
 
 // Two replicates, a and b: a resample draws aa, ab, ba or bb alike, so its mean lies |a - b| / 2
-// from the sample's half the time and on it otherwise: a spread of |a - b| / 4.
+// from the sample's half the time and on it otherwise: |a - b| / 4, times sqrt(2 / 1).
 TEST(ReplicateSpread, TwoReplicatesSpreadAQuarterOfTheirDifference) {
   NoaSeries series;
   series.steps = {0, 10};
   series.times = {0.0, 1.0};
   series.values = {{0.0, 4.0}, {2.0, 6.0}};
-  EXPECT_NEAR(noa_spread(series), 1.0, 0.05);
+  EXPECT_NEAR(noa_spread(series), std::sqrt(2.0), 0.07);
   EXPECT_EQ(noa_spread(series), noa_spread(series));  // the same resamples every time
   const std::vector<Distribution> disjoint{{{"5", 1.0}}, {{"4+1", 1.0}}};
-  EXPECT_NEAR(partition_spread(disjoint), 0.25, 0.02);
+  EXPECT_NEAR(partition_spread(disjoint), 0.25 * std::sqrt(2.0), 0.03);
 }
 
 TEST(ReplicateSpread, AlikeOrSingleReplicatesHaveNone) {

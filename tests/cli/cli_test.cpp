@@ -108,6 +108,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       {"plot /nonexistent-run", "/nonexistent-run: no such folder"},
       {"reproduce --quick --only soysal-10 --timeout-duration 100",
        "--timeout-duration: the leave-timeout series is not selected"},
+      // Each arm sets its engine: a --set of it would be recorded against the other arm.
+      {"compare worlds/examples/demo.yaml --set engine.type=box2d",
+       "--set engine.type: compare runs the world on both engines"},
       // Both would set run.seed; one of them would be silently unused.
       {"run worlds/examples/demo.yaml --seed 5 --set run.seed=6",
        "--seed and --set run.seed both set run.seed: give one of them"},

@@ -298,8 +298,8 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStepAndKeepsTheEarlierFrames) {
   ASSERT_TRUE(child.started());
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
   const auto staged_frame = [&out] {
-    for (const auto& entry : fs::directory_iterator(out)) {
-      if (entry.path().filename().string().starts_with(".frames.") &&
+    for (const auto& entry : fs::directory_iterator(out / "frames")) {
+      if (entry.path().filename().string().starts_with(".staged-frames.") &&
           fs::exists(entry.path() / "frame_000020.png"))
         return true;
     }
@@ -310,9 +310,7 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStepAndKeepsTheEarlierFrames) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   child.send(SIGINT);
   expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
-  EXPECT_EQ(files_below(out / "frames"), before);
-  for (const auto& entry : fs::directory_iterator(out))
-    EXPECT_FALSE(entry.path().filename().string().starts_with(".frames.")) << entry.path();
+  EXPECT_EQ(files_below(out / "frames"), before);  // the staged frames went too
   fs::remove_all(out);
 }
 

@@ -173,7 +173,7 @@ TEST(CockroachController, ListsMustHoldProbabilities) {
   EXPECT_THAT(message("stop_probability", "[0.5, 1.5]"),
               ::testing::HasSubstr("got a list whose item 2 is '1.5'"));
   EXPECT_THAT(message("stop_probability", "[0.5, [1]]"),
-              ::testing::HasSubstr("got a list whose item 2 is a list"));
+              ::testing::HasSubstr("got a list whose item 2 is [1]"));
 }
 
 TEST(CockroachController, ItsKeysAreWrittenBackOnlyForItsWorlds) {

@@ -96,7 +96,7 @@ TEST(AtomicFile, OnlyTemporariesOfProcessesThatAreGoneAreStale) {
                                   std::string("notes.99999999.0.tmp"), std::string("a.csv")})
     write_file_atomic(folder.path() / name, "x");
   // A killed run's staged frames: a folder so named, with frames in it.
-  write_file_atomic(folder.path() / ".frames.99999999.1.tmp" / "frame_000000.png", "x");
+  write_file_atomic(folder.path() / ".staged-frames.99999999.1.tmp" / "frame_000000.png", "x");
   EXPECT_EQ(remove_stale_temporaries(folder.path()), 3u);
   std::vector<std::string> left = names_in(folder.path());
   std::sort(left.begin(), left.end());

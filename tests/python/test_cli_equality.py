@@ -82,6 +82,16 @@ def test_a_simulation_stepped_by_hand_ends_in_the_runs_final_state(cli, demo, tm
         assert sim.state_hash() == summary["replicates"][replicate]["final_state_hash"]
 
 
+def test_model_with_measured_rates_is_the_cli_model_csv_byte_for_byte(cli, demo, tmp_path):
+    # run --rates writes the measured variants (expected and stochastic) too.
+    cli("run", demo, *set_arguments(SMALL), "--replicates", 2, "--seed", 3, "--rates",
+        "--out", tmp_path, "--quiet", "--no-plots")
+    r = sa.run(sa.load_world(str(demo), set=SMALL), replicates=2, seed=3, rates=True)
+    text = r._output.model_csv()
+    assert "measured-stochastic" in text
+    assert text == (tmp_path / "model.csv").read_text()
+
+
 def test_rates_table_equals_rates_csv(cli, demo, tmp_path):
     cli("rates", demo, *set_arguments(SMALL), "--replicates", 2, "--seed", 3, "--out", tmp_path,
         "--quiet")
