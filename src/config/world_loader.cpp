@@ -58,6 +58,8 @@ bool is_block(const std::string& path) {
 }
 
 [[noreturn]] void unknown_key(const std::string& at, const std::string& path) {
+  // Nothing is a typo of an empty name: the nearest key would be a guess.
+  if (path.empty()) throw InputError(at + ": an empty key; expected a key such as robots.count");
   std::string message = at + ": unknown key '" + shortened(path) + "'";
   // Edit distance costs time proportional to the name's length; a name far longer than any
   // key path is no typo of one (a 2 MB key took 13 s here).
@@ -393,10 +395,10 @@ void check_world(const WorldSpec& spec) {
   }
   const double min_side = std::min(spec.arena.width, spec.arena.height);
   if (min_side < 2.0 * spec.sensing_radius() + 2.0 * robots.radius) {
-    impossible(spec, "arena.width",
+    impossible(spec, spec.arena.width <= spec.arena.height ? "arena.width" : "arena.height",
                "the arena (" + format_number(spec.arena.width) + " x " +
                    format_number(spec.arena.height) +
-                   ") must be wider than twice the sensing radius plus a body");
+                   ") must be wider and higher than twice the sensing radius plus a body");
   }
   // Random sequential placement jams near 55% coverage; beyond half the arena it fails.
   const double coverage =

@@ -109,8 +109,10 @@ class RunOutput {
   std::vector<RateRow> rate_rows_;
 };
 
-RunOutput run(const World& world, std::optional<long long> replicates,
-              std::optional<py::object> seed, std::optional<long long> threads,
+// Integers as Python objects, read as `seed` is (yaml_index): a bool is a TypeError, a number
+// beyond 64 bits or the key's range a ValueError, as for every other argument.
+RunOutput run(const World& world, std::optional<py::object> replicates,
+              std::optional<py::object> seed, std::optional<py::object> threads,
               std::optional<std::string> engine, bool rates) {
   std::vector<WorldOverride> overrides;
   add_argument(overrides, "engine.type", engine, "engine");
@@ -123,7 +125,8 @@ RunOutput run(const World& world, std::optional<long long> replicates,
   // Named as the CLI's summary.json names --engine, --replicates and --seed (not --threads).
   World named = ran;
   if (engine) named.changes.push_back("engine.type=" + *engine);
-  if (replicates) named.changes.push_back("run.replicates=" + std::to_string(*replicates));
+  if (replicates)
+    named.changes.push_back("run.replicates=" + yaml_index(*replicates, "replicates").Scalar());
   if (seed) named.changes.push_back("run.seed=" + yaml_index(*seed, "seed").Scalar());
   return RunOutput(std::move(named), std::move(result));
 }

@@ -69,6 +69,26 @@ def test_a_bad_argument_raises_value_error(demo, arguments):
     assert next(iter(arguments)) in str(error.value)
 
 
+@pytest.mark.parametrize("arguments", [{"replicates": True}, {"threads": False},
+                                       {"replicates": 2.0}])
+def test_a_bool_or_float_for_a_whole_number_is_a_type_error(demo, arguments):
+    world = sa.load_world(str(demo), set={"run.duration": 1})
+    with pytest.raises(TypeError):
+        sa.run(world, **arguments)
+
+
+def test_a_number_beyond_64_bits_is_a_value_error_naming_the_argument(demo):
+    world = sa.load_world(str(demo), set={"run.duration": 1})
+    with pytest.raises(ValueError, match="replicates"):
+        sa.run(world, replicates=2**70)
+
+
+def test_an_empty_set_key_suggests_nothing(demo):
+    with pytest.raises(sa.WorldError, match="an empty key") as error:
+        sa.load_world(str(demo), set={"": 5})
+    assert "did you mean" not in str(error.value)
+
+
 def test_simulation_arguments_are_checked(demo):
     world = sa.load_world(str(demo))
     with pytest.raises(ValueError, match="replicate"):
