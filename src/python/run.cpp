@@ -120,6 +120,13 @@ RunOutput run(const World& world, std::optional<py::object> replicates,
   add_argument(overrides, "run.seed", seed, "seed");
   add_argument(overrides, "run.threads", threads, "threads");
   const World ran = with_overrides(world, overrides);
+  // Results stay in memory: a world asking for files would otherwise be ignored in silence.
+  if (ran.spec->run.trajectories > 0 || ran.spec->render.every > 0) {
+    py::module_::import("warnings")
+        .attr("warn")(
+            "run() stores no trajectories and draws no frames (run.trajectories, render.every): "
+            "`swarmagg run` writes them, and a Simulation shows every step's state");
+  }
   MeasuredRun result =
       call_interruptibly([&] { return run_world_measuring(*ran.spec, RunOptions{}, rates); });
   // Named as the CLI's summary.json names --engine, --replicates and --seed (not --threads).

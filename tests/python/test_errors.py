@@ -83,6 +83,12 @@ def test_a_number_beyond_64_bits_is_a_value_error_naming_the_argument(demo):
         sa.run(world, replicates=2**70)
 
 
+def test_a_run_of_a_world_asking_for_frames_or_trajectories_warns(demo):
+    world = sa.load_world(str(demo), set={"run.duration": 1, "run.trajectories": 5})
+    with pytest.warns(UserWarning, match="stores no trajectories and draws no frames"):
+        sa.run(world, replicates=1)
+
+
 def test_an_empty_set_key_suggests_nothing(demo):
     with pytest.raises(sa.WorldError, match="an empty key") as error:
         sa.load_world(str(demo), set={"": 5})
