@@ -18,6 +18,7 @@ StagedFrames::~StagedFrames() {
 }
 
 void StagedFrames::commit() {
+  std::filesystem::create_directories(folder_);  // a run that drew nothing made none
   std::set<std::filesystem::path> drawn;
   std::error_code none;
   if (std::filesystem::is_directory(staging_, none)) {
