@@ -66,15 +66,12 @@ std::vector<Distribution> replicate_partitions(const std::filesystem::path& part
   return replicates;
 }
 
-Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
-  const CsvTable table = read_csv(partitions_csv);
-  const std::size_t replicate = table.column("replicate"), partition = table.column("partition"),
-                    fraction = table.column("time_fraction");
+// Summed replicate by replicate, as partitions.csv lists them: the same sums, bit for bit, as
+// its rows added in file order.
+Distribution mean_partitions(const std::vector<Distribution>& replicates) {
   Distribution sums;
-  std::set<std::string> replicates;
-  for (std::size_t row = 0; row < table.rows.size(); ++row) {
-    replicates.insert(table.rows[row][replicate]);
-    sums[table.rows[row][partition]] += table.number(row, fraction);
+  for (const Distribution& replicate : replicates) {
+    for (const auto& [partition, fraction] : replicate) sums[partition] += fraction;
   }
   for (auto& [key, value] : sums) value /= static_cast<double>(replicates.size());
   return sums;
@@ -82,8 +79,9 @@ Distribution simulated_partitions(const std::filesystem::path& partitions_csv) {
 
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder) {
   PartitionComparison comparison;
-  comparison.simulation = simulated_partitions(run_folder / "partitions.csv");
-  comparison.spread = partition_spread(replicate_partitions(run_folder / "partitions.csv"));
+  const std::vector<Distribution> replicates = replicate_partitions(run_folder / "partitions.csv");
+  comparison.simulation = mean_partitions(replicates);
+  comparison.spread = partition_spread(replicates);
   // A run without predictions (--no-model, or too many agents for the chain) has only its own.
   if (!std::filesystem::exists(run_folder / "model.csv")) return comparison;
   CsvReader model(run_folder / "model.csv");

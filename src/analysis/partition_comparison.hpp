@@ -31,9 +31,9 @@ struct PartitionComparison {
 double total_variation(const Distribution& a, const Distribution& b);
 
 // partitions.csv's time fractions, one distribution per replicate (in replicate order), and
-// their mean.
+// their mean over the replicates.
 std::vector<Distribution> replicate_partitions(const std::filesystem::path& partitions_csv);
-Distribution simulated_partitions(const std::filesystem::path& partitions_csv);
+Distribution mean_partitions(const std::vector<Distribution>& replicates);
 
 // Without model.csv in the folder, models, stationary and errors stay empty.
 PartitionComparison compare_partitions(const std::filesystem::path& run_folder);

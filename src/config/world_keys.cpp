@@ -70,7 +70,7 @@ const RealBounds kProbability{0.0, true, 1.0, "a probability between 0 and 1"};
 const RealBounds kLength{1e-30, true, 1e30, "a length from 1e-30 to 1e30"};
 const RealBounds kLengthOrZero{0.0, true, 1e30, "a number from 0 to 1e30"};
 // Bounded like lengths, so that what is derived from it (3 leave timeouts) stays finite.
-const RealBounds kTimeOrZero{0.0, true, 1e30, "a number from 0 to 1e30"};
+const RealBounds kTimeOrZero = kLengthOrZero;
 // Box2D computes in float: a value beyond float's range becomes infinite there and fails
 // Box2D's own checks (an abort), so it is refused here.
 const RealBounds kBox2dNonNegative{0.0, true, 1e30, "a number from 0 to 1e30"};
