@@ -169,12 +169,11 @@ std::string escape_sentence(const std::vector<CompactionEffect>& effects) {
   text += "With compaction on, " + range(inside.min_on, inside.max_on) +
           " of the attempts start inside an aggregate (a member with 6 fellows around it, "
           "which only aggregates of 7 or more have), the rest on its rim. An attempt fails when "
-          "its LEAVE phase ends with a member of the aggregate it "
-          "left still within reach (the approach radius for Soysal's controller, the detection "
-          "radius otherwise): the same leave walk (`leave_timeout` x v) gets out of reach of a "
-          "compact aggregate less often than of a loose one. These runs do not tell apart how much "
-          "of that is the "
-          "walk's length against the reach and how much the walk bent by bodies in its way. ";
+          "its LEAVE phase ends with a member of the aggregate it left still within reach (the "
+          "approach radius for Soysal's controller, the detection radius otherwise): the same "
+          "leave walk (`leave_timeout` x v) gets out of reach of a compact aggregate less often "
+          "than of a loose one. These runs do not tell apart how much of that is the walk's "
+          "length against the reach and how much the walk bent by bodies in its way. ";
   return text;
 }
 
