@@ -6,6 +6,7 @@
 
 #include "controllers/controller.hpp"
 #include "core/errors.hpp"
+#include "geometry/hilbert_curve.hpp"
 #include "geometry/pair_finder.hpp"
 
 namespace swarmagg {
@@ -67,23 +68,41 @@ InitialPlacement random_placement(const WorldSpec& spec, const CounterRng& rng) 
 }
 
 // Agents are exchangeable, so which id gets which drawn position is free. Ids in the order
-// of bands of the arena (two detection radii high, by x within a band) put the agents an
-// agent perceives at nearby ids: the per-agent arrays the engine and the controller read for
-// neighbours then stay in cache at any N, instead of costing a memory access per neighbour.
+// of a Hilbert curve through cells of the arena (one to two detection radii) put the agents an
+// agent perceives at nearby ids, and every range of ids in a compact patch of the arena: the
+// per-agent arrays the engine and the controller read for neighbours then stay in cache at any N,
+// instead of costing a memory access per neighbour, and so do the data a patch's aggregates touch.
+// (Bands of the arena, the order before, kept neighbours near too, but a patch's agents were
+// spread over as many bands as it is high: at 10^6 agents a step cost about a sixth more.)
 // Headings stay with their ids (they are independent of positions).
 void number_by_space(const WorldSpec& spec, std::vector<Vec2>& positions) {
-  const double band = 2.0 * spec.robots.detection_radius;
-  // (band, x, draw index) of each agent, sorted once: a total order, so ties cannot reorder.
+  // Cells of one to two detection radii, as many as the curve's grid has along the arena's
+  // longer side: a square arena is covered without cells outside it, where the curve would
+  // leave the agents and come back elsewhere.
+  const double longer_side = std::max(spec.arena.width, spec.arena.height);
+  int order = 0;
+  while (order < 31 && std::ldexp(2.0 * spec.robots.detection_radius, order) < longer_side) ++order;
+  const double cell = std::ldexp(longer_side, -order);
+  const double last_cell = std::ldexp(1.0, order) - 1.0;
+  const auto cell_of = [&](double coordinate) {
+    return static_cast<std::uint32_t>(std::clamp(std::floor(coordinate / cell), 0.0, last_cell));
+  };
+  // (curve position, x, draw index) of each agent, sorted once: a total order, so ties
+  // cannot reorder.
   struct Key {
-    double band, x;
+    std::uint64_t along_curve;
+    double x;
     std::uint32_t index;
     bool operator<(const Key& o) const {
-      return band != o.band ? band < o.band : x != o.x ? x < o.x : index < o.index;
+      return along_curve != o.along_curve ? along_curve < o.along_curve
+             : x != o.x                   ? x < o.x
+                                          : index < o.index;
     }
   };
   std::vector<Key> keys(positions.size());
   for (std::uint32_t i = 0; i < keys.size(); ++i) {
-    keys[i] = {std::floor(positions[i].y / band), positions[i].x, i};
+    const Vec2 p = positions[i];
+    keys[i] = {hilbert_position(cell_of(p.x), cell_of(p.y), order), p.x, i};
   }
   std::sort(keys.begin(), keys.end());
   std::vector<Vec2> ordered(positions.size());

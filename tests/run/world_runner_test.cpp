@@ -121,28 +121,35 @@ TEST(InitialPlacement, RandomBodiesNeverOverlap) {
   }
 }
 
-// Large swarms are numbered along bands of the arena (two detection radii high, by x within
-// a band), so that agents near each other have nearby ids; small ones keep the draw order.
-bool numbered_by_space(const std::vector<Vec2>& positions, double band) {
-  for (std::size_t i = 1; i < positions.size(); ++i) {
-    const double previous_band = std::floor(positions[i - 1].y / band);
-    const double this_band = std::floor(positions[i].y / band);
-    if (this_band < previous_band) return false;
-    if (this_band == previous_band && positions[i].x < positions[i - 1].x) return false;
+// Large swarms are numbered along space, so that a range of ids lies in a compact patch of
+// the arena; small ones keep the draw order. The median, over the blocks of `block`
+// consecutive ids, of the longer side of the box around a block's positions.
+double median_block_width(const std::vector<Vec2>& positions, std::size_t block) {
+  std::vector<double> widths;
+  for (std::size_t first = 0; first + block <= positions.size(); first += block) {
+    Vec2 low = positions[first], high = positions[first];
+    for (std::size_t i = first; i < first + block; ++i) {
+      low = {std::min(low.x, positions[i].x), std::min(low.y, positions[i].y)};
+      high = {std::max(high.x, positions[i].x), std::max(high.y, positions[i].y)};
+    }
+    widths.push_back(std::max(high.x - low.x, high.y - low.y));
   }
-  return true;
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return widths[widths.size() / 2];
 }
 
 TEST(InitialPlacement, LargeSwarmsAreNumberedAlongSpaceSmallOnesByDraw) {
   WorldSpec large =
-      load_world_text("arena: {width: 1000, height: 1000}\nrobots: {count: 5000}\n", "t");
+      load_world_text("arena: {width: 1500, height: 1500}\nrobots: {count: 10000}\n", "t");
   const InitialPlacement placed = place_agents(large, CounterRng::for_replicate(1, 0));
-  ASSERT_EQ(placed.positions.size(), 5000u);
-  EXPECT_TRUE(numbered_by_space(placed.positions, 2.0 * large.robots.detection_radius));
+  ASSERT_EQ(placed.positions.size(), 10000u);
+  // 250 agents cover about 240 x 240 of this arena; numbered along rows of it (or bands, the
+  // order before) they would stretch over its whole width.
+  EXPECT_LT(median_block_width(placed.positions, 250), 600.0);
   WorldSpec small = large;
   small.robots.count = 4000;
   const InitialPlacement drawn = place_agents(small, CounterRng::for_replicate(1, 0));
-  EXPECT_FALSE(numbered_by_space(drawn.positions, 2.0 * small.robots.detection_radius));
+  EXPECT_GT(median_block_width(drawn.positions, 250), 1400.0);
   // The numbering only permutes: the first 4000 draws are the same positions either way
   // (both runs draw agent i's position from the same counter), so every small-swarm
   // position appears in the large swarm.
