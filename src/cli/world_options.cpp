@@ -20,20 +20,22 @@ void WorldOptions::add_to(CLI::App& command, bool run_options) {
 
 WorldSpec WorldOptions::load() const {
   std::vector<WorldOverride> all = parse_overrides(overrides);
+  std::vector<WorldOverride> from_options;
+  if (engine) from_options.push_back(typed_override("engine.type", *engine, "--engine"));
+  if (replicates)
+    from_options.push_back(typed_override("run.replicates", *replicates, "--replicates"));
+  if (seed) from_options.push_back(typed_override("run.seed", *seed, "--seed"));
+  if (threads) from_options.push_back(typed_override("run.threads", *threads, "--threads"));
+  from_options.insert(from_options.end(), typed_overrides.begin(), typed_overrides.end());
   // An option and a --set of its key would leave one of the two silently unused.
-  const auto add_option = [&all](const std::string& key, const auto& value,
-                                 const std::string& option) {
+  for (const WorldOverride& option : from_options) {
     for (const WorldOverride& set : all) {
-      if (set.key == key)
-        throw InputError(option + " and --set " + key + " both set " + key + ": give one of them");
+      if (set.key == option.key)
+        throw InputError(option.origin + " and --set " + set.key + " both set " + set.key +
+                         ": give one of them");
     }
-    all.push_back(typed_override(key, value, option));
-  };
-  if (engine) add_option("engine.type", *engine, "--engine");
-  if (replicates) add_option("run.replicates", *replicates, "--replicates");
-  if (seed) add_option("run.seed", *seed, "--seed");
-  if (threads) add_option("run.threads", *threads, "--threads");
-  all.insert(all.end(), typed_overrides.begin(), typed_overrides.end());
+  }
+  all.insert(all.end(), from_options.begin(), from_options.end());
   return load_world_with(path, all);
 }
 

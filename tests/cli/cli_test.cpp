@@ -114,6 +114,12 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       // Both would set run.seed; one of them would be silently unused.
       {"run worlds/examples/demo.yaml --seed 5 --set run.seed=6",
        "--seed and --set run.seed both set run.seed: give one of them"},
+      {"run worlds/examples/demo.yaml --render-every 5 --set render.every=10",
+       "--render-every and --set render.every both set render.every: give one of them"},
+      {"run worlds/examples/demo.yaml --render-every 5 --render-size 80x60 --set render.height=9",
+       "--render-size and --set render.height both set render.height"},
+      {"run worlds/examples/demo.yaml --trajectories 5 --set run.trajectories=10",
+       "--trajectories and --set run.trajectories both set run.trajectories"},
       // A reproduction of no world would be an empty report that reads as a success.
       {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
        "--only: no paper world's name contains 'no-such-world'"},
