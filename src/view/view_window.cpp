@@ -26,6 +26,7 @@
 #include "render/frame_renderer.hpp"
 #include "render/frame_scene.hpp"
 #include "render/png_writer.hpp"
+#include "view/screenshot_name.hpp"
 
 namespace swarmagg {
 namespace {
@@ -286,8 +287,9 @@ void Window::on_key(int key, int mods) {
       break;
     case GLFW_KEY_S:
       c.action = ViewAction::Screenshot;
-      c.path = session_.spec().name + "-step" + std::to_string(session_.replicate().steps_done()) +
-               ".png";
+      c.path = unused_screenshot_path(".", session_.spec().name, session_.replicate().steps_done())
+                   .lexically_normal()
+                   .string();
       queue_.push_back(c);
       break;
     case GLFW_KEY_V:

@@ -245,6 +245,17 @@ TEST(ViewWindow, KeysPauseStepAndTakeAScreenshot) {
   EXPECT_EQ(pixels_differing(testing::read_png(shot), frame), 0u) << shot;
 }
 
+// S twice at one step (a zoom or a reset in between) keeps both screenshots.
+TEST(ViewWindow, ASecondScreenshotOfAStepKeepsTheFirst) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const testing::ScratchDir dir("view-two-shots");
+  const auto outcome = drive_view(dir.path(), "", "xdotool key --delay 300 s s\n");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_TRUE(fs::exists(dir.path() / "demo-step0.png")) << outcome.output;
+  EXPECT_TRUE(fs::exists(dir.path() / "demo-step0-2.png")) << outcome.output;
+}
+
 // A window resized anyway (xdotool here, a tiling window manager elsewhere) still shows and
 // screenshots the frame at its own size: the screenshot came out shifted, part blank.
 TEST(ViewWindow, AResizedWindowStillScreenshotsTheFrame) {
