@@ -25,7 +25,7 @@ results=${RESULTS:-results/$(basename "$sweep" .yaml)}
 # Slurm opens --output before a job starts, so the log folder must exist at submission.
 mkdir -p "$results/logs"
 array=$(sbatch --parsable --array="1-$shards" --output="$results/logs/%x-%A_%a.out" "$@" \
-  "$here/sweep.sbatch" "$sweep" "$results")
+  "$here/sweep.sbatch" "$sweep" "$results" "$shards")
 array=${array%%;*}  # --parsable prints "id" or "id;cluster"
 merge=$(sbatch --parsable --job-name=swarmagg-merge --dependency="afterok:$array" \
   --kill-on-invalid-dep=yes --output="$results/logs/%x-%j.out" "$@" \

@@ -181,6 +181,16 @@ sed 's/^/  cancelled task log: /' "results/logs/swarmagg-sweep-${array}_$victim.
 kept=$(find "results/shard-$victim" -name world.resolved.yaml -exec stat -c '%n %y' {} + | sort)
 wait_until "the rest of the array (the merge is cancelled with the failed task)" queue_empty
 [[ ! -f results/sweep_summary.csv ]] || fail "the merge ran although a shard was cancelled"
+# Redo only the cancelled task by hand: an array of that one task, given the number of shards
+# (its upper bound alone would make it shard $victim/$victim).
+sbatch --parsable --array="$victim" --cpus-per-task=1 --output="results/logs/%x-%A_%a.out" \
+  "$(dirname "$submit")/sweep.sbatch" "$sweep_file" results "$shards" >/dev/null
+wait_until "the redone task" queue_empty
+redone=$(complete_runs results $victim)
+held=$(find "results/shard-$victim" -name world.resolved.yaml | wc -l)
+((redone == total && held == total)) ||
+  fail "the redone task left shard-$victim with $redone of its $total runs complete and $held runs in all"
+say "redo of task $victim alone: shard $victim/$shards complete, no other shard's runs"
 RESULTS=results "$submit" "$sweep_file" "$shards" --cpus-per-task=1 | sed 's/^/  resubmit: /'
 wait_until "the resubmitted array and merge" queue_empty
 sed 's/^/  merge log: /' results/logs/swarmagg-merge-*.out
