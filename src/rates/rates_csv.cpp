@@ -1,16 +1,58 @@
 #include "rates/rates_csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
 
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
+#include "config/did_you_mean.hpp"
 #include "core/errors.hpp"
+#include "rates/poisson_interval.hpp"
+#include "rates/rate_rows.hpp"
 
 namespace swarmagg {
 
 namespace {
+
+// A term this version does not write (a misspelling, a hand-made row) would be read and then
+// ignored by every model, which would say it kept its own value for lack of a measurement.
+void check_term(const std::string& term, const std::string& where) {
+  const std::vector<std::string> known(std::begin(kRateTerms), std::end(kRateTerms));
+  if (std::find(known.begin(), known.end(), term) != known.end()) return;
+  std::string list;
+  for (const std::string& name : known) list += (list.empty() ? "" : ", ") + name;
+  const std::optional<std::string> closest = closest_name(term, known);
+  throw InputError(where + ": unknown term '" + term + "'" +
+                   (closest ? "; did you mean '" + *closest + "'?" : "") + " (expected one of " +
+                   list + ")");
+}
+
+// A rate (or return fraction) is its events over its exposure, given from kMinimumEvents
+// events (trials, for a fraction) on: the models take the rate column, so one that disagrees
+// with its counts (a hand edit) would be used while the counts said otherwise. A relative
+// tolerance lets files rewritten with fewer digits through.
+void check_rate_is_its_counts(const RateRow& row, const std::string& where,
+                              const std::string& text) {
+  static const std::vector<std::string> kCounted = {
+      "creation", "pairup", "growth", "join", "join_new", "initial", "attempt", "escape", "return"};
+  if (!row.estimate.rate || std::find(kCounted.begin(), kCounted.end(), row.term) == kCounted.end())
+    return;
+  const bool fraction = row.term == "return";
+  const double counted =
+      fraction ? row.estimate.exposure : static_cast<double>(row.estimate.events);
+  if (counted < static_cast<double>(kMinimumEvents)) {
+    throw InputError(where + ": a " + row.term + " rate from " + csv_number(counted) +
+                     (fraction ? " LEAVE attempts" : " events") + ", got '" + text +
+                     "': expected none below " + std::to_string(kMinimumEvents));
+  }
+  const double expected = static_cast<double>(row.estimate.events) / row.estimate.exposure;
+  if (std::abs(*row.estimate.rate - expected) > 1e-9 * expected) {
+    throw InputError(where + ": got '" + text +
+                     "', expected events / exposure = " + csv_number(expected));
+  }
+}
 
 // Bounds that keep the casts to int and uint64 defined (and far above any real run).
 constexpr double kMaxSize = 1e9;
@@ -96,6 +138,7 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
       return value;
     };
     RateRow row{.term = cells.at(0)};
+    check_term(row.term, cell(0));
     if (!cells.at(1).empty()) row.size = static_cast<int>(whole_number(1, 1, kMaxSize));
     row.estimate.events = static_cast<std::uint64_t>(whole_number(2, 0, kMaxEvents));
     row.estimate.exposure = number(3, false);
@@ -122,6 +165,7 @@ std::vector<RateRow> read_rates_csv(const std::filesystem::path& file) {
       throw InputError(cell(3) + ": " + cells.at(2) + " events over an exposure of " + cells.at(3) +
                        ": expected an exposure above 0");
     }
+    check_rate_is_its_counts(row, cell(4), cells.at(4));
     // A term is written once per model variant that predicts it, on consecutive lines with
     // the same measurement; any other repeat is a second measurement, and which to take is
     // unknown.

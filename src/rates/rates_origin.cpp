@@ -13,7 +13,10 @@ namespace {
 std::string world_doubt(const std::filesystem::path& rates_csv, const WorldSpec& world) {
   const std::filesystem::path json_file = rates_csv.parent_path() / "rates.json";
   const RatesJsonWorld recorded = rates_json_world(json_file);
-  if (recorded.found == RatesJsonWorld::Found::None) return "";
+  if (recorded.found == RatesJsonWorld::Found::None) {
+    return "no rates.json beside it records the world they were measured in (rates.csv copied "
+           "alone, or written by hand): that they come from this world is not checked";
+  }
   if (recorded.found == RatesJsonWorld::Found::Unreadable) {
     return json_file.string() +
            " beside it cannot be read: which world these rates come from "

@@ -22,9 +22,9 @@ struct RatesJsonWorld {
 RatesJsonWorld rates_json_world(const std::filesystem::path& json_file);
 
 // One sentence per reason to doubt that `rows` (read from `rates_csv`) belong to `world`: its
-// sibling rates.json records another world (config/world_difference.hpp) or cannot be read,
-// or the rows were written for the other model (Soysal's pairup/join against Bayindir's
-// creation/growth). Empty when nothing says so, as for rates copied without their rates.json.
+// sibling rates.json records another world (config/world_difference.hpp), records none (is
+// missing: rates copied without it) or cannot be read, or the rows were written for the other
+// model (Soysal's pairup/join against Bayindir's creation/growth).
 std::vector<std::string> rates_origin_doubts(const std::filesystem::path& rates_csv,
                                              const std::vector<RateRow>& rows,
                                              const WorldSpec& world);

@@ -225,6 +225,11 @@ TEST_F(OutputPaths, RatesOfAnotherWorldAreFedToAModelWithAWarning) {
   EXPECT_THAT(crossed.output, HasSubstr("rates.json beside it cannot be read"));
   EXPECT_THAT(crossed.output, HasSubstr("its rows were written for the soysal model, this "
                                         "world's is the bayindir model"));
+  // A rates.csv copied alone cannot be checked against the world: that is said too.
+  fs::remove(rates / "rates.json");
+  const Outcome alone = swarmagg("model worlds/examples/demo.yaml" + feed + (dir_ / "d").string());
+  EXPECT_EQ(alone.exit_code, 0) << alone.output;
+  EXPECT_THAT(alone.output, HasSubstr("no rates.json beside it records the world"));
 }
 
 // A run killed outright leaves hidden temporaries wherever it was writing; --force clears

@@ -71,8 +71,17 @@ TEST(RatesCsv, RejectsNegativeInfiniteOrFractionalQuantitiesNamingLineAndColumn)
       {"return,2,30,20,0.6,0.3,0.8,,,\n", "cannot exceed its exposure"},
       // Events over no exposure; the same term measured twice.
       {"initial,2,10,0,,,,,,\n", "expected an exposure above 0"},
-      {"creation,,121,400000,0.0003,0.00025,0.00036,bayindir,collision,3e-4\n",
+      {"creation,,121,400000,0.0003025,0.00025,0.00036,bayindir,collision,3e-4\n",
        "repeats term 'creation' of line 2 with another measurement"},
+      // A misspelt term, which every model would ignore; a rate that is not its counts; a
+      // rate from fewer events (or a fraction from fewer attempts) than any measurement gives.
+      {"creatoin,,120,400000,0.0003,0.00025,0.00036,,,\n",
+       "column 'term': unknown term 'creatoin'; did you mean 'creation'?"},
+      {"growth,3,120,400000,0.003,0.00025,0.00036,,,\n",
+       "column 'rate': got '0.003', expected events / exposure = 3e-04"},
+      {"growth,3,5,400000,0.0000125,0.00025,0.00036,,,\n",
+       "column 'rate': a growth rate from 5 events"},
+      {"return,2,3,6,0.5,0.2,0.8,,,\n", "a return rate from 6 LEAVE attempts"},
   };
   for (const auto& [row, column] : damaged) {
     try {
