@@ -90,7 +90,11 @@ void plot_against(const std::vector<std::string>& keys, std::size_t p,
         continue;
       }
       const PointNoa& point = *found->second;
-      csv += "," + csv_number(point.mean) + "," + csv_number(point.mean - point.half_width) + "," +
+      // A NOA is never negative, so neither is the interval's lower end: one below 0 (few
+      // replicates) fell outside the plot's y range, and gnuplot then left the whole bar out
+      // of the autoscaled range, cutting it at the top too.
+      csv += "," + csv_number(point.mean) + "," +
+             csv_number(std::max(0.0, point.mean - point.half_width)) + "," +
              csv_number(point.mean + point.half_width);
     }
     csv += "\n";
