@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/frame_output.hpp"
+#include "cli/stoppable_video.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_override.hpp"
 #include "core/errors.hpp"
@@ -72,7 +73,7 @@ int render_command(const RenderCommandOptions& options) {
               << every << " steps) in " << folder.string() << "/\n";
   }
   if (!options.video.empty()) {
-    assemble_video(folder, options.video, options.fps);
+    assemble_video_unless_stopped(folder, options.video, {.fps = options.fps});
     if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;

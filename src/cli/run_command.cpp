@@ -8,6 +8,7 @@
 #include "cli/follow_up_commands.hpp"
 #include "cli/frame_output.hpp"
 #include "cli/progress_option.hpp"
+#include "cli/stoppable_video.hpp"
 #include "cli/world_options.hpp"
 #include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
@@ -300,7 +301,7 @@ int run_command(const RunCommandOptions& options) {
               << trajectories->target().string() << "\n";
   }
   if (!options.video.empty()) {
-    assemble_video(frames, options.video, video_options(options));
+    assemble_video_unless_stopped(frames, options.video, video_options(options));
     if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;

@@ -3,12 +3,10 @@
 // recording (V) left in a folder.
 #include <CLI/CLI.hpp>
 #include <iostream>
-#include <stdexcept>
 #include <string>
 
 #include "cli/commands.hpp"
-#include "render/video.hpp"
-#include "run/interrupt.hpp"
+#include "cli/stoppable_video.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -30,15 +28,7 @@ void add_video_command(CLI::App& app, Action& action) {
   command->add_option("--fps", options->fps, "Frames per second (default 25)");
   command->callback([options, &action] {
     action = [options] {
-      // Ctrl-C reaches ffmpeg too; with the handlers this process outlives it, removes the
-      // half-made video and exits as interrupted (without them the temporary stayed).
-      install_interrupt_handlers();
-      try {
-        assemble_video(options->frames, options->output, options->fps);
-      } catch (const std::runtime_error&) {
-        throw_if_interrupted();
-        throw;
-      }
+      assemble_video_unless_stopped(options->frames, options->output, {.fps = options->fps});
       std::cout << "video " << options->output << "\n";
       return 0;
     };

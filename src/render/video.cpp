@@ -24,6 +24,7 @@
 extern char** environ;
 
 namespace swarmagg {
+
 namespace {
 
 bool executable(const std::filesystem::path& path) {
@@ -302,7 +303,14 @@ void assemble_video(const std::filesystem::path& frames_dir, const std::filesyst
   const auto temporary =
       output.parent_path() / ("." + output.stem().string() + "." + std::to_string(::getpid()) +
                               ".tmp" + output.extension().string());
+  const auto stop_if_requested = [&] {
+    if (!options.stop_requested || !options.stop_requested()) return;
+    discard_temporary(temporary);
+    throw std::runtime_error("stopped: " + output.string() + " not written");
+  };
+  stop_if_requested();
   make_video(program, options, frames_dir, temporary, output);
+  stop_if_requested();
   rename_or_discard(temporary, output);
 }
 

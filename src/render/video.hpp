@@ -3,6 +3,7 @@
 // run directly (posix_spawn, arguments passed as a list: no shell, no quoting issues). The
 // video is written beside the target and renamed over it when ffmpeg succeeds.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -12,6 +13,10 @@ struct VideoOptions {
   double fps = 25.0;
   int crf = 20;                   // H.264 quality for .mp4/.mkv/.mov/.m4v (0 best .. 51 worst)
   std::string ffmpeg = "ffmpeg";  // a name searched on PATH, or a path
+  // Whether the command was asked to stop (Ctrl-C), asked before ffmpeg starts and before its
+  // video replaces the output: a signal that came before ffmpeg was there to receive it, or
+  // after it had finished, still leaves no video (std::runtime_error instead).
+  std::function<bool()> stop_requested = {};
 };
 
 // The executable `name` resolves to (PATH search unless it contains '/'); empty if none.
@@ -26,7 +31,7 @@ std::filesystem::path check_video_request(const std::filesystem::path& output,
                                           const VideoOptions& options);
 // Throws InputError for a bad fps/crf, an output without extension or a directory without
 // frame_000000.png; std::runtime_error when ffmpeg is not installed (the message says how to
-// install it) or fails (the message carries ffmpeg's own error output).
+// install it), fails (the message carries ffmpeg's own error output) or a stop was requested.
 void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,
                     double fps);
 void assemble_video(const std::filesystem::path& frames_dir, const std::filesystem::path& output,

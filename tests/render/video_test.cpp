@@ -122,6 +122,24 @@ TEST(CheckVideoRequest, RefusesAKindOfVideoFfmpegCannotMake) {
   EXPECT_TRUE(std::filesystem::is_empty(scratch.path())) << "the probe left something";
 }
 
+// A stop asked for before ffmpeg started (it never got the signal) or after it finished
+// leaves no video and no temporary: the command ends as interrupted, with nothing written.
+TEST(AssembleVideo, AStopBeforeOrAfterFfmpegLeavesNoVideo) {
+  if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+  for (const int stop_at_ask : {1, 2}) {
+    testing::ScratchDir scratch("video-stopped");
+    const auto frames = scratch.path() / "frames";
+    record_frames(frames, 3);
+    int asked = 0;
+    VideoOptions options;
+    options.stop_requested = [&] { return ++asked == stop_at_ask; };
+    EXPECT_THROW(assemble_video(frames, scratch.path() / "out.mp4", options), std::runtime_error);
+    EXPECT_EQ(asked, stop_at_ask);
+    for (const auto& entry : std::filesystem::directory_iterator(scratch.path()))
+      EXPECT_EQ(entry.path().filename(), "frames") << "left " << entry.path();
+  }
+}
+
 TEST(AssembleVideo, MakesAnMp4FromTheFrames) {
   if (find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
   // A directory name with characters a shell or ffmpeg's pattern syntax would misread.
