@@ -105,6 +105,24 @@ TEST_F(SweepRunnerTest, ResumingSkipsCompleteRunsAndRedoesUnfinishedOrOutdatedOn
   }
 }
 
+// Threads and frame settings change none of a run's outputs: a base world given them later
+// keeps every run complete, and the sweep runs nothing again.
+TEST_F(SweepRunnerTest, ThreadsOrFrameSettingsInTheBaseWorldLeaveItsRunsComplete) {
+  run("out");
+  testing::write_file_text(
+      dir_ / "worlds" / "tiny.yaml",
+      std::string(testing::kTinyWorld) + "render: {width: 640, height: 480}\n");
+  std::string base = read_file_text(dir_ / "worlds" / "tiny.yaml");
+  base.replace(base.find("record_every: 50}"), 17, "record_every: 50, threads: 1}");
+  testing::write_file_text(dir_ / "worlds" / "tiny.yaml", base);
+  const SweepReport report = run("out");
+  EXPECT_EQ(report.already_complete, 12);
+  EXPECT_EQ(report.ran, 0);
+  base.replace(base.find("duration: 100"), 13, "duration: 90");
+  testing::write_file_text(dir_ / "worlds" / "tiny.yaml", base);
+  EXPECT_THROW(run("out"), InputError) << "a length that changes the results counts";
+}
+
 TEST_F(SweepRunnerTest, AFolderThatIsNotASweepsIsRefused) {
   std::filesystem::create_directories(dir_ / "a-run");
   testing::write_file_text(dir_ / "a-run" / "timeseries.csv", "replicate,step\n");
