@@ -9,16 +9,16 @@
 namespace swarmagg {
 
 StagedFrames::StagedFrames(const std::filesystem::path& folder)
-    : folder_(folder), staging_(temporary_beside(folder / "staged-frames")) {}
+    : folder_(folder), made_(folder), staging_(temporary_beside(folder / "staged-frames")) {}
 
 StagedFrames::~StagedFrames() {
   if (committed_) return;
   std::error_code ignored;
   std::filesystem::remove_all(staging_, ignored);
+  made_.remove_if_empty();
 }
 
 void StagedFrames::commit() {
-  std::filesystem::create_directories(folder_);  // a run that drew nothing made none
   std::set<std::filesystem::path> drawn;
   std::error_code none;
   if (std::filesystem::is_directory(staging_, none)) {

@@ -5,15 +5,19 @@
 // simulation has finished). Inside, not beside: the moves stay on one filesystem whatever the
 // frame folder is (a link, a mount), and need no write access to its parent. The hidden
 // folder is named as temporary_beside names files, so remove_stale_temporaries of the frame
-// folder removes a killed run's.
+// folder removes a killed run's. A frame folder made for the staging goes with it unless
+// committed, so that a stopped run leaves no empty folder to refuse the next one.
 #include <filesystem>
+
+#include "output/made_folders.hpp"
 
 namespace swarmagg {
 
 class StagedFrames {
  public:
   explicit StagedFrames(const std::filesystem::path& folder);
-  // Removes the staged frames unless committed.
+  // Makes the frame folder (and the folders above it) where missing.
+  // Removes the staged frames, and the folders made for them, unless committed.
   ~StagedFrames();
   StagedFrames(const StagedFrames&) = delete;
   StagedFrames& operator=(const StagedFrames&) = delete;
@@ -26,6 +30,7 @@ class StagedFrames {
 
  private:
   std::filesystem::path folder_;
+  MadeFolders made_;
   std::filesystem::path staging_;
   bool committed_ = false;
 };

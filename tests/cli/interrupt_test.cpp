@@ -233,6 +233,18 @@ TEST(Interrupt, SigtermStopsARunWithExitCode143AndLeavesNoPartialFile) {
   fs::remove_all(out);
 }
 
+// A first run drawing frames, stopped: neither its folder nor an empty frame folder stays to
+// make the same command refuse an "earlier run" next time.
+TEST(Interrupt, AStoppedFirstRunDrawingFramesLeavesNoFolder) {
+  const fs::path out = fresh_dir("first-frames");
+  auto arguments = long_run(out);
+  for (const char* extra : {"--render-every", "100", "--render-size", "64x64"})
+    arguments.push_back(extra);
+  expect_interrupted(interrupt(arguments, SIGINT, std::chrono::milliseconds(500)), 130);
+  EXPECT_FALSE(fs::exists(out)) << "left " << (fs::exists(out / "frames") ? "frames/" : "a folder");
+  fs::remove_all(out);
+}
+
 TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
   const fs::path out = fresh_dir("trajectories");
   auto arguments = long_run(out);
