@@ -27,6 +27,7 @@
 #include "rates/rates_json.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
+#include "run/partition_recording.hpp"
 #include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 
@@ -60,6 +61,12 @@ class RunOutput {
     if (!controller_rules(*spec_).records_partitions) {
       throw InputError("partitions: the world's controller (" + spec_->controller.type +
                        ") records no partitions; Soysal worlds do");
+    }
+    if (!records_partitions(*spec_)) {
+      throw InputError(
+          "partitions: recorded for Soysal worlds of at most 30 agents (the "
+          "partition model's largest); this one has " +
+          std::to_string(spec_->robots.count));
     }
     return partitions_csv(run_.result, spec_->steps());
   }

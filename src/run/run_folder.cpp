@@ -13,6 +13,7 @@
 #include "output/atomic_file.hpp"
 #include "output/timeseries_csv.hpp"
 #include "run/aggregate_summary.hpp"
+#include "run/partition_recording.hpp"
 #include "run/state_hash.hpp"
 #include "run/timeseries_spool.hpp"
 #include "swarmagg_version.hpp"
@@ -139,7 +140,7 @@ void write_run_folder(const WorldSpec& spec, const RunResult& result,
   } else {
     write_timeseries_csv(out / "timeseries.csv", result);
   }
-  if (controller_rules(spec).records_partitions) {
+  if (records_partitions(spec)) {
     write_file_atomic(out / "partitions.csv", partitions_csv(result, spec.steps()));
   }
   write_file_atomic(out / "summary.json", run_summary(spec, result, overrides).dump(2) + "\n");

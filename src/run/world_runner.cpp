@@ -8,6 +8,7 @@
 #include "observers/partition_tracker.hpp"
 #include "run/interrupt.hpp"
 #include "run/parallel_for.hpp"
+#include "run/partition_recording.hpp"
 #include "run/progress_line.hpp"
 #include "run/recorded_steps.hpp"
 #include "run/replicate.hpp"
@@ -65,7 +66,7 @@ ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserv
   outcome.index = index;
   outcome.seed = replicate.seed();
   const std::int64_t steps = spec.steps();
-  const bool partitions = replicate.rules().records_partitions;
+  const bool partitions = records_partitions(spec);
   PartitionTracker partition_tracker;
   const int n = spec.robots.count;
   if (!how.timeseries && how.keep_rows)

@@ -82,6 +82,24 @@ TEST(WorldRunner, OneLargeReplicateGivesTheSameOutputOnSeveralThreads) {
   EXPECT_EQ(csv_of(one), csv_of(three));
 }
 
+// Partitions are recorded where the partition model can hold them (30 agents); a larger
+// swarm's record grew with every step it ran, one part per agent, and no model read it.
+TEST(WorldRunner, PartitionsAreRecordedForSoysalWorldsTheModelCanHold) {
+  const testing::ScratchDir scratch("partitions");
+  for (const int agents : {30, 31}) {
+    const WorldSpec spec = load_world_text("arena: {width: 100, height: 100}\nrobots: {count: " +
+                                               std::to_string(agents) +
+                                               "}\ncontroller: {type: soysal}\n"
+                                               "run: {duration: 20, replicates: 1}\n",
+                                           "t");
+    const RunResult result = run_world(spec, RunOptions{});
+    const auto folder = scratch.path() / std::to_string(agents);
+    write_run_folder(spec, result, folder, {});
+    EXPECT_EQ(result.replicates.front().partition_steps.empty(), agents > 30) << agents;
+    EXPECT_EQ(std::filesystem::exists(folder / "partitions.csv"), agents <= 30) << agents;
+  }
+}
+
 TEST(WorldRunner, AnotherSeedGivesAnotherRun) {
   WorldSpec spec = full_model_world();
   const std::string first = csv_of(run_with_threads(spec, 2));
