@@ -10,8 +10,10 @@
 //
 // The centroid is the mean of the members' minimum-image displacements from one member,
 // so an aggregate must span less than half the arena's side (any aggregate of a world
-// where aggregation means anything does). Pairwise work is O(m^2) per aggregate: meant for
-// the recorded states and the attempts, not for every agent of every step.
+// where aggregation means anything does). An aggregate of 64 members or more finds each
+// member's fellows in a grid of its members (O(m log m), the same values bit for bit); a
+// smaller one compares every pair. Meant for the recorded states and the attempts, not for
+// every agent of every step.
 #include <span>
 #include <vector>
 

@@ -67,6 +67,38 @@ TEST(AggregateGeometry, ThePackOnTheTorusSeamHasTheSameShape) {
   EXPECT_NEAR(split.centroid.y, 99.5, 1e-9);
 }
 
+// Large aggregates find fellows in a grid of their members, small ones compare every pair:
+// both give the definition's values bit for bit. A pack of 127 (rings 6) with jittered
+// members, across the torus corner and inside a walled arena, plus a straggler 3.5 from its
+// nearest fellow (beyond the rim reach of 2.4, so beyond the grid's guarantee).
+TEST(AggregateGeometry, LargeAggregatesMeasureAsEveryPairWould) {
+  for (const Topology topology : {Topology::Torus, Topology::Walls}) {
+    Scene scene;
+    scene.arena = ArenaGeometry(100.0, 100.0, topology);
+    const double x = topology == Topology::Torus ? 1.0 : 50.0;
+    scene.add_hexagon(x, x, 6, 2.1);
+    for (std::size_t i = 0; i < scene.positions.size(); ++i) {
+      const double jitter = 0.05 * std::sin(7.0 * static_cast<double>(i));
+      scene.positions[i] = scene.arena.wrap(scene.positions[i] + Vec2{jitter, -jitter});
+    }
+    scene.positions.push_back(scene.arena.wrap(scene.positions.front() + Vec2{-3.5, 0.0}));
+    const std::vector<AgentId> members = all_agents(scene);
+    ASSERT_GE(members.size(), 64u);
+    const ShapeRules rules = rules_for(scene);
+    double nearest_sum = 0.0;
+    int rim = 0;
+    for (const AgentId i : members) {
+      const MemberSurroundings around = member_surroundings(i, members, scene.positions, rules);
+      nearest_sum += around.nearest_fellow;
+      rim += rules.rim.on_rim(around.fellows_within_reach);
+    }
+    const AggregateShape shape = measure_aggregate(members, scene.positions, rules);
+    EXPECT_EQ(shape.rim, rim);
+    EXPECT_EQ(shape.mean_member_spacing, nearest_sum / static_cast<double>(members.size()));
+    EXPECT_GT(rim, 30);  // the outer ring and the straggler, not every member
+  }
+}
+
 // A rim is relative to the spacing: the same pack at spacing 3 measured with the 2r rule
 // has no member with a fellow within 2.4, so all are rim.
 TEST(AggregateGeometry, RimFollowsTheSpacingParameter) {
