@@ -1,6 +1,7 @@
 #include "models/bayindir_rates.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "controllers/controller_registry.hpp"
@@ -38,9 +39,19 @@ std::vector<double> loss_probabilities(const WorldSpec& world) {
   return loss;
 }
 
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
 // Sufficient conditions for the expected-value equations to keep every count >= 0 and for
 // the stochastic draws to be probabilities: a searcher is consumed with total probability
-// <= 1 per step, and an aggregate grows or loses an agent with total probability <= 1.
+// <= 1 per step, and an aggregate grows or loses an agent with total probability <= 1 (the
+// chain has at most one event per searcher, and one per aggregate, in a step). Growth and
+// creation scale with engine.dt; the leave probability is per step and the periphery grows
+// with the aggregate, so the largest aggregates a world allows (N members) can exceed 1 at
+// any dt.
 void check_probabilities(const BayindirRates& rates) {
   const int n = rates.agents;
   const double per_searcher_creation = 2.0 * rates.creation.at(n) / std::max(1, n);
@@ -48,12 +59,27 @@ void check_probabilities(const BayindirRates& rates) {
   for (int m = 2; m <= n; ++m) {
     per_searcher_growth = std::max(per_searcher_growth, rates.growth[m] / m * n);
   }
-  bool ok = per_searcher_creation + per_searcher_growth <= 1.0;
-  for (int m = 2; m <= n; ++m) ok = ok && n * rates.growth[m] + rates.loss[m] <= 1.0;
-  if (!ok) {
+  if (per_searcher_creation + per_searcher_growth > 1.0) {
+    throw InputError("model: a searcher's creation and growth probabilities per step sum to " +
+                     number_text(per_searcher_creation + per_searcher_growth) +
+                     " (above 1) in this world; reduce engine.dt");
+  }
+  for (int m = 2; m <= n; ++m) {
+    if (rates.loss[m] <= 1.0) continue;
     throw InputError(
-        "model: the per-step event probabilities of the Bayindir model exceed 1 for this "
-        "world; reduce engine.dt");
+        "model: an aggregate of " + std::to_string(m) + " members (this world allows " +
+        std::to_string(n) + ") loses a member with probability " + number_text(rates.loss[m]) +
+        " per step (above 1): its rim leaves at controller.p_leave per member and step, which "
+        "engine.dt does not change, so the model cannot describe aggregates that large at this "
+        "p_leave (use fewer agents or a smaller p_leave)");
+  }
+  for (int m = 2; m <= n; ++m) {
+    if (n * rates.growth[m] + rates.loss[m] <= 1.0) continue;
+    throw InputError("model: an aggregate of " + std::to_string(m) +
+                     " members gains or loses a member with probability " +
+                     number_text(n * rates.growth[m] + rates.loss[m]) +
+                     " per step (above 1; losses " + number_text(rates.loss[m]) +
+                     "); reduce engine.dt");
   }
 }
 

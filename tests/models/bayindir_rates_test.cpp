@@ -53,5 +53,21 @@ TEST(BayindirRates, RejectsAStepTooCoarseForProbabilities) {
   EXPECT_THROW(bayindir_rates(world, CreationVariant::Collision), InputError);
 }
 
+// The rim of a large enough aggregate leaves with a probability above 1 per step whatever the
+// step: the message says so instead of asking for a smaller engine.dt, which cannot help.
+TEST(BayindirRates, SaysWhenNoStepCanHoldTheLargestAggregatesLosses) {
+  WorldSpec world = testing::bayindir_world(2000, 0.05, true, true);
+  world.engine.dt = 1e-4;
+  try {
+    bayindir_rates(world, CreationVariant::Collision);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("loses a member with probability"), std::string::npos) << message;
+    EXPECT_NE(message.find("engine.dt does not change"), std::string::npos) << message;
+    EXPECT_EQ(message.find("reduce engine.dt"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace swarmagg
