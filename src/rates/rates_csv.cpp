@@ -43,9 +43,10 @@ void check_rate_is_its_counts(const RateRow& row, const std::string& where,
   const double counted =
       fraction ? row.estimate.exposure : static_cast<double>(row.estimate.events);
   if (counted < static_cast<double>(kMinimumEvents)) {
-    throw InputError(where + ": a " + row.term + " rate from " + csv_number(counted) +
-                     (fraction ? " LEAVE attempts" : " events") + ", got '" + text +
-                     "': expected none below " + std::to_string(kMinimumEvents));
+    const std::string unit = fraction ? " LEAVE attempts" : " events";
+    throw InputError(where + ": a " + row.term + " rate from " + csv_number(counted) + unit +
+                     " (got '" + text + "'): a measurement needs " +
+                     std::to_string(kMinimumEvents) + unit + " or more; leave the cell empty");
   }
   const double expected = static_cast<double>(row.estimate.events) / row.estimate.exposure;
   if (std::abs(*row.estimate.rate - expected) > 1e-9 * expected) {
