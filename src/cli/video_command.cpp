@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/stoppable_video.hpp"
+#include "output/output_check.hpp"
 
 namespace swarmagg::cli {
 namespace {
@@ -28,6 +29,7 @@ void add_video_command(CLI::App& app, Action& action) {
   command->add_option("--fps", options->fps, "Frames per second (default 25)");
   command->callback([options, &action] {
     action = [options] {
+      check_output_file(options->output, "OUT");
       assemble_video_unless_stopped(options->frames, options->output, {.fps = options->fps});
       std::cout << "video " << options->output << "\n";
       return 0;

@@ -41,7 +41,7 @@ std::vector<double> loss_probabilities(const WorldSpec& world) {
 
 std::string number_text(double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
+  std::snprintf(text, sizeof text, "%.9g", value);
   return text;
 }
 

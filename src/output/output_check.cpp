@@ -69,6 +69,13 @@ void check_output_file(const std::filesystem::path& file, const std::string& opt
   if (file.empty() || !file.has_filename()) refuse(option, file, "expected a file name");
   std::error_code ignored;
   if (std::filesystem::is_directory(file, ignored)) refuse(option, file, "is a folder, not a file");
+  const std::filesystem::file_status status = std::filesystem::symlink_status(file, ignored);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+      !std::filesystem::is_symlink(status)) {
+    refuse(option, file,
+           "is a device, pipe or socket: the finished output would replace it; name a regular "
+           "file");
+  }
   const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
   if (const std::string why = folder_problem(folder); !why.empty())
     refuse(option, file, "its folder " + folder.string() + ": " + why);

@@ -1,6 +1,7 @@
 #include "output/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -28,6 +29,17 @@ TEST(AtomicFile, WritesTheWholeContent) {
   write_file_atomic(folder.path() / "a.csv", "x\n");
   EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"a.csv"});
   EXPECT_EQ(std::filesystem::file_size(folder.path() / "a.csv"), 2u);
+}
+
+// A rename replaces whatever the path names: a pipe (or, run as root, /dev/null) given as an
+// output would become a regular file. It is refused, and left as it was.
+TEST(AtomicFile, APipeOrDeviceIsNeverReplaced) {
+  const ScratchFolder folder("atomic-file");
+  const std::filesystem::path pipe = folder.path() / "out.csv";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0644), 0);
+  EXPECT_THROW(write_file_atomic(pipe, "x\n"), std::system_error);
+  EXPECT_TRUE(std::filesystem::is_fifo(pipe));
+  EXPECT_EQ(names_in(folder.path()), std::vector<std::string>{"out.csv"});  // no temporary
 }
 
 // Written in pieces: the target appears whole at commit(); a writer given up on (an error,

@@ -1,5 +1,8 @@
 """Errors arrive as exceptions: WorldError with the CLI's message, ValueError for arguments."""
 
+import os
+import stat
+
 import numpy as np
 import pytest
 
@@ -168,3 +171,21 @@ def test_a_file_the_system_refuses_is_an_os_error_and_leaves_nothing(demo, tmp_p
     with pytest.raises(IsADirectoryError, match="frame.png"):
         sa.Simulation(sa.load_world(str(demo))).render_png(folder)
     assert [p.name for p in tmp_path.iterdir()] == ["frame.png"]  # no temporary left
+
+
+def test_a_pipe_or_device_is_never_replaced_by_an_output(demo, tmp_path):
+    # Outputs are renamed into place: over a pipe, or /dev/null as root, that made the node a
+    # regular file.
+    pipe = tmp_path / "frame.png"
+    os.mkfifo(pipe)
+    with pytest.raises(OSError, match="device, pipe or socket"):
+        sa.Simulation(sa.load_world(str(demo))).render_png(pipe, size=(32, 32))
+    assert stat.S_ISFIFO(os.stat(pipe).st_mode)
+    assert [p.name for p in tmp_path.iterdir()] == ["frame.png"]  # no temporary left
+
+
+def test_bytes_that_are_not_utf8_in_a_message_are_shown_escaped(tmp_path):
+    path = tmp_path / "latin1.yaml"
+    path.write_bytes(b"name: caf\xe9\n")
+    with pytest.raises(sa.WorldError, match=r"latin1\.yaml:1:7: name: .*caf\\xe9"):
+        sa.load_world(path)
