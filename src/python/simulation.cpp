@@ -7,6 +7,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <array>
+#include <charconv>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,20 +36,35 @@ const int kFrameCompression = FrameRecorderOptions{}.compression_level;
 
 using Size = std::optional<std::pair<int, int>>;
 
+// A count or index as Python passes it: a bool or a float is a TypeError (True ran replicate
+// 1, or one step), a number outside [0, most] a ValueError naming the argument (pybind's own
+// conversion said only "incompatible arguments").
+std::int64_t whole_argument(const py::object& value, const std::string& name, std::int64_t most) {
+  const std::string text = yaml_index(value, name).Scalar();
+  std::int64_t number = -1;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (error != std::errc() || end != text.data() + text.size() || number < 0 || number > most) {
+    throw InputError(name + ": expected a whole number from 0 to " + std::to_string(most) +
+                     ", got " + text);
+  }
+  return number;
+}
+
 class Simulation {
  public:
   using BoundToPython = void;
 
-  Simulation(const World& world, std::optional<py::object> seed, int replicate,
+  Simulation(const World& world, std::optional<py::object> seed, const py::object& replicate,
              std::optional<std::string> engine)
       : world_(world_for(world, seed, engine)) {
-    if (replicate < 0)
-      throw InputError("replicate: expected an index >= 0, got " + std::to_string(replicate));
-    replicate_ = std::make_unique<Replicate>(*world_.spec, replicate);
+    const auto index =
+        static_cast<int>(whole_argument(replicate, "replicate", std::numeric_limits<int>::max()));
+    replicate_ = std::make_unique<Replicate>(*world_.spec, index);
   }
 
-  void step(std::int64_t steps) {
-    if (steps < 0) throw InputError("steps: expected a count >= 0, got " + std::to_string(steps));
+  void step(const py::object& count) {
+    const std::int64_t steps =
+        whole_argument(count, "steps", std::numeric_limits<std::int64_t>::max());
     for (std::int64_t k = 1; k <= steps; ++k) {
       replicate_->step();
       // After every step, as the docs promise: with no signal pending it reads one flag, and
@@ -160,7 +178,8 @@ void bind_simulation(py::module_& module) {
                   "sim.step_count steps: the same world, seed, replicate and steps give the "
                   "same state, bit for bit");
   simulation
-      .def(py::init<const World&, std::optional<py::object>, int, std::optional<std::string>>(),
+      .def(py::init<const World&, std::optional<py::object>, const py::object&,
+                    std::optional<std::string>>(),
            py::arg("world"), py::arg("seed") = py::none(), py::arg("replicate") = 0,
            py::arg("engine") = py::none())
       .def("step", &Simulation::step, py::arg("steps") = 1,

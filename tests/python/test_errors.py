@@ -80,6 +80,23 @@ def test_a_bool_or_float_for_a_whole_number_is_a_type_error(demo, arguments):
         sa.run(world, **arguments)
 
 
+def test_a_simulations_replicate_and_steps_are_whole_numbers(demo):
+    world = sa.load_world(str(demo))
+    for bad in (True, 1.0):  # True ran replicate 1, step(True) one step
+        with pytest.raises(TypeError):
+            sa.Simulation(world, replicate=bad)
+        with pytest.raises(TypeError):
+            sa.Simulation(world).step(bad)
+    for out_of_range in (-1, 2**31, 2**70):
+        with pytest.raises(ValueError, match="replicate: "):
+            sa.Simulation(world, replicate=out_of_range)
+    with pytest.raises(ValueError, match="steps: expected a whole number from 0"):
+        sa.Simulation(world).step(-1)
+    simulation = sa.Simulation(world, replicate=np.int64(2))
+    simulation.step(np.int32(3))
+    assert simulation.step_count == 3
+
+
 def test_a_number_beyond_64_bits_is_a_value_error_naming_the_argument(demo):
     world = sa.load_world(str(demo), set={"run.duration": 1})
     with pytest.raises(ValueError, match="replicates"):
