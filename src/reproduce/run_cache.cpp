@@ -11,6 +11,7 @@
 #include "run/earlier_run.hpp"
 #include "run/measured_run.hpp"
 #include "run/model_outputs.hpp"
+#include "run/partition_recording.hpp"
 #include "run/placement_sample.hpp"
 #include "run/run_folder.hpp"
 
@@ -31,13 +32,34 @@ bool holds_model_errors(const std::filesystem::path& summary_file) {
   return summary.is_object() && summary.contains("model_errors");
 }
 
+// The rows every replicate records (recorded_steps.hpp): steps 0, K, 2K, ... and the last.
+std::int64_t recorded_rows(const WorldSpec& spec) {
+  const std::int64_t steps = spec.steps();
+  return steps / spec.run.record_every + 1 + (steps % spec.run.record_every != 0);
+}
+
+// Every row of every replicate, and nothing cut short: a file shortened or edited by hand since
+// (the folder's other files then describe a run it no longer holds) is run again.
+bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries) {
+  std::ifstream in(timeseries, std::ios::binary);
+  if (!in) return false;
+  std::int64_t lines = 0;
+  char last = '\n';
+  for (char c; in.get(c);) {
+    lines += c == '\n';
+    last = c;
+  }
+  return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
+}
+
 }  // namespace
 
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder) {
   std::ifstream resolved(folder / "world.resolved.yaml");
-  if (!resolved || !std::filesystem::exists(folder / "timeseries.csv") ||
+  if (!resolved || !holds_every_row(spec, folder / "timeseries.csv") ||
       !std::filesystem::exists(folder / "model.csv") ||
-      !std::filesystem::exists(folder / "rates.csv")) {
+      !std::filesystem::exists(folder / "rates.csv") ||
+      (records_partitions(spec) && !std::filesystem::exists(folder / "partitions.csv"))) {
     return false;
   }
   // The whole text, comments included: its first line names the swarmagg version and commit

@@ -17,16 +17,21 @@ void write(const std::filesystem::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
+// 2 replicates of 10 steps recorded every 4th step: steps 0, 4, 8 and 10, so 9 lines.
+const char* kCached = "name: cached\nrun: {duration: 1, replicates: 2, record_every: 4}\n";
+const char* kCachedRows = "h\n0\n4\n8\n10\n0\n4\n8\n10\n";
+
 // A folder with every file run_is_reusable looks at, summary.json as given.
 void lay_out(const std::filesystem::path& folder, const WorldSpec& spec,
              const std::string& summary) {
   write(folder / "world.resolved.yaml", resolved_world_text(spec));
-  for (const char* file : {"timeseries.csv", "model.csv", "rates.csv"}) write(folder / file, "x\n");
+  write(folder / "timeseries.csv", kCachedRows);
+  for (const char* file : {"model.csv", "rates.csv", "partitions.csv"}) write(folder / file, "x\n");
   write(folder / "summary.json", summary);
 }
 
 TEST(RunCache, ReusesOnlyAFolderWhoseSummaryHoldsItsModelErrors) {
-  const WorldSpec spec = load_world_text("name: cached\n", "cached.yaml");
+  const WorldSpec spec = load_world_text(kCached, "cached.yaml");
   testing::ScratchDir dir("run-cache");
   lay_out(dir.path(), spec, R"({"model_errors": []})");
   EXPECT_TRUE(run_is_reusable(spec, dir.path()));
@@ -35,8 +40,9 @@ TEST(RunCache, ReusesOnlyAFolderWhoseSummaryHoldsItsModelErrors) {
 }
 
 TEST(RunCache, DoesNotReuseAnotherWorldsRun) {
-  const WorldSpec spec = load_world_text("name: cached\n", "cached.yaml");
-  const WorldSpec other = load_world_text("name: cached\nrobots: {count: 7}\n", "cached.yaml");
+  const WorldSpec spec = load_world_text(kCached, "cached.yaml");
+  const WorldSpec other =
+      load_world_text(std::string(kCached) + "robots: {count: 7}\n", "cached.yaml");
   testing::ScratchDir dir("run-cache-other");
   lay_out(dir.path(), other, R"({"model_errors": []})");
   EXPECT_FALSE(run_is_reusable(spec, dir.path()));
@@ -45,7 +51,7 @@ TEST(RunCache, DoesNotReuseAnotherWorldsRun) {
 // After an upgrade the same world file can give other outputs (an engine fix moves them): a
 // run another swarmagg version or commit made is run again.
 TEST(RunCache, DoesNotReuseARunAnotherBuildMade) {
-  const WorldSpec spec = load_world_text("name: cached\n", "cached.yaml");
+  const WorldSpec spec = load_world_text(kCached, "cached.yaml");
   testing::ScratchDir dir("run-cache-build");
   lay_out(dir.path(), spec, R"({"model_errors": []})");
   std::string text = resolved_world_text(spec);
@@ -53,6 +59,25 @@ TEST(RunCache, DoesNotReuseARunAnotherBuildMade) {
   text.replace(0, text.find('\n'), "# Resolved by swarmagg 0.0.1 (0123abc); every key is shown.");
   write(dir.path() / "world.resolved.yaml", text);
   EXPECT_FALSE(run_is_reusable(spec, dir.path()));
+}
+
+// A file cut short or edited since, or a Soysal run's missing partitions, is not the run the
+// folder's other files describe: REPORT.md read the shortened rows as the run.
+TEST(RunCache, DoesNotReuseAFolderMissingRowsOrPartitions) {
+  const WorldSpec spec = load_world_text(kCached, "cached.yaml");
+  testing::ScratchDir dir("run-cache-rows");
+  lay_out(dir.path(), spec, R"({"model_errors": []})");
+  ASSERT_TRUE(run_is_reusable(spec, dir.path()));
+  write(dir.path() / "timeseries.csv", "h\n0\n4\n8\n10\n0\n4\n");
+  EXPECT_FALSE(run_is_reusable(spec, dir.path()));
+  write(dir.path() / "timeseries.csv", std::string(kCachedRows) + "1");  // a line cut mid-way
+  EXPECT_FALSE(run_is_reusable(spec, dir.path()));
+  const WorldSpec soysal = load_world_text(
+      std::string(kCached) + "robots: {count: 5}\ncontroller: {type: soysal}\n", "cached.yaml");
+  lay_out(dir.path(), soysal, R"({"model_errors": []})");
+  ASSERT_TRUE(run_is_reusable(soysal, dir.path()));
+  std::filesystem::remove(dir.path() / "partitions.csv");
+  EXPECT_FALSE(run_is_reusable(soysal, dir.path()));
 }
 
 }  // namespace
