@@ -43,5 +43,25 @@ TEST(Claims, DifferencesWithinTheNoiseFloorDecideNothing) {
   EXPECT_EQ(claim(check_claims(supported), "Figs 20-25").verdict, "supported");
 }
 
+// --only can run part of a claim's worlds: Fig 7 over 1 of its 11 worlds, or V over one
+// experiment, read as the paper's verdicts. They are not checked.
+TEST(Claims, AClaimOverPartOfItsWorldsIsNotChecked) {
+  FigureResult fig7;
+  fig7.figure = {.id = "fig07-collision-count",
+                 .figures = "7",
+                 .title = "Fig 7",
+                 .kind = FigureKind::EncountersVsCount,
+                 .worlds = {"collision-count-100"}};
+  fig7.encounters = {
+      {.agents = 100, .speed = 1, .simulated = 0.19, .kinetic = 0.17, .paper_fit = 0.49}};
+  const std::vector<FigureResult> partial{fig7, soysal_world("soysal-5-constant", 0.6, 0.1, 0.01)};
+  const std::vector<ClaimCheck> claims = check_claims(partial);
+  for (const char* figures : {"Fig 7", "V"}) {
+    const ClaimCheck c = claim(claims, figures);
+    EXPECT_EQ(c.verdict, "not checked") << figures << ": " << c.evidence;
+    EXPECT_NE(c.evidence.find("of its"), std::string::npos) << c.evidence;
+  }
+}
+
 }  // namespace
 }  // namespace swarmagg
