@@ -123,6 +123,23 @@ std::vector<std::string> measured_run_differences(const std::string& there, cons
   return differences_of(there, here, true);
 }
 
+std::vector<std::string> changed_keys(const WorldSpec& original, const WorldSpec& changed) {
+  const auto all_keys = [](const WorldSpec& world) {
+    FlatKeys keys;
+    for (const auto& section : YAML::Load(world_to_yaml(world))) {
+      if (section.first.Scalar() != "name") flatten(section.second, section.first.Scalar(), keys);
+    }
+    return keys;
+  };
+  const FlatKeys before = all_keys(original);
+  std::vector<std::string> changes;
+  for (const auto& [key, value] : all_keys(changed)) {
+    const std::string* earlier = value_of(before, key);
+    if (!earlier || *earlier != value) changes.push_back(key + "=" + value);
+  }
+  return changes;
+}
+
 std::string differences_text(const std::vector<std::string>& differences) {
   std::string text;
   for (std::size_t i = 0; i < differences.size() && i < kDifferencesNamed; ++i)

@@ -22,6 +22,11 @@ std::vector<std::string> system_differences(const std::string& there, const Worl
 // batches of replicates).
 std::vector<std::string> measured_run_differences(const std::string& there, const WorldSpec& here);
 
+// Every key whose value differs between two worlds, as "key=value" with `changed`'s value, in
+// the order of the resolved world text; not `name` (a renamed copy runs the same experiment).
+// What a command changed in a world file's world, for summary.json's overrides.
+std::vector<std::string> changed_keys(const WorldSpec& original, const WorldSpec& changed);
+
 // The first few differences joined for a message ("robots.count: 60 there, 10 here; ...").
 std::string differences_text(const std::vector<std::string>& differences);
 

@@ -6,6 +6,9 @@
 #include <sstream>
 
 #include "analysis/model_errors.hpp"
+#include "config/world_difference.hpp"
+#include "config/world_loader.hpp"
+#include "core/errors.hpp"
 #include "rates/rate_outputs.hpp"
 #include "reproduce/paper_predictions.hpp"
 #include "run/earlier_run.hpp"
@@ -52,6 +55,16 @@ bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeser
   return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
 }
 
+// What reproduce changed in the paper world's file (--quick's length, --set, the compaction-off
+// arm, a timeout of the series), for summary.json's overrides as `run --set` records them.
+std::vector<std::string> changes_to_its_file(const WorldSpec& spec) {
+  try {
+    return changed_keys(load_world(spec.source), spec);
+  } catch (const InputError&) {
+    return {};  // not from a file (a test's world)
+  }
+}
+
 }  // namespace
 
 bool run_is_reusable(const WorldSpec& spec, const std::filesystem::path& folder) {
@@ -89,7 +102,7 @@ bool ensure_run(const WorldSpec& spec, const std::filesystem::path& folder,
   write_rate_outputs(spec, *run.rates, rows, folder, rate_plots);
   const MeasuredTerms terms = measured_terms(rows);
   write_model_outputs(spec, paper_predictions(spec, &terms, sample), folder);
-  write_run_folder(spec, run.result, folder);
+  write_run_folder(spec, run.result, folder, changes_to_its_file(spec));
   write_model_errors(folder);
   return false;
 }

@@ -88,3 +88,22 @@ TEST(WorldDifference, AMeasuredRunIsTheSameRunWhenItRunsTheSameSteps) {
 
 }  // namespace
 }  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// What reproduce records in summary.json as the overrides of a paper world: every key the
+// world as run changed, with the value it ran with, in the resolved text's order; not a name.
+TEST(ChangedKeys, NamesEveryChangedKeyWithItsNewValue) {
+  const WorldSpec file = load_world_text("name: paper\nrun: {duration: 1000}\n", "paper.yaml");
+  WorldSpec run = file;
+  EXPECT_TRUE(changed_keys(file, run).empty());
+  run.name = "paper-timeout-20";
+  run.run.duration = 40;
+  run.controller.compaction.enabled = false;
+  EXPECT_EQ(changed_keys(file, run),
+            (std::vector<std::string>{"controller.compaction.enabled=false", "run.duration=40"}));
+}
+
+}  // namespace
+}  // namespace swarmagg
