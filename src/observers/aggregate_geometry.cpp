@@ -84,8 +84,10 @@ class MemberGrid {
       return cell != o.cell ? cell < o.cell : member < o.member;
     }
   };
+  // Cells a millionth wider than the reach, so that rounding in cell_of cannot put two
+  // members within the reach two cells apart.
   static std::int64_t cells_across(double side, double reach) {
-    return static_cast<std::int64_t>(std::floor(side / reach));
+    return static_cast<std::int64_t>(std::floor(side / (reach * (1.0 + 1e-6))));
   }
   // The cell index `k` of a row or column of `count` cells: wrapped on a torus, -1 beyond a
   // wall.

@@ -15,8 +15,8 @@ namespace swarmagg {
 
 class StagedFrames {
  public:
-  explicit StagedFrames(const std::filesystem::path& folder);
   // Makes the frame folder (and the folders above it) where missing.
+  explicit StagedFrames(const std::filesystem::path& folder);
   // Removes the staged frames, and the folders made for them, unless committed.
   ~StagedFrames();
   StagedFrames(const StagedFrames&) = delete;

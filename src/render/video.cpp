@@ -24,7 +24,6 @@
 extern char** environ;
 
 namespace swarmagg {
-
 namespace {
 
 bool executable(const std::filesystem::path& path) {
