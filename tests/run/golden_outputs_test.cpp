@@ -54,14 +54,17 @@ const std::string kStillWaiting = "controller.compaction.enabled=false";
 // them by default since (leavers walking past other aggregates touch them).
 const std::string kHaltAtContact = "engine.contact=stop";
 
+// The kinematic worlds' hashes were recorded again (fourteenth session) when a pair that met
+// on the detection radius and closed in the next step stopped counting as a second encounter:
+// only the encounters column moved; every other column, partition and state hash stayed.
 std::vector<GoldenWorld> golden_worlds() {
   return {
       {"worlds/paper/full-0.0025.yaml",
        {"run.duration=400", kStillWaiting, kHaltAtContact},
-       0xf37f30048604f628ull},
+       0x6b2fba9b8707386eull},
       {"worlds/paper/creation-dissipation-0.001.yaml",
        {"run.duration=400", kStillWaiting, kHaltAtContact},
-       0xc01177127c91dcdcull},
+       0x270c4e7a1676748aull},
       {"worlds/paper/creation-growing-80.yaml",
        {"run.duration=400", kStillWaiting, kHaltAtContact},
        0xe96da553d397e1cbull},
@@ -79,7 +82,7 @@ std::vector<GoldenWorld> golden_worlds() {
       // Recorded again when a meeting came to stop both sides (docs/controllers.md), and (the
       // kinematic ones) when bodies pressed on came to go on and slow slides to halt, and when a
       // halt on what a body perceives came to last the step.
-      {"worlds/examples/compact.yaml", {"run.duration=200"}, 0x9306ebdeffba1d5aull},
+      {"worlds/examples/compact.yaml", {"run.duration=200"}, 0xda01c80b0dde73b4ull},
       {"worlds/examples/compact.yaml",
        {"run.duration=100", "engine.type=box2d"},
        0x6cf8ce91b4ca695eull},
@@ -87,7 +90,7 @@ std::vector<GoldenWorld> golden_worlds() {
       // again when slides slower than 1 % of v came to halt).
       {"worlds/examples/compact.yaml",
        {"run.duration=200", "arena.topology=walls", kStillWaiting},
-       0xb0bac38e549ee198ull},
+       0xa1198d954fa31f4dull},
   };
 }
 
@@ -143,26 +146,27 @@ std::uint64_t outputs_and_leaves_hash(const RunResult& result) {
 // Box2D's, jammed neighbours no longer holding leavers. The two full-0.0025 hashes were
 // recorded again when a halt on what a body perceives came to last the step (a body pressing
 // into a halted member closing up had started it again; a full reproduce moved within noise).
+// Recorded again with golden_worlds' (see there).
 std::vector<GoldenWorld> golden_compacted_paper_worlds() {
   return {
       {"worlds/paper/soysal-5-constant.yaml",
        {"run.duration=4000", "controller.p0=0.001"},
-       0x94c0caebee5c4e90ull},
+       0x016538f448b2bd77ull},
       {"worlds/paper/soysal-10-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0005"},
-       0xafab4f60ffed0a3cull},
+       0x5ab0b46fe15fbe80ull},
       {"worlds/paper/soysal-20-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0002"},
-       0xe8dcd20a9cbeddafull},
+       0xde747f5a035b0d4bull},
       {"worlds/paper/soysal-5-inverse.yaml",
        {"run.duration=3000", "controller.p0=0.002"},
-       0x9531138e57ca0b3cull},
-      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0xe2b4f54b69ee087bull},
-      {"worlds/paper/creation-growing-80.yaml", {"run.duration=500"}, 0x48a8f765e9432778ull},
-      {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0x5e97bec3c2ec1c06ull},
+       0xd5f705f2e7ba2212ull},
+      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0x6da7e7048b9cd37eull},
+      {"worlds/paper/creation-growing-80.yaml", {"run.duration=500"}, 0x1de6ad25b984705eull},
+      {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0x126ab49b294ff323ull},
       {"worlds/paper/full-0.0025.yaml",
        {"run.duration=300", "arena.topology=walls"},
-       0xbd84b8fc5efa1ac6ull},
+       0x1f51781adb16f5e6ull},
   };
 }
 

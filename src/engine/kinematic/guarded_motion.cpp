@@ -279,7 +279,12 @@ void GuardedMotion::schedule_events(std::uint32_t index, Vec2 offset, Vec2 relat
   };
   if (auto t =
           first_contact_time(offset, relative, limits_.detection_radius, from_time, limits_.dt)) {
-    push(*t, Kind::Perceive);
+    // pair.offset is the step's start offset. A pair that met last step was halted on the
+    // radius, where rounding may leave it an ulp outside: one that starts on it (to 1e-12)
+    // met already, and its next step inwards (as waiting members close up) is no new
+    // encounter; one farther out is.
+    const double met = limits_.detection_radius * (1.0 + 1e-12);
+    push(*t, norm2(pair.offset) <= met * met ? Kind::PerceiveAgain : Kind::Perceive);
   }
   if (!solid(pair.i, pair.j)) return;
   const double contact = limits_.contact_distance;
@@ -620,8 +625,8 @@ std::uint64_t GuardedMotion::resolve(std::span<const CandidatePair> pairs,
     }
     const std::uint32_t j = event.j();
     if (event.version_i != version_[i] || event.version_j != version_[j]) continue;
-    if (event.kind == Kind::Perceive) {
-      ++encounters;
+    if (event.kind == Kind::Perceive || event.kind == Kind::PerceiveAgain) {
+      encounters += event.kind == Kind::Perceive;
       met_agents_.push_back(i);
       met_agents_.push_back(j);
       const bool halt_i = halts_for(i, j);

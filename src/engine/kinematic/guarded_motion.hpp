@@ -114,7 +114,11 @@ class GuardedMotion {
                                         const MotionLimits& limits);
 
  private:
-  enum class Kind : std::uint8_t { Perceive, Contact, Wall };
+  // PerceiveAgain: a pair within the sensing radius when the step began that leaves it and comes
+  // back within the step (by a hair, as waiting members close up): the agents meet as at a
+  // Perceive, but it is no new encounter. It orders between Perceive and Contact, so every
+  // order among the other kinds is as it was (one pair has one current perceive event).
+  enum class Kind : std::uint8_t { Perceive, PerceiveAgain, Contact, Wall };
   // An event carries the ids it is ordered by and checked against, so that popping one reads
   // neither its pair nor (for a stale one) anything but the two versions.
   struct Event {
