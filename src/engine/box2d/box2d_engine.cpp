@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -352,10 +353,15 @@ void Box2DEngine::apply_forces(float h) {
     body->ApplyForceToCenter(force, true);
     const b2Vec2 v = inv_damping * (body->GetLinearVelocity() + h * force);
     if (h * h * v.LengthSquared() > kCap * kCap) {
-      throw std::runtime_error("Box2D engine: agent " + std::to_string(i) + " would move " +
-                               std::to_string(h * v.Length()) +
-                               " u in one Box2D step; Box2D would clamp it to " +
-                               std::to_string(b2_maxTranslation));
+      // The substeps were counted from the pushes at the step's start; more waiting bodies
+      // can come to push within it.
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "Box2D engine: agent %u would move %.3g u in one Box2D step, pushed by the "
+                    "waiting bodies around it (engine.box2d.repulsion_gain %g); Box2D would clamp "
+                    "it to %g u: lower engine.box2d.repulsion_gain or raise engine.box2d.substeps",
+                    i, h * v.Length(), repulsion_gain_, b2_maxTranslation);
+      throw std::runtime_error(text);
     }
   }
 }
