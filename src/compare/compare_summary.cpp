@@ -142,8 +142,10 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
       << format_text(" %.2f +- %.2f (95%% CI)\n", c.b.noa.mean, c.b.noa.half_width);
   out << "difference (" << c.b.label << " - " << c.a.label << ")"
       << format_text(" %.2f, 95%% CI [%.2f, %.2f]", w.difference, w.low, w.high)
-      << format_text(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value) << verdict(w.p_value)
-      << "\n";
+      // Two arms without spread have no degrees of freedom to print (it read "df 0.0").
+      << (w.dof > 0.0 ? format_text(" (Welch, df %.1f, p = %.3g): ", w.dof, w.p_value)
+                      : format_text(" (no spread in either arm, p = %.3g): ", w.p_value))
+      << verdict(w.p_value) << "\n";
   out << "KS final NOA:"
       << format_text(" D = %.3f, p = %.3g: ", c.ks_noa.statistic, c.ks_noa.p_value)
       << verdict(c.ks_noa.p_value) << "\n";
