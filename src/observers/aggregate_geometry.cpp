@@ -16,14 +16,23 @@ ShapeRules ShapeRules::for_world(const WorldSpec& spec) {
   return {spec.arena.geometry(), spec.robots.radius, RimRule::for_spacing(packing_spacing(spec))};
 }
 
+namespace {
+
+// One fellow member more in `around`, the member's surroundings so far.
+void add_fellow(MemberSurroundings& around, AgentId agent, AgentId fellow,
+                std::span<const Vec2> positions, const ShapeRules& rules) {
+  const double d = rules.arena.distance(positions[agent], positions[fellow]);
+  around.nearest_fellow = std::min(around.nearest_fellow, d);
+  around.fellows_within_reach += d <= rules.rim.reach;
+}
+
+}  // namespace
+
 MemberSurroundings member_surroundings(AgentId agent, std::span<const AgentId> members,
                                        std::span<const Vec2> positions, const ShapeRules& rules) {
   MemberSurroundings around{std::numeric_limits<double>::infinity(), 0};
   for (const AgentId j : members) {
-    if (j == agent) continue;
-    const double d = rules.arena.distance(positions[agent], positions[j]);
-    around.nearest_fellow = std::min(around.nearest_fellow, d);
-    around.fellows_within_reach += d <= rules.rim.reach;
+    if (j != agent) add_fellow(around, agent, j, positions, rules);
   }
   return around;
 }
@@ -66,10 +75,7 @@ class MemberGrid {
         const Entry first{r * columns_ + c, 0};
         for (auto e = std::lower_bound(entries_.begin(), entries_.end(), first);
              e != entries_.end() && e->cell == first.cell; ++e) {
-          if (e->member == agent) continue;
-          const double d = rules.arena.distance(positions[agent], positions[e->member]);
-          result.nearest_fellow = std::min(result.nearest_fellow, d);
-          result.fellows_within_reach += d <= rules.rim.reach;
+          if (e->member != agent) add_fellow(result, agent, e->member, positions, rules);
         }
       }
     }

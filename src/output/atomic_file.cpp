@@ -21,17 +21,15 @@ namespace {
   throw std::system_error(error, std::generic_category(), what + " " + target.string());
 }
 
-// A rename replaces whatever the target names: a device, pipe or socket given as an output
-// (`video FRAMES /dev/full`, run as root) would become a regular file, breaking the system's
-// device for everyone.
-bool special_file(const std::filesystem::path& target) {
+}  // namespace
+
+// `video FRAMES /dev/full`, run as root, made the system's device a regular file.
+bool is_special_file(const std::filesystem::path& path) {
   std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::symlink_status(target, error);
+  const std::filesystem::file_status status = std::filesystem::symlink_status(path, error);
   return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
          !std::filesystem::is_directory(status) && !std::filesystem::is_symlink(status);
 }
-
-}  // namespace
 
 void discard_temporary(const std::filesystem::path& temporary) {
   std::error_code ignored;
@@ -40,7 +38,7 @@ void discard_temporary(const std::filesystem::path& temporary) {
 
 void rename_or_discard(const std::filesystem::path& temporary,
                        const std::filesystem::path& target) {
-  if (special_file(target)) {
+  if (is_special_file(target)) {
     discard_temporary(temporary);
     throw std::system_error(std::make_error_code(std::errc::invalid_argument),
                             "cannot write " + target.string() +

@@ -42,6 +42,10 @@ class AtomicFileWriter {
 std::filesystem::path temporary_beside(const std::filesystem::path& target);
 void commit_temporary(const std::filesystem::path& temporary, const std::filesystem::path& target);
 
+// Whether `path` names a device, pipe or socket (not following a link): a rename over it would
+// replace the node with a regular file, so no output is ever written there.
+bool is_special_file(const std::filesystem::path& path);
+
 // Renames the complete `temporary` over `target` (no sync: for outputs cheap to make again,
 // such as frames). When the system refuses (a folder of that name, say), the temporary is
 // removed and std::system_error names `target`: a failed output leaves nothing behind.

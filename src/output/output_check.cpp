@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
 
 namespace swarmagg {
@@ -69,9 +70,7 @@ void check_output_file(const std::filesystem::path& file, const std::string& opt
   if (file.empty() || !file.has_filename()) refuse(option, file, "expected a file name");
   std::error_code ignored;
   if (std::filesystem::is_directory(file, ignored)) refuse(option, file, "is a folder, not a file");
-  const std::filesystem::file_status status = std::filesystem::symlink_status(file, ignored);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
-      !std::filesystem::is_symlink(status)) {
+  if (is_special_file(file)) {
     refuse(option, file,
            "is a device, pipe or socket: the finished output would replace it; name a regular "
            "file");
