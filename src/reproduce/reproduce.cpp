@@ -43,6 +43,24 @@ std::string no_world_selected(const std::vector<std::string>& patterns) {
 
 constexpr const char* kPlotFolder = "plots";  // under --out, beside REPORT.md
 
+// A folder reproduce may write into: missing, empty but for hidden temporaries, or a
+// reproduction's own, even one stopped early (its report, or the runs of either arm or of
+// the leave-timeout series, which a later reproduction reuses). Anything else (a run, a
+// comparison, a sweep, your own files) would get a report written among its files, and a
+// run's plots/ filled with figures that are not its own.
+void check_is_a_reproductions_folder(const std::filesystem::path& out) {
+  std::error_code missing;
+  for (const char* own : {"REPORT.md", "runs", "compaction-off", kTimeoutFolder}) {
+    if (std::filesystem::exists(out / own, missing)) return;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(out, missing)) {
+    if (entry.path().filename().string().starts_with(".")) continue;
+    throw InputError(out.string() + "/ holds files but no reproduction (no REPORT.md or runs/): " +
+                     "a reproduction would write its report and plots/ among them; use --out "
+                     "DIR for the reproduction");
+  }
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
@@ -330,6 +348,7 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
     throw InputError("--timeout-duration: the leave-timeout series is not selected; add --only " +
                      std::string(kTimeoutFolder) + " (--only picks worlds by name)");
   }
+  check_is_a_reproductions_folder(options.out);
   const std::vector<ReproduceJob> jobs = reproduce_jobs(options, figures, timeouts);
   const ThreadSplit split = split_threads(options.threads, jobs.size());
   RunOptions run_options;

@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "core/errors.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/png_size.hpp"
 
@@ -314,6 +316,30 @@ TEST_F(ReproduceTest, AChangedWorldIsRunAgain) {
   options.overrides.push_back("run.seed=99");
   EXPECT_EQ(reproduce(options, summary).figures.front().reused, 0);
   EXPECT_EQ(reproduce(options, summary).figures.front().reused, 1);
+}
+
+// A run's folder given as --out would get REPORT.md among its files and figures in its plots/.
+TEST(ReproduceFolder, AFolderHoldingSomethingElseIsRefusedUntouched) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() /
+                                    ("swarmagg_reproduce_foreign_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(out);
+  std::filesystem::create_directories(out / "plots");
+  std::ofstream(out / "world.resolved.yaml") << "name: mine\n";
+  std::ofstream(out / "plots" / "noa.gp") << "plot 1\n";
+  std::ostringstream summary;
+  try {
+    reproduce(reduced_options(out), summary);
+    ADD_FAILURE() << "reproduce wrote into a run's folder";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds files but no reproduction"), std::string::npos)
+        << e.what();
+  }
+  std::vector<std::string> held;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(out))
+    held.push_back(entry.path().lexically_relative(out).string());
+  std::sort(held.begin(), held.end());
+  EXPECT_EQ(held, (std::vector<std::string>{"plots", "plots/noa.gp", "world.resolved.yaml"}));
+  std::filesystem::remove_all(out);
 }
 
 }  // namespace
