@@ -305,6 +305,30 @@ void check_controller_reads(const WorldSpec& spec, const std::map<std::string, s
   }
 }
 
+// "--set arena.width=1, --seed run.seed=5": the overrides as given, for messages.
+std::string overrides_text(const std::vector<WorldOverride>& overrides) {
+  std::string text;
+  for (const WorldOverride& o : overrides) {
+    const std::string value = o.value.IsScalar() ? shortened(o.value.Scalar()) : "[...]";
+    text += (text.empty() ? "" : ", ") + o.origin + " " + o.key + "=" + value;
+  }
+  return text;
+}
+
+// The checks across keys. One that fails after overrides names them too: the file alone may
+// hold a valid world (`--set arena.width=1` made the arena too small for the file's radius).
+void check_with_overrides(WorldSpec& spec, bool count_given,
+                          const std::vector<WorldOverride>& overrides) {
+  try {
+    check_placement(spec, count_given);
+    check_world(spec);
+  } catch (const InputError& e) {
+    if (overrides.empty()) throw;
+    throw InputError(std::string(e.what()) + " (the world as changed by " +
+                     overrides_text(overrides) + ")");
+  }
+}
+
 WorldSpec load_document(const YAML::Node& document, const std::string& source,
                         const std::vector<WorldOverride>& overrides) {
   if (!document.IsDefined() || document.IsNull()) {
@@ -328,8 +352,7 @@ WorldSpec load_document(const YAML::Node& document, const std::string& source,
   if (!count_given && !spec.robots.placement.empty()) {
     spec.robots.count = static_cast<int>(spec.robots.placement.size());
   }
-  check_placement(spec, count_given);
-  check_world(spec);
+  check_with_overrides(spec, count_given, overrides);
   check_controller_reads(spec, reader.seen(), overrides);
   return spec;
 }

@@ -115,6 +115,16 @@ TEST(WorldLoader, CompactionDefaultsToTouchingSpacingAndFollowsTheRadius) {
       2.25);
 }
 
+// A check across keys that an override failed names the override: the file alone is valid.
+TEST(WorldLoaderErrors, ACheckFailedByAnOverrideNamesIt) {
+  EXPECT_EQ(error_of("arena: {width: 100, height: 100}\n"), "no error");
+  EXPECT_EQ(error_of("arena: {width: 100, height: 100}\n", {"arena.width=1"}),
+            "w.yaml: arena.width: the arena (1 x 100) must be wider and higher than twice the "
+            "sensing radius plus a body (the world as changed by --set arena.width=1)");
+  EXPECT_THAT(error_of("arena: {width: 1, height: 100}\n"),
+              ::testing::EndsWith("plus a body"));  // no override to name
+}
+
 // engine.contact: slide (the default) or stop, which the kinematic engine alone offers.
 TEST(WorldLoaderErrors, ContactResponseIsCheckedAgainstTheEngine) {
   EXPECT_THAT(error_of("engine: {contact: bounce}\n"),
