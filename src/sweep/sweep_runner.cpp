@@ -58,6 +58,19 @@ void run_into_folder(const SweepRun& run, const std::filesystem::path& folder, b
   }
 }
 
+// Replicates of one point running side by side share its folder, which only the first to
+// make it would remove when they are stopped, and only once empty, which it may not be yet:
+// the point folders left empty (and runs/, if all are) are removed once every run has stopped.
+void remove_empty_point_folders(const std::vector<SweepRun>& runs,
+                                const std::filesystem::path& out) {
+  for (const SweepRun& run : runs) {
+    std::error_code not_empty;
+    std::filesystem::remove(sweep_run_folder(out, run).parent_path(), not_empty);
+  }
+  std::error_code not_empty;
+  std::filesystem::remove(out / "runs", not_empty);
+}
+
 int thread_count(int requested, std::size_t runs) {
   const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::clamp(requested > 0 ? requested : machine, 1,
@@ -72,8 +85,13 @@ void run_parallel(const std::vector<SweepRun>& runs, const SweepOptions& options
     run_into_folder(runs[i], sweep_run_folder(options.out, runs[i]), options.plots, progress);
     progress.finished_unit();
   };
-  parallel_for(runs.size(), threads, run_one,
-               options.progress ? std::function<void()>([&] { progress.report(); }) : nullptr);
+  try {
+    parallel_for(runs.size(), threads, run_one,
+                 options.progress ? std::function<void()>([&] { progress.report(); }) : nullptr);
+  } catch (...) {
+    remove_empty_point_folders(runs, options.out);
+    throw;
+  }
   if (options.progress) progress.finish();
 }
 

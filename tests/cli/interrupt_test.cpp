@@ -459,4 +459,22 @@ TEST(Interrupt, SigintStopsASweepAndKeepsItsCompletedRuns) {
   fs::remove_all(dir);
 }
 
+// Two replicates of one point side by side share the point's folder; stopped, neither leaves
+// it (or runs/) behind empty.
+TEST(Interrupt, ASweepStoppedOnTwoThreadsLeavesNoEmptyFolder) {
+  const fs::path dir = fresh_dir("sweep-two-threads");
+  fs::create_directories(dir);
+  const fs::path sweep = dir / "sweep.yaml";
+  std::ofstream(sweep) << "name: side-by-side\nbase: " << kLongWorld
+                       << "\nparameters:\n  run.duration: [1000000]\nreplicates: 2\nseed: 1\n";
+  const fs::path out = dir / "out";
+  expect_interrupted(interrupt({SWARMAGG_BINARY, "sweep", sweep.string(), "--threads", "2",
+                                "--quiet", "--no-plots", "--out", out.string()},
+                               SIGINT, std::chrono::milliseconds(1000)),
+                     130);
+  EXPECT_FALSE(fs::exists(out / "runs")) << "the stopped runs left folders";
+  EXPECT_TRUE(fs::exists(out / "sweep.json")) << "the manifest, to resume from, stays";
+  fs::remove_all(dir);
+}
+
 }  // namespace
