@@ -174,9 +174,10 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
                                     const MeasuredRun& run, const std::filesystem::path& out) {
   // The models' start, for the rates' `initial` rows and the models (unless they refuse the
   // world: then it would be drawn for nothing, seconds for a large swarm).
-  const std::optional<PlacementSample> start = run.rates || (!options.no_model && predictable(spec))
-                                                   ? placement_start(spec, 0)
-                                                   : std::nullopt;
+  const bool wanted = run.rates || (!options.no_model && predictable(spec));
+  std::string no_start;  // why the start could not be sampled (the run's outputs stand)
+  const std::optional<PlacementSample> start =
+      wanted ? placement_start_or_reason(spec, 0, no_start) : std::nullopt;
   const PlacementSample* sample = start ? &*start : nullptr;
   RatesAndModel written;
   if (run.rates) {
@@ -190,9 +191,14 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
     written.measured = measured_terms(written.rows);
   }
   if (!options.no_model) {
-    options.progress.phase(options.quiet, spec.name, "computing the model predictions (model.csv)");
-    write_predictions(spec, out, written.measured ? &*written.measured : nullptr, sample,
-                      options.progress.shown(options.quiet));
+    if (!no_start.empty()) {
+      std::cerr << "note: no model.csv: " << no_start << "\n";
+    } else {
+      options.progress.phase(options.quiet, spec.name,
+                             "computing the model predictions (model.csv)");
+      write_predictions(spec, out, written.measured ? &*written.measured : nullptr, sample,
+                        options.progress.shown(options.quiet));
+    }
     write_model_errors(out);
   }
   return written;

@@ -44,8 +44,9 @@ class RunOutput {
       : spec_(world.spec),
         changes_(std::move(world.changes)),
         run_(std::move(run)),
-        start_(placement_start(*spec_, 0)) {
-    if (run_.rates) rate_rows_ = measured_rate_rows(*spec_, *run_.rates, start());
+        start_(placement_start_or_reason(*spec_, 0, no_start_)) {
+    if (run_.rates)
+      rate_rows_ = measured_rate_rows(*spec_, *run_.rates, start_ ? &*start_ : nullptr);
   }
 
   World world() const { return {spec_, changes_}; }
@@ -88,8 +89,12 @@ class RunOutput {
     return rate_rows_;
   }
 
-  // The models' start (run/placement_sample.hpp).
-  const PlacementSample* start() const { return start_ ? &*start_ : nullptr; }
+  // The models' start (run/placement_sample.hpp); the reason it could not be sampled, as the
+  // error of whatever needs it.
+  const PlacementSample* start() const {
+    if (!no_start_.empty()) throw InputError(no_start_);
+    return start_ ? &*start_ : nullptr;
+  }
 
   std::optional<MeasuredTerms> run_terms() const {
     if (!run_.rates) return std::nullopt;
@@ -112,6 +117,7 @@ class RunOutput {
   std::shared_ptr<const WorldSpec> spec_;
   std::vector<std::string> changes_;
   MeasuredRun run_;
+  std::string no_start_;  // declared before start_, which is initialised with it
   std::optional<PlacementSample> start_;
   std::vector<RateRow> rate_rows_;
 };

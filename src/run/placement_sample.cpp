@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 
+#include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "models/predictions.hpp"
 #include "run/interrupt.hpp"
@@ -92,7 +93,27 @@ PlacementSample sample_placements(const WorldSpec& world, int threads) {
 
 std::optional<PlacementSample> placement_start(const WorldSpec& world, int threads) {
   if (!starts_from_placement_sample(world)) return std::nullopt;
-  return sample_placements(world, resolve_threads(world, threads));
+  try {
+    return sample_placements(world, resolve_threads(world, threads));
+  } catch (const InputError& e) {
+    // A nearly full arena jams now and then: among the sample's hundreds or thousands of
+    // placements one may, though every replicate of a run placed its agents.
+    const int count =
+        world.robots.random_placement() ? placements_to_sample(world.robots.count) : 1;
+    throw InputError("the models' start (model.initial_state: placement) draws " +
+                     std::to_string(count) + " placements, and one failed: " + e.what() +
+                     "; set model.initial_state: placement_second_order or all_searching");
+  }
+}
+
+std::optional<PlacementSample> placement_start_or_reason(const WorldSpec& world, int threads,
+                                                         std::string& why) {
+  try {
+    return placement_start(world, threads);
+  } catch (const InputError& e) {
+    why = e.what();
+    return std::nullopt;
+  }
 }
 
 std::string placement_start_note(const PlacementSample& sample) {

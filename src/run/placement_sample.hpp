@@ -30,6 +30,12 @@ PlacementSample sample_placements(const WorldSpec& world, int threads);
 // The sample the world's models need (starts_from_placement_sample), or none.
 std::optional<PlacementSample> placement_start(const WorldSpec& world, int threads);
 
+// placement_start for a simulation that has already run: a start that cannot be sampled (one
+// of its placements jammed, in a nearly full arena) comes back empty with the reason in `why`
+// instead of throwing, so that the run's own outputs are kept.
+std::optional<PlacementSample> placement_start_or_reason(const WorldSpec& world, int threads,
+                                                         std::string& why);
+
 // One sentence for the user: where the models start, from how many placements.
 std::string placement_start_note(const PlacementSample& sample);
 

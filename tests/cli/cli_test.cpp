@@ -85,6 +85,24 @@ TEST(Cli, AWorldTheModelsRefuseStillRunsAndModelRefusesIt) {
   std::filesystem::remove_all(out);
 }
 
+// A nearly full walled arena: the run's replicate placed its agents, but one of the models'
+// thousands of sampled placements jams. The run keeps its outputs and notes the model's
+// absence (it exited 2 after simulating, with the placement's words only).
+TEST(Cli, AModelStartThatCannotBePlacedKeepsTheRun) {
+  const std::string out = ::testing::TempDir() + "swarmagg-jammed-start";
+  const Outcome ran = swarmagg::testing::run_swarmagg(
+      "run worlds/paper/full-0.0025.yaml --set arena.topology=walls --set arena.width=100 "
+      "--set arena.height=10.01 --set robots.count=150 --set run.duration=1 --replicates 1 "
+      "--no-plots --force --out " +
+      out);
+  EXPECT_EQ(ran.exit_code, 0) << ran.output;
+  EXPECT_THAT(ran.output, HasSubstr("note: no model.csv: the models' start"));
+  EXPECT_THAT(ran.output, HasSubstr("placement_second_order"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/timeseries.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/model.csv"));
+  std::filesystem::remove_all(out);
+}
+
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"run /nonexistent.yaml", "/nonexistent.yaml"},
