@@ -17,6 +17,7 @@
 #include "output/trajectory_layout.hpp"
 #include "output/trajectory_reader.hpp"
 #include "render/frame_recorder.hpp"
+#include "render/staged_frames.hpp"
 #include "render/video.hpp"
 #include "run/interrupt.hpp"
 
@@ -58,7 +59,10 @@ int render_command(const RenderCommandOptions& options) {
     check_video_request(options.video, VideoOptions{.fps = options.fps});
   }
   install_interrupt_handlers();
-  FrameRecorder recorder(spec, folder);
+  // Drawn aside and moved in once every frame is drawn: Ctrl-C or a failure leaves the frames
+  // already in the folder (the run's own, by default) as they were.
+  StagedFrames staged(folder);
+  FrameRecorder recorder(spec, staged.staging());
   TrajectoryRow row;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     if (steps[i] % every != 0) continue;
@@ -68,6 +72,7 @@ int render_command(const RenderCommandOptions& options) {
                                   row.aggregate, row.noa});
   }
   recorder.finish();
+  staged.commit();
   if (!options.quiet) {
     std::cout << recorder.frames_recorded() << " frames of replicate " << replicate << " (every "
               << every << " steps) in " << folder.string() << "/\n";

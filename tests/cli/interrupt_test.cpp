@@ -326,6 +326,38 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStepAndKeepsTheEarlierFrames) {
   fs::remove_all(out);
 }
 
+// `render` draws into the run's own frames/ by default: stopped part way, it leaves the
+// frames the run drew there as they were (it removed them, and left its partial ones).
+TEST(Interrupt, AStoppedRenderKeepsTheFramesAlreadyThere) {
+  const fs::path out = fresh_dir("render");
+  ASSERT_EQ(Child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
+                   "run.duration=30", "--trajectories", "1", "--render-every", "10",
+                   "--render-size", "64x64", "--quiet", "--no-plots", "--out", out.string()})
+                .wait(std::chrono::seconds(120))
+                .exit_code,
+            0);
+  const auto before = files_below(out / "frames");
+  ASSERT_EQ(before.size(), 31u);  // steps 0, 10, ..., 300
+  Child child({SWARMAGG_BINARY, "render", out.string(), "--every", "1", "--size", "1200x1200"});
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  const auto staged_frame = [&out] {
+    for (const auto& entry : fs::directory_iterator(out / "frames")) {
+      if (entry.path().filename().string().starts_with(".staged-frames.") &&
+          fs::exists(entry.path() / "frame_000002.png"))
+        return true;
+    }
+    return false;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!staged_frame() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  child.send(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+  EXPECT_EQ(files_below(out / "frames"), before);
+  fs::remove_all(out);
+}
+
 // Ctrl-C in a terminal reaches `video` and its ffmpeg alike: the half-made video goes, and the
 // command exits as interrupted (the hidden temporary stayed before).
 TEST(Interrupt, SigintStopsAVideoAndLeavesNoHalfMadeFile) {
