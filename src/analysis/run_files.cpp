@@ -4,6 +4,7 @@
 
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
+#include "run/recorded_steps.hpp"
 
 namespace swarmagg {
 namespace {
@@ -35,10 +36,28 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   run.timeseries = folder / "timeseries.csv";
   if (!std::filesystem::is_regular_file(run.timeseries))
     throw InputError("cannot read " + run.timeseries.string());
+  if (!holds_every_row(run.world, run.timeseries)) {
+    throw InputError(run.timeseries.string() + ": lacks rows of the run (" +
+                     std::to_string(run.world.run.replicates) + " replicates of " +
+                     std::to_string(recorded_rows(run.world)) +
+                     " rows each): cut short or edited since; run the world again");
+  }
   run.summary = read_json(folder / "summary.json");
   if (std::filesystem::exists(folder / "model.csv")) run.model = folder / "model.csv";
   run.has_partitions = std::filesystem::exists(folder / "partitions.csv");
   return run;
+}
+
+bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries) {
+  std::ifstream in(timeseries, std::ios::binary);
+  if (!in) return false;
+  std::int64_t lines = 0;
+  char last = '\n';
+  for (char c; in.get(c);) {
+    lines += c == '\n';
+    last = c;
+  }
+  return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
 }
 
 std::string run_title(const RunFiles& run) {

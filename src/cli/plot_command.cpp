@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "core/errors.hpp"
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
@@ -13,8 +14,23 @@ namespace {
 struct PlotCommandOptions {
   std::string folder;
   std::string out;
+  bool force = false;
   bool quiet = false;
 };
+
+// --out naming another run's or merged sweep's folder would replace its plots with these,
+// which read as its own.
+void refuse_anothers_plots(const std::filesystem::path& folder, const std::filesystem::path& out) {
+  std::error_code error;
+  if (std::filesystem::equivalent(folder, out, error)) return;
+  for (const auto& [marker, what] : {std::pair{"world.resolved.yaml", "a run"},
+                                     std::pair{kSweepSummaryFile, "a merged sweep"}}) {
+    if (!std::filesystem::exists(out / marker, error)) continue;
+    throw InputError("--out " + out.string() + "/ holds " + what + " (" + marker +
+                     "): its plots would be replaced by those of " + folder.string() +
+                     "; pass --force to write there anyway, or --out DIR");
+  }
+}
 
 // A merged sweep folder (sweep_summary.csv) gets the sweep's plots; any other folder must
 // hold a finished run.
@@ -22,7 +38,10 @@ int plot_command(const PlotCommandOptions& options) {
   const std::filesystem::path folder(options.folder);
   const std::filesystem::path out =
       options.out.empty() ? folder : std::filesystem::path(options.out);
-  if (!options.out.empty()) check_output_folder(out, "--out");
+  if (!options.out.empty()) {
+    check_output_folder(out, "--out");
+    if (!options.force) refuse_anothers_plots(folder, out);
+  }
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
   const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
   throw_if_interrupted();  // gnuplot's half-drawn plots are the interruption's
@@ -49,6 +68,8 @@ void add_plot_command(CLI::App& app, Action& action) {
       ->required();
   command->add_option("--out", options->out,
                       "Where the PNGs go (scripts and CSVs in <out>/plots/; default: the folder)");
+  command->add_flag("--force", options->force,
+                    "Write into an --out folder that holds another run or merged sweep");
   command->add_flag("--quiet", options->quiet, "Print nothing but errors");
   command->callback([options, &action] { action = [options] { return plot_command(*options); }; });
 }

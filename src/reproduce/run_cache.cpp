@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/model_errors.hpp"
+#include "analysis/run_files.hpp"
 #include "config/world_difference.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
@@ -33,26 +34,6 @@ bool holds_model_errors(const std::filesystem::path& summary_file) {
   std::ifstream in(summary_file);
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
   return summary.is_object() && summary.contains("model_errors");
-}
-
-// The rows every replicate records (recorded_steps.hpp): steps 0, K, 2K, ... and the last.
-std::int64_t recorded_rows(const WorldSpec& spec) {
-  const std::int64_t steps = spec.steps();
-  return steps / spec.run.record_every + 1 + (steps % spec.run.record_every != 0);
-}
-
-// Every row of every replicate, and nothing cut short: a file shortened or edited by hand since
-// (the folder's other files then describe a run it no longer holds) is run again.
-bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries) {
-  std::ifstream in(timeseries, std::ios::binary);
-  if (!in) return false;
-  std::int64_t lines = 0;
-  char last = '\n';
-  for (char c; in.get(c);) {
-    lines += c == '\n';
-    last = c;
-  }
-  return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
 }
 
 // What reproduce changed in the paper world's file (--quick's length, --set, the compaction-off

@@ -468,6 +468,13 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
   }
   EXPECT_GE(files, 6);  // a script and at least one CSV per plot
   EXPECT_EQ(swarmagg("plot " + temp_dir("plot-nothing").string()).exit_code, 2);
+  // A timeseries cut short at a line's end reads as whole: it would be drawn as the run.
+  const std::string whole = file_text(run / "timeseries.csv");
+  std::ofstream(run / "timeseries.csv", std::ios::trunc)
+      << whole.substr(0, whole.find('\n', whole.size() / 2) + 1);
+  const Outcome cut = swarmagg("plot " + run.string() + " --out " + redrawn.string());
+  EXPECT_EQ(cut.exit_code, 2) << cut.output;
+  EXPECT_THAT(cut.output, HasSubstr("timeseries.csv: lacks rows of the run"));
   std::filesystem::remove_all(run);
   std::filesystem::remove_all(redrawn);
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/cli_testing.hpp"
+#include "plot/gnuplot.hpp"
 
 namespace {
 
@@ -144,6 +145,23 @@ TEST_F(OutputPaths, ModelAndRatesRefuseARunOfAnotherWorldUnlessForced) {
       "--force --out " +
       out.string());
   EXPECT_EQ(forced.exit_code, 0) << forced.output;
+}
+
+// `plot A --out B`, B another run's folder: B's plots would be A's, read as B's own.
+TEST_F(OutputPaths, PlotRefusesToReplaceAnotherRunsPlotsUnlessForced) {
+  const std::string run = "run worlds/examples/demo.yaml --replicates 1 --quiet --no-plots ";
+  ASSERT_EQ(swarmagg(run + "--set run.duration=5 --out " + (dir_ / "a").string()).exit_code, 0);
+  ASSERT_EQ(swarmagg(run + "--set run.duration=9 --out " + (dir_ / "b").string()).exit_code, 0);
+  std::ofstream(dir_ / "b" / "noa.png") << "b's own plot\n";
+  const std::string plot = "plot " + (dir_ / "a").string() + " --quiet ";
+  expect_refused(swarmagg(plot + "--out " + (dir_ / "b").string()), "--out",
+                 "holds a run (world.resolved.yaml)");
+  EXPECT_EQ(swarmagg::testing::read_all(dir_ / "b" / "noa.png"), "b's own plot\n");
+  EXPECT_FALSE(fs::exists(dir_ / "b" / "plots"));
+  if (swarmagg::gnuplot_available()) {
+    EXPECT_EQ(swarmagg(plot + "--out " + (dir_ / "a").string()).exit_code, 0);  // its own
+    EXPECT_EQ(swarmagg(plot + "--out " + (dir_ / "b").string() + " --force").exit_code, 0);
+  }
 }
 
 // A folder `rates` wrote holds no run, but its rates.json says which world they were measured

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "analysis/csv_table.hpp"
@@ -201,7 +202,15 @@ TEST_F(RunPlotsTest, ADamagedTimeseriesOrModelCsvIsBadInputNamingItsLine) {
   for (const char* damaged : {"timeseries.csv", "model.csv"}) {
     const std::filesystem::path copy = root_ / (std::string("damaged-") + damaged);
     std::filesystem::copy(bayindir_, copy, std::filesystem::copy_options::recursive);
-    std::ofstream(copy / damaged, std::ios::app) << "0,1\n";
+    // The last row replaced, not one added: a timeseries.csv with a row too many or too few
+    // is refused before any line is read (holds_every_row).
+    std::string text;
+    {
+      std::ifstream in(copy / damaged);
+      text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    text.erase(text.rfind('\n', text.size() - 2) + 1);
+    std::ofstream(copy / damaged, std::ios::trunc) << text << "0,1\n";
     try {
       draw_run_plots(copy, copy, kSize);
       ADD_FAILURE() << damaged << " accepted";
