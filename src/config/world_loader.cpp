@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -399,6 +400,26 @@ void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride
   }
 }
 
+// Box2D keeps positions in single precision, which rounds every move to the spacing of floats
+// at the arena's far side: a move of k spacings comes out up to half a spacing long or short
+// (an arena 999,999 wide gave agents speeds from 0.77 to 1.26 v). A substep's move of at least
+// kBox2dMoveSpacings spacings keeps speeds within 1 %.
+void check_box2d_resolution(const WorldSpec& spec) {
+  constexpr double kBox2dMoveSpacings = 50.0;
+  const auto far = static_cast<float>(std::max(spec.arena.width, spec.arena.height));
+  const double spacing = std::nextafter(far, std::numeric_limits<float>::infinity()) - far;
+  const double move = spec.robots.speed * spec.engine.dt / std::max(1, spec.engine.box2d.substeps);
+  if (spec.robots.speed <= 0.0 || move >= kBox2dMoveSpacings * spacing) return;
+  impossible(spec, "engine.type",
+             "box2d keeps positions in single precision: in an arena " + format_number(far) +
+                 " wide a substep moves an agent " + format_number(move) +
+                 " (robots.speed * engine.dt / engine.box2d.substeps), " +
+                 format_number(move / spacing) + " times the spacing of positions there (" +
+                 format_number(spacing) + "), and needs " + format_number(kBox2dMoveSpacings) +
+                 " times to keep speeds within 1 %; use the kinematic engine, a smaller arena "
+                 "or a longer engine.dt");
+}
+
 void check_world(const WorldSpec& spec) {
   const auto& robots = spec.robots;
   const double s = robots.detection_radius;
@@ -417,11 +438,15 @@ void check_world(const WorldSpec& spec) {
                    "robots.radius = " + format_number(robots.radius) + ")");
   }
   const double min_side = std::min(spec.arena.width, spec.arena.height);
-  if (min_side < 2.0 * spec.sensing_radius() + 2.0 * robots.radius) {
+  const double smallest_side = 2.0 * spec.sensing_radius() + 2.0 * robots.radius;
+  if (min_side < smallest_side) {
     impossible(spec, spec.arena.width <= spec.arena.height ? "arena.width" : "arena.height",
                "the arena (" + format_number(spec.arena.width) + " x " +
-                   format_number(spec.arena.height) +
-                   ") must be wider and higher than twice the sensing radius plus a body");
+                   format_number(spec.arena.height) + ") must be at least " +
+                   format_number(smallest_side) +
+                   " wide and high: twice the largest sensing radius the controller reads (" +
+                   format_number(spec.sensing_radius()) + ") plus a body's diameter (" +
+                   format_number(2.0 * robots.radius) + ")");
   }
   // Random sequential placement jams near 55% coverage; beyond half the arena it fails.
   const double coverage =
@@ -459,6 +484,7 @@ void check_world(const WorldSpec& spec) {
                    " (its contact tolerance is 0.005 u); write the world's lengths in a smaller "
                    "unit, ideally one in which the radius is near 1");
   }
+  if (spec.engine.type == EngineType::Box2D) check_box2d_resolution(spec);
   // Box2D's solver always slides bodies along their contacts.
   if (spec.engine.type == EngineType::Box2D && spec.engine.contact == ContactResponse::Stop) {
     impossible(spec, "engine.contact",
