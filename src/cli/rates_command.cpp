@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "models/predictions.hpp"
 #include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
 #include "rates/rates_text.hpp"
@@ -52,6 +53,8 @@ int rates_command(const RatesCommandOptions& options) {
   write_rate_outputs(spec, *run.rates, rows, out);
   if (options.quiet) return 0;
   for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
+  // The ratios to the models' rates compare with models that assume what this world may not.
+  for (const std::string& caveat : world_caveats(spec)) std::cerr << "note: " << caveat << "\n";
   std::cout << spec.name << ": rates of " << spec.run.replicates << " replicates x " << spec.steps()
             << " steps in " << run.result.wall_seconds << " s; outputs in " << out.string()
             << "/\n";

@@ -104,15 +104,19 @@ bool predictable(const WorldSpec& spec) {
 }
 
 // A world the models cannot describe (say, a partition model of too many agents) still
-// keeps its simulation outputs: the run only notes why model.csv is missing.
+// keeps its simulation outputs: the run only notes why model.csv is missing. Where the world
+// departs from the models' assumptions (walls, say) the run says so beside the model's errors.
 void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
                        const MeasuredTerms* measured, const PlacementSample* sample,
-                       bool show_progress) {
+                       bool show_progress, bool quiet) {
   try {
     write_model_outputs(spec, pending_predictions(spec, measured, sample), out, show_progress);
   } catch (const InputError& e) {
     std::cerr << "note: no model.csv: " << e.what() << "\n";
+    return;
   }
+  if (quiet) return;
+  for (const std::string& caveat : world_caveats(spec)) std::cerr << "note: " << caveat << "\n";
 }
 
 // Plots are a view of the outputs, not an output the run can fail on: without gnuplot, or
@@ -197,7 +201,7 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
       options.progress.phase(options.quiet, spec.name,
                              "computing the model predictions (model.csv)");
       write_predictions(spec, out, written.measured ? &*written.measured : nullptr, sample,
-                        options.progress.shown(options.quiet));
+                        options.progress.shown(options.quiet), options.quiet);
     }
     write_model_errors(out);
   }

@@ -86,12 +86,16 @@ void check_predictable(const WorldSpec& world) {
   for (const CreationVariant variant : kCreationVariants) bayindir_rates(world, variant);
 }
 
-std::vector<std::string> model_caveats(const WorldSpec& world) {
+namespace {
+
+// `general`: also the caveats every world of its model family shares.
+std::vector<std::string> caveats_of(const WorldSpec& world, bool general) {
   std::vector<std::string> caveats;
   const ControllerSpec& controller = world.controller;
   const ControllerRules rules = controller_rules(world);
   if (rules.model == ModelFamily::None) return caveats;
   if (rules.model == ModelFamily::Encounters) {
+    if (!general) return caveats;
     caveats.push_back(
         "the encounter prediction assumes all N agents keep moving at speed v with uniform "
         "headings (collision_mode: ghost); in collision_mode: paper the leave runs after each "
@@ -117,7 +121,7 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
           "more): `placement` samples the first decision instead");
     }
   }
-  if (rules.leaves) {
+  if (rules.leaves && general) {
     caveats.push_back(
         "the models have no LEAVE timeout: an agent that leaves is counted as free at once "
         "(the `returns` variant discounts the leavers that come back; docs/models-returns.md)");
@@ -136,6 +140,16 @@ std::vector<std::string> model_caveats(const WorldSpec& world) {
         "the models assume agents spread uniformly over the arena area; walls are not modelled");
   }
   return caveats;
+}
+
+}  // namespace
+
+std::vector<std::string> model_caveats(const WorldSpec& world) {
+  return caveats_of(world, true);
+}
+
+std::vector<std::string> world_caveats(const WorldSpec& world) {
+  return caveats_of(world, false);
 }
 
 std::string prediction_summary(const VariantPrediction& prediction) {

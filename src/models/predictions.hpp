@@ -43,6 +43,9 @@ void check_predictable(const WorldSpec& world);
 
 // Where the world departs from the models' assumptions, one sentence each.
 std::vector<std::string> model_caveats(const WorldSpec& world);
+// model_caveats without those every world of its model family shares (no LEAVE timeout in the
+// models): what a run of this world should say beside its model errors.
+std::vector<std::string> world_caveats(const WorldSpec& world);
 
 // One line per variant: the final expected NOA and, for the partition model, the most
 // likely stationary partition.

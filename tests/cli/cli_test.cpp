@@ -103,6 +103,22 @@ TEST(Cli, AModelStartThatCannotBePlacedKeepsTheRun) {
   std::filesystem::remove_all(out);
 }
 
+// A run's model errors compare with models that assume a torus: a walled world says so, as
+// `model` does.
+TEST(Cli, AWalledRunNotesThatTheModelsHaveNoWalls) {
+  const std::string out = ::testing::TempDir() + "swarmagg-walled";
+  const std::string walled =
+      "worlds/examples/demo.yaml --set run.duration=5 --replicates 1 --force --out " + out;
+  const Outcome ran =
+      swarmagg::testing::run_swarmagg("run " + walled + " --no-plots --set arena.topology=walls");
+  EXPECT_EQ(ran.exit_code, 0) << ran.output;
+  EXPECT_THAT(ran.output, HasSubstr("note: the models assume agents spread uniformly over the "
+                                    "arena area; walls are not modelled"));
+  const Outcome torus = swarmagg::testing::run_swarmagg("run " + walled + " --no-plots");
+  EXPECT_THAT(torus.output, ::testing::Not(HasSubstr("walls are not modelled")));
+  std::filesystem::remove_all(out);
+}
+
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"run /nonexistent.yaml", "/nonexistent.yaml"},

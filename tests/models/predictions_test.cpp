@@ -101,6 +101,13 @@ TEST(Predictions, CaveatsNameDeparturesFromTheModelAssumptions) {
   world.controller.isolated_wait = IsolatedWait::Stay;
   world.arena.topology = Topology::Walls;
   EXPECT_EQ(model_caveats(world).size(), 2u);
+  // A world that leaves also gets the caveat every leaving world shares, which runs omit.
+  world.controller.p_leave = 0.01;
+  world.controller.leave = true;
+  const std::vector<std::string> caveats = model_caveats(world);
+  ASSERT_EQ(caveats.size(), 3u);
+  EXPECT_NE(caveats[0].find("no LEAVE timeout"), std::string::npos);
+  EXPECT_EQ(world_caveats(world), (std::vector<std::string>{caveats[1], caveats[2]}));
 }
 
 TEST(Predictions, TheSecondOrderStartIsFlaggedWhereAgentsStartCrowded) {
