@@ -58,8 +58,9 @@ std::string measured_start_note(const MeasuredTerms& terms, const std::string& r
   double noa = 0.0;
   for (const auto& [size, count] : terms.initial) noa += count;
   std::ostringstream text;
-  text << "the models start from the first decision measured in " << rates_csv << ": " << noa
-       << " aggregates (model.initial_state: measured)";
+  text << "from step 1 the models start where the first decision leaves the swarm, " << noa
+       << " aggregates: measured in " << rates_csv
+       << " (model.initial_state: measured); at step 0, as in the runs, no agent waits";
   return text.str();
 }
 

@@ -121,11 +121,14 @@ std::string placement_start_note(const PlacementSample& sample) {
   for (const double aggregates : sample.aggregates) noa += aggregates;
   char numbers[96];
   std::snprintf(numbers, sizeof numbers, "%.4g +- %.2g", noa, sample.noa_standard_error);
-  const std::string placements = sample.placements == 1
-                                     ? "of the given positions"
-                                     : "of " + std::to_string(sample.placements) + " placements";
-  return "the models start from the first decision " + placements + ": " + numbers +
-         " aggregates (model.initial_state: placement)";
+  const std::string placements =
+      sample.placements == 1
+          ? "the given positions"
+          : "the mean of " + std::to_string(sample.placements) +
+                " random placements drawn as the runs draw theirs";
+  return "from step 1 the models start where the first decision leaves the swarm, " +
+         std::string(numbers) + " aggregates: " + placements +
+         " (model.initial_state: placement); at step 0, as in the runs, no agent waits";
 }
 
 std::vector<PendingVariant> pending_world_predictions(const WorldSpec& world,
