@@ -32,6 +32,23 @@ void refuse_anothers_plots(const std::filesystem::path& folder, const std::files
   }
 }
 
+// A comparison's or an unmerged sweep's folder holds no run of its own: says what to plot.
+void refuse_folders_without_a_run(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (std::filesystem::exists(folder / "world.resolved.yaml", error)) return;
+  if (std::filesystem::exists(folder / "compare.json", error)) {
+    throw InputError(folder.string() + ": a comparison's folder; its runs are " +
+                     (folder / "kinematic").string() + " and " + (folder / "box2d").string() +
+                     " (plot either), and compare drew noa.png and final.png itself");
+  }
+  if (std::filesystem::exists(folder / "sweep.json", error)) {
+    throw InputError(folder.string() +
+                     ": a sweep's folder not merged yet (no sweep_summary.csv); run `swarmagg "
+                     "merge` on its shard folders (or let the sweep finish), then plot the merged "
+                     "folder, or plot one run in its runs/");
+  }
+}
+
 // A merged sweep folder (sweep_summary.csv) gets the sweep's plots; any other folder must
 // hold a finished run.
 int plot_command(const PlotCommandOptions& options) {
@@ -43,6 +60,7 @@ int plot_command(const PlotCommandOptions& options) {
     if (!options.force) refuse_anothers_plots(folder, out);
   }
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
+  if (!sweep) refuse_folders_without_a_run(folder);
   const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
   throw_if_interrupted();  // gnuplot's half-drawn plots are the interruption's
   for (const std::string& failure : outcome.failures) std::cerr << "swarmagg: " << failure << "\n";

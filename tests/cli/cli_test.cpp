@@ -491,6 +491,17 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
   const Outcome cut = swarmagg("plot " + run.string() + " --out " + redrawn.string());
   EXPECT_EQ(cut.exit_code, 2) << cut.output;
   EXPECT_THAT(cut.output, HasSubstr("timeseries.csv: lacks rows of the run"));
+  // A comparison's or an unmerged sweep's folder: what it is, and what to plot instead.
+  for (const auto& [marker, said] : {std::pair{"compare.json", "a comparison's folder"},
+                                     std::pair{"sweep.json", "a sweep's folder not merged yet"}}) {
+    const auto other = temp_dir(std::string("plot-") + marker);
+    std::filesystem::create_directories(other);
+    std::ofstream(other / marker) << "{}\n";
+    const Outcome refused = swarmagg("plot " + other.string());
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr(said));
+    std::filesystem::remove_all(other);
+  }
   std::filesystem::remove_all(run);
   std::filesystem::remove_all(redrawn);
 }
