@@ -454,7 +454,7 @@ void check_world(const WorldSpec& spec) {
   if (coverage > 0.5) {
     impossible(spec, "robots.count",
                std::to_string(robots.count) + " agents of radius " + format_number(robots.radius) +
-                   " cover " + format_number(std::round(coverage * 100.0)) +
+                   " cover " + format_number(std::ceil(coverage * 1000.0) / 10.0) +
                    "% of the arena; at most 50% can be placed without overlap");
   }
   const ControllerCatalogEntry& controller = catalog_entry(spec.controller.type);

@@ -19,10 +19,14 @@ constexpr int kAttemptsPerAgent = 100000;
 // small worlds (the paper's) as they were.
 constexpr std::size_t kSpatialNumberingFrom = 4096;
 
+// A position on the torus's far edge (x = width) is its near edge: given as such, so that
+// both engines and the first recorded row hold it inside [0, width) (the kinematic engine kept
+// x = width until the agent moved; Box2D wrapped it at once).
 InitialPlacement explicit_placement(const WorldSpec& spec) {
   InitialPlacement result;
+  const ArenaGeometry arena = spec.arena.geometry();
   for (const PlacedAgent& a : spec.robots.placement) {
-    result.positions.push_back({a.x, a.y});
+    result.positions.push_back(arena.wrap({a.x, a.y}));
     result.headings.push_back(from_angle(a.heading_deg * kDegree));
   }
   return result;

@@ -87,11 +87,11 @@ TEST(WorldRunner, OneLargeReplicateGivesTheSameOutputOnSeveralThreads) {
 TEST(WorldRunner, PartitionsAreRecordedForSoysalWorldsTheModelCanHold) {
   const testing::ScratchDir scratch("partitions");
   for (const int agents : {30, 31}) {
-    const WorldSpec spec = load_world_text("arena: {width: 100, height: 100}\nrobots: {count: " +
-                                               std::to_string(agents) +
-                                               "}\ncontroller: {type: soysal}\n"
-                                               "run: {duration: 20, replicates: 1}\n",
-                                           "t");
+    const WorldSpec spec = load_world_text(
+        "arena: {width: 100, height: 100}\nrobots: {count: " + std::to_string(agents) +
+            "}\ncontroller: {type: soysal}\n"
+            "run: {duration: 20, replicates: 1}\n",
+        "t");
     const RunResult result = run_world(spec, RunOptions{});
     const auto folder = scratch.path() / std::to_string(agents);
     write_run_folder(spec, result, folder, {});
@@ -154,6 +154,22 @@ double median_block_width(const std::vector<Vec2>& positions, std::size_t block)
   }
   std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
   return widths[widths.size() / 2];
+}
+
+// On a torus the far edge is the near edge: an agent given at x = width starts at x = 0 on both
+// engines (the kinematic engine recorded x = width until the agent moved).
+TEST(InitialPlacement, AGivenPositionOnTheTorusFarEdgeStartsOnItsNearEdge) {
+  const WorldSpec torus = load_world_text(
+      "arena: {width: 20, height: 20}\nrobots: {placement: [[20, 20, 0], [17.5, 20, 0]]}\n", "t");
+  const InitialPlacement placed = place_agents(torus, CounterRng::for_replicate(1, 0));
+  EXPECT_EQ(placed.positions[0], (Vec2{0.0, 0.0}));
+  EXPECT_EQ(placed.positions[1], (Vec2{17.5, 0.0}));
+  for (const char* engine : {"kinematic", "box2d"}) {
+    WorldSpec spec = torus;
+    spec.engine.type = std::string(engine) == "box2d" ? EngineType::Box2D : EngineType::Kinematic;
+    const Replicate replicate(spec, 0);
+    EXPECT_EQ(replicate.engine().positions()[0], (Vec2{0.0, 0.0})) << engine;
+  }
 }
 
 TEST(InitialPlacement, LargeSwarmsAreNumberedAlongSpaceSmallOnesByDraw) {
