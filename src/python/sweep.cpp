@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "output/output_check.hpp"
 #include "python/bindings.hpp"
 #include "python/errors.hpp"
 #include "python/interruptible.hpp"
@@ -27,6 +28,7 @@ py::dict sweep(const std::string& path, std::optional<std::string> out, int thre
   const SweepPlan plan = reading_file([&] { return load_sweep(path); });
   SweepOptions options;
   options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;
+  check_output_folder(options.out, out ? "out" : "the sweep folder");
   options.threads = threads;
   options.replace_outdated = force;
   MergeReport merged;

@@ -1,6 +1,7 @@
 """sweep(): the CLI's sweep, merged, as tidy frames."""
 
 import pandas as pd
+import pytest
 
 import swarmagg as sa
 
@@ -72,3 +73,11 @@ def test_a_sweeps_frames_load_after_the_caller_changes_folder(demo, tmp_path, mo
     monkeypatch.chdir("/")
     assert done.out == tmp_path / "relative"
     assert len(done.summary()) > 0
+
+
+def test_an_out_that_is_a_file_is_refused_by_name(demo, tmp_path):
+    path = write_sweep(tmp_path, demo)
+    (tmp_path / "afile").write_text("mine\n")
+    with pytest.raises(ValueError, match="out .*afile: is a file, not a folder"):
+        sa.sweep(path, out=tmp_path / "afile")
+    assert (tmp_path / "afile").read_text() == "mine\n"
