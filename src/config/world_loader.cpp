@@ -306,27 +306,36 @@ void check_controller_reads(const WorldSpec& spec, const std::map<std::string, s
   }
 }
 
-// "--set arena.width=1, --seed run.seed=5": the overrides as given, for messages.
-std::string overrides_text(const std::vector<WorldOverride>& overrides) {
+// "--set arena.width=1, --set arena.height=9": the overrides of the failed check's key block
+// (the key a check's message names, "source: arena.width: ...": the arena.* ones), as given.
+// Others (--threads, --seed) cannot have made it fail; none when the message names no key.
+std::string overrides_of_block(const std::vector<WorldOverride>& overrides,
+                               const std::string& message, const std::string& source) {
+  if (!message.starts_with(source + ": ")) return "";
+  const std::string key =
+      message.substr(source.size() + 2, message.find(':', source.size() + 2) - source.size() - 2);
+  const std::string block = key.substr(0, key.find('.')) + ".";
   std::string text;
   for (const WorldOverride& o : overrides) {
+    if (!o.key.starts_with(block)) continue;
     const std::string value = o.value.IsScalar() ? shortened(o.value.Scalar()) : "[...]";
     text += (text.empty() ? "" : ", ") + o.origin + " " + o.key + "=" + value;
   }
   return text;
 }
 
-// The checks across keys. One that fails after overrides names them too: the file alone may
-// hold a valid world (`--set arena.width=1` made the arena too small for the file's radius).
+// The checks across keys. One that fails after overrides of its key's block names them too:
+// the file alone may hold a valid world (`--set arena.width=1` made the arena too small for
+// the file's radius).
 void check_with_overrides(WorldSpec& spec, bool count_given,
                           const std::vector<WorldOverride>& overrides) {
   try {
     check_placement(spec, count_given);
     check_world(spec);
   } catch (const InputError& e) {
-    if (overrides.empty()) throw;
-    throw InputError(std::string(e.what()) + " (the world as changed by " +
-                     overrides_text(overrides) + ")");
+    const std::string changed = overrides_of_block(overrides, e.what(), spec.source);
+    if (changed.empty()) throw;
+    throw InputError(std::string(e.what()) + " (the world as changed by " + changed + ")");
   }
 }
 
