@@ -47,6 +47,8 @@ constexpr std::size_t kGridFrom = 64;
 // The members sorted into square-ish cells at least the rim reach wide: every fellow within
 // that reach of a member lies in the member's cell or one of the 8 around it (wrapped on a
 // torus), so those hold all the fellows it counts and, whenever one is that close, its nearest.
+}  // namespace
+
 class MemberGrid {
  public:
   // Empty (unusable) when the arena is fewer than 3 cells across: the 9 cells around a
@@ -114,7 +116,24 @@ class MemberGrid {
   std::vector<Entry> entries_;
 };
 
-}  // namespace
+RimCounter::RimCounter(std::span<const AgentId> members, std::span<const Vec2> positions,
+                       const ShapeRules& rules)
+    : members_(members), positions_(positions), rules_(rules) {
+  if (members.size() < kGridFrom) return;
+  grid_ = std::make_unique<MemberGrid>(members, positions, rules);
+  if (!grid_->usable()) grid_.reset();
+}
+
+RimCounter::~RimCounter() = default;
+
+// Every fellow within the reach lies in the 9 cells around the member, so the grid counts
+// them all (its nearest fellow, which measure_aggregate also needs, may lie beyond).
+bool RimCounter::on_rim(AgentId member) const {
+  const MemberSurroundings around = grid_
+                                        ? grid_->around(member, positions_, rules_)
+                                        : member_surroundings(member, members_, positions_, rules_);
+  return rules_.rim.on_rim(around.fellows_within_reach);
+}
 
 AggregateShape measure_aggregate(std::span<const AgentId> members, std::span<const Vec2> positions,
                                  const ShapeRules& rules) {

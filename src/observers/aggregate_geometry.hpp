@@ -14,6 +14,7 @@
 // member's fellows in a grid of its members (O(m log m), the same values bit for bit); a
 // smaller one compares every pair. Meant for the recorded states and the attempts, not for
 // every agent of every step.
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -59,6 +60,29 @@ struct MemberSurroundings {
 };
 MemberSurroundings member_surroundings(AgentId agent, std::span<const AgentId> members,
                                        std::span<const Vec2> positions, const ShapeRules& rules);
+
+class MemberGrid;  // aggregate_geometry.cpp
+
+// Which members of one aggregate stand on its rim, for many of them: from a grid of its members
+// when it has kGridFrom members or more (as measure_aggregate does), each answer the pairwise
+// scan's exactly; else by the scan. One attempt at a time scanned all m members: a packed
+// aggregate of 4 x 10^4 with a few dozen leavers a step spent most of the run there.
+class RimCounter {
+ public:
+  RimCounter(std::span<const AgentId> members, std::span<const Vec2> positions,
+             const ShapeRules& rules);
+  ~RimCounter();
+  RimCounter(const RimCounter&) = delete;
+  RimCounter& operator=(const RimCounter&) = delete;
+
+  bool on_rim(AgentId member) const;
+
+ private:
+  std::span<const AgentId> members_;
+  std::span<const Vec2> positions_;
+  const ShapeRules& rules_;
+  std::unique_ptr<MemberGrid> grid_;  // for kGridFrom members or more, when usable
+};
 
 // The shape of one aggregate of at least two members.
 AggregateShape measure_aggregate(std::span<const AgentId> members, std::span<const Vec2> positions,

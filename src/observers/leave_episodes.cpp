@@ -15,6 +15,9 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   // agents (one snapshot per decision that starts attempts), so that most runs never grow
   // them.
   former_.reserve(kFormerPerAgent * agents);
+  former_sets_.reserve(agents);  // one per open attempt at most
+  renumbered_.reserve(agents);
+  leavers_.reserve(agents);
   sizes_at_start_.reserve(agents);
   members_.reserve(agents);  // the largest aggregate's bound
 }
@@ -29,7 +32,8 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
   std::size_t kept = 0;
   for (OpenAttempt& attempt : open_) {
     if (advance(attempt, aggregates, neighbours, state)) {
-      dead_former_ += attempt.count;
+      FormerSet& former = former_sets_[attempt.former];
+      if (--former.users == 0) dead_former_ += former.count;
     } else {
       open_[kept++] = attempt;
     }
@@ -48,40 +52,49 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
 }
 
 // Every agent in an aggregate was waiting when the decision started, so one now leaving has
-// just gone WAIT -> LEAVE.
+// just gone WAIT -> LEAVE. The leavers of one aggregate are taken together: its members are
+// listed (and its rim found) once for all of them.
 void LeaveEpisodes::start_attempts(const AggregateTracker& aggregates,
                                    std::span<const Vec2> positions,
                                    std::span<const AgentState> state) {
+  leavers_.clear();
   for (const AgentId i : aggregates.aggregated_agents()) {
-    if (state[i] != AgentState::Leave) continue;
-    const std::int32_t aggregate = aggregates.aggregate_of()[i];
-    aggregates.members_of(i, members_);
-    const std::span<const AgentId> members = members_;
-    OpenAttempt attempt;
-    attempt.agent = i;
-    attempt.size = aggregates.sizes()[static_cast<std::size_t>(aggregate)];
-    attempt.rim =
-        rules_.rim.on_rim(member_surroundings(i, members, positions, rules_).fellows_within_reach);
-    attempt.start = decision_;
-    attempt.first = static_cast<std::uint32_t>(former_.size());
-    attempt.count = static_cast<std::uint32_t>(members.size() - 1);
-    for (const AgentId j : members) {
-      if (j != i) former_.push_back(j);
-    }
-    // One snapshot of the aggregate steps by size serves every attempt of this decision.
-    if (snapshot_decision_ != decision_) {
-      snapshot_decision_ = decision_;
-      snapshot_first_ = static_cast<std::uint32_t>(sizes_at_start_.size());
-      const auto steps = tally_.aggregate_steps_by_size.begin();
-      sizes_at_start_.insert(sizes_at_start_.end(), steps,
-                             steps + static_cast<std::ptrdiff_t>(sizes_seen_));
-    }
-    attempt.sizes_first = snapshot_first_;
-    attempt.sizes = static_cast<std::uint32_t>(sizes_seen_);
-    open_.push_back(attempt);
-    tally_.attempts.count(attempt.rim);
-    ++tally_.attempts_by_size[attempt.size];
+    if (state[i] == AgentState::Leave) leavers_.push_back({aggregates.aggregate_of()[i], i});
   }
+  if (leavers_.empty()) return;
+  // One snapshot of the aggregate steps by size serves every attempt of this decision.
+  snapshot_first_ = static_cast<std::uint32_t>(sizes_at_start_.size());
+  const auto steps = tally_.aggregate_steps_by_size.begin();
+  sizes_at_start_.insert(sizes_at_start_.end(), steps,
+                         steps + static_cast<std::ptrdiff_t>(sizes_seen_));
+  std::sort(leavers_.begin(), leavers_.end());
+  for (std::size_t k = 0; k < leavers_.size();) {
+    const std::int32_t aggregate = leavers_[k].aggregate;
+    aggregates.members_of(leavers_[k].agent, members_);
+    former_sets_.push_back({static_cast<std::uint32_t>(former_.size()),
+                            static_cast<std::uint32_t>(members_.size()), 0});
+    former_.insert(former_.end(), members_.begin(), members_.end());
+    const RimCounter rim(members_, positions, rules_);
+    const std::int32_t size = aggregates.sizes()[static_cast<std::size_t>(aggregate)];
+    for (; k < leavers_.size() && leavers_[k].aggregate == aggregate; ++k) {
+      start_attempt(leavers_[k].agent, size, rim.on_rim(leavers_[k].agent));
+    }
+  }
+}
+
+void LeaveEpisodes::start_attempt(AgentId agent, std::int32_t size, bool rim) {
+  OpenAttempt attempt;
+  attempt.agent = agent;
+  attempt.size = size;
+  attempt.rim = rim;
+  attempt.start = decision_;
+  attempt.former = static_cast<std::uint32_t>(former_sets_.size() - 1);
+  ++former_sets_.back().users;
+  attempt.sizes_first = snapshot_first_;
+  attempt.sizes = static_cast<std::uint32_t>(sizes_seen_);
+  open_.push_back(attempt);
+  tally_.attempts.count(rim);
+  ++tally_.attempts_by_size[size];
 }
 
 bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggregates,
@@ -107,13 +120,19 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
   return !in_time;
 }
 
+// The aggregate's members when the attempt started, the agent itself among them (which no
+// neighbour list holds, and holds_former_member passes over).
+std::span<const AgentId> LeaveEpisodes::former_members(const OpenAttempt& attempt) const {
+  const FormerSet& set = former_sets_[attempt.former];
+  return {former_.data() + set.first, set.count};
+}
+
 bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
                             std::span<const AgentState> state) const {
-  const auto former_begin = former_.begin() + attempt.first;
-  const auto former_end = former_begin + attempt.count;
+  const std::span<const AgentId> former = former_members(attempt);
   for (const Neighbour& nb : neighbours.of(attempt.agent)) {
     if (nb.distance > episodes_.escape_radius) break;  // nearest first
-    if (state[nb.id] == AgentState::Wait && std::binary_search(former_begin, former_end, nb.id))
+    if (state[nb.id] == AgentState::Wait && std::binary_search(former.begin(), former.end(), nb.id))
       return false;
   }
   return true;
@@ -121,9 +140,9 @@ bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& ne
 
 bool LeaveEpisodes::holds_former_member(const OpenAttempt& attempt, std::int32_t aggregate,
                                         const AggregateTracker& aggregates) const {
-  const auto former_begin = former_.begin() + attempt.first;
-  return std::any_of(former_begin, former_begin + attempt.count,
-                     [&](AgentId j) { return aggregates.aggregate_of()[j] == aggregate; });
+  return std::ranges::any_of(former_members(attempt), [&](AgentId j) {
+    return j != attempt.agent && aggregates.aggregate_of()[j] == aggregate;
+  });
 }
 
 // The exposure spent away: the aggregate steps by size counted since the attempt started
@@ -141,18 +160,31 @@ void LeaveEpisodes::count_return(const OpenAttempt& attempt, std::int32_t joined
   }
 }
 
-// In place: open attempts keep the order they started in, so their ranges lie in
-// increasing order and each moves down, never onto a range still to be moved.
-// Attempts of one decision share a snapshot: it moves once, for the first of them.
+// In place: former sets and snapshots lie in the order they were made, so each live one moves
+// down, never onto one still to be moved. Open attempts keep the order they started in, so the
+// attempts of one decision, which share a snapshot, are neighbours: it moves once, for the
+// first of them.
 void LeaveEpisodes::compact() {
-  std::size_t former_end = 0, sizes_end = 0;
+  std::size_t former_end = 0;
+  renumbered_.resize(former_sets_.size());
+  std::uint32_t kept = 0;
+  for (std::size_t s = 0; s < former_sets_.size(); ++s) {
+    FormerSet set = former_sets_[s];
+    if (set.users == 0) continue;
+    std::copy(former_.begin() + set.first, former_.begin() + set.first + set.count,
+              former_.begin() + static_cast<std::ptrdiff_t>(former_end));
+    set.first = static_cast<std::uint32_t>(former_end);
+    former_end += set.count;
+    former_sets_[kept] = set;
+    renumbered_[s] = kept++;
+  }
+  former_sets_.resize(kept);
+  former_.resize(former_end);
+  dead_former_ = 0;
+  std::size_t sizes_end = 0;
   std::uint32_t moved_from = std::numeric_limits<std::uint32_t>::max(), moved_to = 0;
   for (OpenAttempt& attempt : open_) {
-    const auto members = former_.begin() + attempt.first;
-    std::copy(members, members + attempt.count,
-              former_.begin() + static_cast<std::ptrdiff_t>(former_end));
-    attempt.first = static_cast<std::uint32_t>(former_end);
-    former_end += attempt.count;
+    attempt.former = renumbered_[attempt.former];
     if (attempt.sizes_first != moved_from) {
       moved_from = attempt.sizes_first;
       moved_to = static_cast<std::uint32_t>(sizes_end);
@@ -163,11 +195,7 @@ void LeaveEpisodes::compact() {
     }
     attempt.sizes_first = moved_to;
   }
-  former_.resize(former_end);
   sizes_at_start_.resize(sizes_end);
-  dead_former_ = 0;
-  // The snapshot of this decision (if any) moved: attempts that start later take a new one.
-  snapshot_decision_ = -1;
 }
 
 }  // namespace swarmagg
