@@ -1,5 +1,7 @@
 #include "run/interrupt.hpp"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <csignal>
 
@@ -9,8 +11,18 @@ namespace {
 std::atomic<int> received{0};
 thread_local const std::atomic<int>* scoped_request = nullptr;
 
+// The first signal asks the work to stop where it checks (between steps, runs, figures). A
+// second one stops the process at once: a controller stuck in a loop never reaches a check.
+// Outputs are renamed into place, so none is left half-written; only hidden temporaries stay,
+// which the next command writing there removes. Only async-signal-safe calls here.
 extern "C" void on_signal(int signal_number) {
-  received.store(signal_number);
+  if (received.exchange(signal_number) == 0) return;
+  constexpr char kMessage[] = "\nswarmagg: stopped at once (a second signal)\n";
+  if (::write(STDERR_FILENO, kMessage, sizeof kMessage - 1) < 0) {
+    // Nothing to do: the process stops either way.
+  }
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
 }
 
 }  // namespace

@@ -1,8 +1,13 @@
 #include "run/replicate.hpp"
 
 #include <cmath>
+#include <new>
+#include <stdexcept>
 
+#include "control_interface/command_check.hpp"
+#include "core/errors.hpp"
 #include "run/initial_placement.hpp"
+#include "run/interrupt.hpp"
 #include "run/invariants.hpp"
 
 namespace swarmagg {
@@ -39,6 +44,38 @@ Replicate::Replicate(const WorldSpec& spec, int index)
 
 Replicate::~Replicate() = default;
 
+// "controller 'timer' (replicate 0, step 5) ": where a controller's error came from.
+std::string Replicate::controller_context() const {
+  return "controller '" + spec_.controller.type + "' (replicate " + std::to_string(index_) +
+         ", step " + std::to_string(step_) + ") ";
+}
+
+// A controller is the user's code: what it throws, and a swarm it resized, are reported naming
+// it and the step (a resized swarm crashed later, or failed with the standard library's words).
+void Replicate::decide(const ControllerInput& input) {
+  const std::size_t n = commands_.size();
+  try {
+    controller_->decide(input, swarm_, rng_, commands_, events_);
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const InputError& e) {
+    throw InputError(controller_context() + "failed: " + e.what());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(controller_context() + "failed: " + e.what());
+  } catch (...) {
+    throw std::runtime_error(controller_context() + "threw something that is not a std::exception");
+  }
+  const bool same = swarm_.state.size() == n && swarm_.heading.size() == n &&
+                    swarm_.leave_time_left.size() == n && swarm_.partner.size() == n;
+  if (!same) {
+    throw std::runtime_error(controller_context() +
+                             "changed the number of entries of the swarm's state (" +
+                             std::to_string(n) + " agents): a controller keeps one per agent");
+  }
+}
+
 void Replicate::update_aggregates() {
   aggregates_.update(
       engine_->neighbours(), swarm_, spec_.robots.detection_radius,
@@ -48,11 +85,15 @@ void Replicate::update_aggregates() {
 void Replicate::step() {
   const ControllerInput input{step_, engine_->neighbours(), engine_->reflections(),
                               aggregates_.facts(), growths_by_size_};
-  controller_->decide(input, swarm_, rng_, commands_, events_);
+  decide(input);
   leave_episodes_.observe_decision(aggregates_, engine_->neighbours(), engine_->positions(),
                                    swarm_.state);
   write_signals(swarm_.state, signals_);  // an agent displays its state
-  events_.encounters += engine_->step(commands_, signals_).encounters;
+  try {
+    events_.encounters += engine_->step(commands_, signals_).encounters;
+  } catch (const BadCommand& e) {
+    throw std::runtime_error(controller_context() + e.what());
+  }
   ++step_;
   update_aggregates();
   if (checking_) check_invariants(*this);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "config/world_spec.hpp"
@@ -59,6 +60,8 @@ class Replicate {
 
  private:
   void update_aggregates();
+  void decide(const ControllerInput& input);
+  std::string controller_context() const;
 
   const WorldSpec& spec_;
   int index_;

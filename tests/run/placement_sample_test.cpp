@@ -115,7 +115,7 @@ TEST(PlacementSample, GivenPositionsAreOnePlacementWithACertainFirstDecision) {
   EXPECT_EQ(sample.placements, 1);
   EXPECT_EQ(sample.noa_standard_error, 0.0);
   EXPECT_EQ(sample.aggregates, (std::vector<double>{0, 0, 1, 1, 0, 0}));
-  EXPECT_NE(placement_start_note(sample).find("of the given positions"), std::string::npos);
+  EXPECT_NE(placement_start_note(sample).find("aggregates: the given positions"), std::string::npos);
 }
 
 TEST(PlacementSample, IsTakenOnlyWhereTheModelsStartFromIt) {

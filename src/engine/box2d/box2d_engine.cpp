@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "control_interface/command_check.hpp"
 #include "core/errors.hpp"
 #include "engine/box2d/contact_rules.hpp"
 #include "engine/box2d/fixture_tags.hpp"
@@ -106,6 +107,7 @@ class Box2DEngine final : public Engine {
 
   ArenaGeometry geometry_;
   double dt_;
+  double fastest_command2_;  // the squared speed limit of commands (command_check.hpp)
   double detection_radius_;
   double sensing_radius_;
   double repulsion_gain_;
@@ -196,6 +198,7 @@ BodyShapes shapes_for(const WorldSpec& spec) {
 Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
     : geometry_(spec.arena.geometry()),
       dt_(spec.engine.dt),
+      fastest_command2_(fastest_command_speed2(geometry_, dt_)),
       detection_radius_(spec.robots.detection_radius),
       sensing_radius_(std::max(spec.sensing_radius(), spec.robots.detection_radius)),
       repulsion_gain_(spec.engine.box2d.repulsion_gain),
@@ -324,7 +327,13 @@ void Box2DEngine::compute_repulsion() {
 
 int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
   double fastest2 = 0.0;
-  for (const MotionCommand& c : commands) fastest2 = std::max(fastest2, norm2(c.velocity));
+  bool within = true;
+  for (const MotionCommand& c : commands) {
+    const double speed2 = norm2(c.velocity);
+    fastest2 = std::max(fastest2, speed2);
+    within &= command_within(speed2, fastest_command2_);
+  }
+  if (!within) refuse_bad_command(commands, fastest_command2_, dt_);
   double pushed2 = 0.0;
   for (const AgentId i : forced_) {
     pushed2 = std::max(pushed2, norm2(commands[i].velocity + forces_[i] * dt_));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "control_interface/command_check.hpp"
 #include "core/agent_array.hpp"
 #include "engine/kinematic/guarded_motion.hpp"
 #include "engine/kinematic/sleeping_islands.hpp"
@@ -20,6 +21,7 @@ struct CommandSummary {
   double fastest = 0.0;    // largest commanded speed
   bool guarded = false;    // some agent may halt (halt_on or blocked_by bits)
   std::size_t moving = 0;  // agents commanded to move
+  bool within = true;      // every speed finite and within the limit (command_check.hpp)
 };
 
 bool zero_velocity(Vec2 v) {
@@ -39,10 +41,11 @@ constexpr std::size_t kBentAhead = 16;
 
 // Two running maxima (even and odd agents) keep two comparisons in flight; the maximum of
 // exact values does not depend on the order it is taken in.
-CommandSummary summarise(std::span<const MotionCommand> commands) {
+CommandSummary summarise(std::span<const MotionCommand> commands, double fastest2) {
   double even2 = 0.0, odd2 = 0.0;
   SignalMask guards = 0;
   std::size_t moving = 0;
+  bool within = true;
   const MotionCommand* c = commands.data();
   const std::size_t n = commands.size();
   std::size_t i = 0;
@@ -50,15 +53,17 @@ CommandSummary summarise(std::span<const MotionCommand> commands) {
     const double a = norm2(c[i].velocity), b = norm2(c[i + 1].velocity);
     even2 = a > even2 ? a : even2;
     odd2 = b > odd2 ? b : odd2;
+    within &= command_within(a, fastest2) & command_within(b, fastest2);
     moving += static_cast<std::size_t>(a > 0.0) + static_cast<std::size_t>(b > 0.0);
     guards |= c[i].halt_on | c[i].blocked_by | c[i + 1].halt_on | c[i + 1].blocked_by;
   }
   if (i < n) {
     even2 = std::max(even2, norm2(c[i].velocity));
+    within &= command_within(norm2(c[i].velocity), fastest2);
     moving += static_cast<std::size_t>(norm2(c[i].velocity) > 0.0);
     guards |= c[i].halt_on | c[i].blocked_by;
   }
-  return {std::sqrt(std::max(even2, odd2)), guards != 0, moving};
+  return {std::sqrt(std::max(even2, odd2)), guards != 0, moving, within};
 }
 
 class KinematicEngine final : public Engine {
@@ -78,6 +83,7 @@ class KinematicEngine final : public Engine {
         body_radius_(spec.robots.radius),
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
+        fastest_command2_(fastest_command_speed2(arena_, spec.engine.dt)),
         positions_(initial_positions.begin(), initial_positions.end()),
         reflections_(positions_.size(), 0),
         pairs_(kSkinSteps * 2.0 * spec.robots.speed * spec.engine.dt) {
@@ -93,7 +99,8 @@ class KinematicEngine final : public Engine {
     // agent at rest on the same pairs and reach (the same summary of the same commands).
     if (slept_whole_ && !sleep_checks_ && islands_.inputs_repeat(commands, signals)) return {};
     slept_whole_ = false;
-    const CommandSummary summary = summarise(commands);
+    const CommandSummary summary = summarise(commands, fastest_command2_);
+    if (!summary.within) refuse_bad_command(commands, fastest_command2_, limits_.dt);
     // Faster than the candidates allow: search again (what agents perceive is unchanged).
     if (summary.fastest > pairs_speed_) {
       rebuild_neighbourhood(summary.fastest, false, 0.0);
@@ -365,6 +372,7 @@ class KinematicEngine final : public Engine {
   double body_radius_;
   double sensing_radius_;
   double nominal_speed_;
+  double fastest_command2_;  // the squared speed limit of commands (command_check.hpp)
   double pairs_speed_ = 0.0;
   AgentArray<Vec2> positions_;
   std::vector<std::uint8_t> reflections_;

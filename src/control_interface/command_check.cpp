@@ -1,0 +1,31 @@
+#include "control_interface/command_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace swarmagg {
+
+double fastest_command_speed2(const ArenaGeometry& arena, double dt) {
+  const double fastest = 0.25 * std::min(arena.width(), arena.height()) / dt;
+  return fastest * fastest;
+}
+
+void refuse_bad_command(std::span<const MotionCommand> commands, double fastest2, double dt) {
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    const Vec2 v = commands[i].velocity;
+    if (command_within(norm2(v), fastest2)) continue;
+    const bool finite = std::isfinite(v.x) && std::isfinite(v.y);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  finite ? "commanded agent %zu a velocity of (%.6g, %.6g) u/tu, which moves it "
+                           "more than a quarter of the arena's shorter side in one step of %g tu"
+                         : "commanded agent %zu a velocity of (%.6g, %.6g) u/tu, which is not "
+                           "finite",
+                  i, v.x, v.y, dt);
+    throw BadCommand(text);
+  }
+  throw std::logic_error("refuse_bad_command: every command is within the limit");
+}
+
+}  // namespace swarmagg
