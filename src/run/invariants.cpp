@@ -150,15 +150,10 @@ void check_events(const CheckedState& s, int waiting) {
     violated(s, "events counted that the rules rule out" + show());
 }
 
-// Solid to each other during the step (docs/architecture.md; controllers' blocked_by masks).
-bool solid(AgentState a, AgentState b, bool join) {
-  const auto blocked = [join](AgentState mover) {
-    return mover == AgentState::Leave ||
-           (join && (mover == AgentState::Go || mover == AgentState::Approach));
-  };
-  const bool both_wait = a == AgentState::Wait && b == AgentState::Wait;
-  return both_wait || (a == AgentState::Wait && blocked(b)) ||
-         (b == AgentState::Wait && blocked(a));
+// Solid to each other during the step: either one's blocked_by mask holds the other's signal.
+bool solid(const CheckedState& s, std::size_t i, std::size_t j) {
+  return ((s.commands[i].blocked_by & mask_of(s.signals[j])) |
+          (s.commands[j].blocked_by & mask_of(s.signals[i]))) != 0;
 }
 
 }  // namespace
@@ -173,7 +168,9 @@ CheckedState checked_state(const Replicate& r) {
           r.swarm(),
           r.aggregates(),
           r.events(),
-          r.engine().sleeper_due_to_move()};
+          r.engine().sleeper_due_to_move(),
+          r.commands(),
+          r.signals()};
 }
 
 void check_sleep(const CheckedState& s) {
@@ -268,16 +265,16 @@ void InvariantChecker::check_motion(const CheckedState& s) const {
 }
 
 void InvariantChecker::check_contacts(const CheckedState& s) const {
+  if (s.commands.size() != s.swarm.size() || s.signals.size() != s.swarm.size()) return;
   const double r = s.spec.robots.radius;
   const double contact = 2.0 * r;
   const double tolerance = box2d(s.spec) ? r : kRounding * longest_side(s.spec);
-  const bool join = s.rules.joins;
   const ArenaGeometry geometry = s.spec.arena.geometry();
   for (std::size_t i = 0; i < s.swarm.size(); ++i) {
     for (const Neighbour& nb : s.neighbours.of(static_cast<AgentId>(i))) {
       if (nb.distance >= contact) break;  // nearest first
       const std::size_t j = nb.id;
-      if (j < i || !solid(s.swarm.state[i], s.swarm.state[j], join)) continue;
+      if (j < i || !solid(s, i, j)) continue;
       const double before = geometry.distance(positions_[i], positions_[j]);
       const double sunk = (contact - nb.distance) - std::max(0.0, contact - before);
       if (sunk <= tolerance) continue;

@@ -37,6 +37,7 @@
 #include "config/world_spec.hpp"
 #include "control_interface/controller_rules.hpp"
 #include "control_interface/event_counts.hpp"
+#include "control_interface/motion_command.hpp"
 #include "control_interface/neighbour_lists.hpp"
 #include "core/agent_state.hpp"
 #include "core/vec2.hpp"
@@ -63,6 +64,10 @@ struct CheckedState {
   const AggregateTracker& aggregates;
   const EventCounts& events;
   std::optional<std::uint32_t> sleeper_due_to_move;  // the engine's sleep check
+  // The step's commands and the signals agents displayed: their blocked_by masks say which
+  // pairs were solid (docs/controllers.md: the masks are the whole contract).
+  std::span<const MotionCommand> commands = {};
+  std::span<const Signal> signals = {};
 };
 
 CheckedState checked_state(const Replicate& replicate);

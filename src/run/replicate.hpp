@@ -57,6 +57,9 @@ class Replicate {
   // The LEAVE episodes so far, judged between each decision and the move that follows it.
   const LeaveEpisodes& leave_episodes() const { return leave_episodes_; }
   SwarmSnapshot snapshot() const;
+  // The last step's motion commands and the signals agents displayed during it.
+  std::span<const MotionCommand> commands() const { return commands_; }
+  std::span<const Signal> signals() const { return signals_; }
 
  private:
   void update_aggregates();
