@@ -20,6 +20,7 @@ ArmSummary summarize_arm(const ArmResult& arm) {
     const TimeseriesRow& last = r.final_row;
     s.final_noa.push_back(last.noa);
     for (std::int32_t size : r.final_aggregate_sizes) s.final_sizes.push_back(size);
+    s.escapes.push_back({r.leave.escapes.total(), r.leave.attempts.total()});
     if (last.time <= 0.0) continue;
     const LineageCounts& l = arm.lineage[k];
     s.encounter_rates.push_back(static_cast<double>(last.events.encounters) / last.time);
@@ -41,8 +42,7 @@ Comparison compare_arms(const ArmResult& a, const ArmResult& b) {
   c.ks_noa = ks_two_sample(c.a.final_noa, c.b.final_noa);
   c.ks_sizes = ks_two_sample(c.a.final_sizes, c.b.final_sizes);
   c.encounter_rate_difference = welch_interval(c.a.encounter_rates, c.b.encounter_rates);
-  c.escape_fraction = two_proportion_test(c.a.leave.escapes.total(), c.a.leave.attempts.total(),
-                                          c.b.leave.escapes.total(), c.b.leave.attempts.total());
+  c.escape_fraction = replicate_proportion_test(c.a.escapes, c.b.escapes);
   c.net_merge_rate_difference = welch_interval(c.a.net_merge_rates, c.b.net_merge_rates);
   c.has_leaving =
       controller_rules(a.spec).leaving_happens || controller_rules(b.spec).leaving_happens;

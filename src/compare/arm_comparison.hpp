@@ -26,9 +26,10 @@ struct ArmSummary {
   std::vector<double> encounter_rates;  // per replicate, encounters per tu
   MeanInterval noa;
   MeanInterval encounter_rate;
-  LeaveTally leave;
-  std::vector<LineageCounts> lineage;   // per replicate, the whole run
-  std::vector<double> net_merge_rates;  // per replicate, (merges - splits) per tu
+  LeaveTally leave;                      // pooled over the replicates
+  std::vector<ReplicateTrials> escapes;  // per replicate: escapes of its LEAVE attempts
+  std::vector<LineageCounts> lineage;    // per replicate, the whole run
+  std::vector<double> net_merge_rates;   // per replicate, (merges - splits) per tu
   MeanInterval net_merge_rate;
 };
 
@@ -39,12 +40,13 @@ struct Comparison {
   KsResult ks_noa;
   KsResult ks_sizes;
   WelchResult encounter_rate_difference;  // b - a, per-replicate encounters per tu
-  ProportionResult escape_fraction;       // LEAVE attempts that got out, pooled
+  ProportionResult escape_fraction;       // LEAVE attempts that got out (proportion_test.hpp)
   WelchResult net_merge_rate_difference;  // b - a, per-replicate net merges per tu
   bool has_leaving = false;
   // One verdict per quantity, each significant at kSignificance: the final NOA (Welch on the
   // mean, KS on the final NOA and on the final aggregate sizes), the encounter rate (Welch),
-  // the escape fraction (two-proportion test; only when agents leave) and the net merge rate
+  // the escape fraction (Welch on the replicates' variance; only when agents leave) and the net
+  // merge rate
   // (Welch).
   // The KS test on the final sizes needs aggregates in both arms, the escape fraction LEAVE
   // attempts in both (0 of 0 is no fraction): otherwise "not judged", not "no difference".
@@ -54,7 +56,9 @@ struct Comparison {
   bool encounter_rate_differs() const;
   bool escape_fraction_differs() const;
   bool net_merge_rate_differs() const;
-  bool differs() const;  // any of the four
+  // Any of the four, with no correction for testing four quantities: arms that are the same
+  // world differ in one of them more often than kSignificance says (docs/outputs-and-progress.md).
+  bool differs() const;
 };
 
 ArmSummary summarize_arm(const ArmResult& arm);

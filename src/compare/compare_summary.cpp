@@ -167,7 +167,8 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
     leave_line(out, c.b);
     if (c.escape_fraction_judged()) {
       out << "  escape fraction: " << c.a.label << format_text(" %.3f, ", f.fraction_a) << c.b.label
-          << format_text(" %.3f (two-proportion z test, p = %.3g)\n", f.fraction_b, f.p_value);
+          << format_text(" %.3f (Welch on the replicates' spread, p = %.3g)\n", f.fraction_b,
+                         f.p_value);
     } else {
       out << "  escape fraction: not judged (" << kNoAttempts << ")\n";
     }
@@ -185,7 +186,8 @@ std::string comparison_text(const std::string& world_name, const Comparison& c) 
   out << "  encounter rate: " << judged(c.encounter_rate_differs()) << " (Welch)\n";
   out << "  escape fraction: "
       << (c.escape_fraction_judged()
-              ? judged(c.escape_fraction_differs()) + std::string(" (two-proportion z test)")
+              ? judged(c.escape_fraction_differs()) +
+                    std::string(" (Welch on the replicates' spread)")
               : std::string("not judged (") +
                     (c.has_leaving ? kNoAttempts : "no agent leaves in this world") + ")")
       << "\n";
@@ -211,7 +213,8 @@ nlohmann::json comparison_json(const std::string& world_name, const Comparison& 
           {"escape_fraction",
            {{"a", c.escape_fraction.fraction_a},
             {"b", c.escape_fraction.fraction_b},
-            {"z", c.escape_fraction.z},
+            {"t", c.escape_fraction.t},
+            {"dof", c.escape_fraction.dof},
             {"p_value", c.escape_fraction.p_value},
             {"judged", c.escape_fraction_judged()}}},
           {"has_leaving", c.has_leaving},

@@ -85,12 +85,22 @@ TEST(ArmComparison, EveryQuantityGetsItsOwnVerdict) {
   EXPECT_TRUE(json["a"]["leave_attempts"]["rim_fraction_out"].is_null());  // nobody leaves
 }
 
-TEST(ArmComparison, TwoProportionsTestLikeAHandComputation) {
-  // 30/100 against 50/100: pooled 0.4, z = 0.2 / sqrt(0.4 * 0.6 * 0.02) = 2.8868.
-  const ProportionResult r = two_proportion_test(30, 100, 50, 100);
-  EXPECT_NEAR(r.z, 2.8868, 1e-4);
-  EXPECT_NEAR(r.p_value, 0.00389, 1e-5);
-  EXPECT_EQ(two_proportion_test(0, 0, 5, 10).p_value, 1.0);
+// Arm a: 10/20 and 20/30 (pooled 0.6; residuals -2 and 2), variance 2/1 * 8 / 50^2 = 0.0064;
+// arm b: 15/20 and 24/30 (pooled 0.78; residuals -0.6 and 0.6), 2/1 * 0.72 / 50^2 = 0.000576.
+// t = 0.18 / sqrt(0.006976) = 2.15511, Welch-Satterthwaite dof 0.006976^2 / (0.0064^2 +
+// 0.000576^2) = 1.17855, p = 0.245506 (scipy.stats.t.sf). The pooled z test said 0.0046.
+TEST(ArmComparison, EscapeFractionsAreComparedOnTheReplicatesSpread) {
+  const ProportionResult r = replicate_proportion_test({{10, 20}, {20, 30}}, {{15, 20}, {24, 30}});
+  EXPECT_DOUBLE_EQ(r.fraction_a, 0.6);
+  EXPECT_DOUBLE_EQ(r.fraction_b, 0.78);
+  EXPECT_NEAR(r.t, 2.1551091417, 1e-9);
+  EXPECT_NEAR(r.dof, 1.1785537149, 1e-9);
+  EXPECT_NEAR(r.p_value, 0.2455061514, 1e-8);
+  // No trials in an arm: no fraction to compare. Both arms without spread: known exactly.
+  EXPECT_EQ(replicate_proportion_test({{0, 0}, {0, 0}}, {{5, 10}, {4, 10}}).p_value, 1.0);
+  EXPECT_EQ(replicate_proportion_test({{5, 10}, {5, 10}}, {{5, 10}, {10, 20}}).p_value, 1.0);
+  EXPECT_EQ(replicate_proportion_test({{5, 10}, {5, 10}}, {{8, 10}, {8, 10}}).p_value, 0.0);
+  EXPECT_THROW(replicate_proportion_test({{5, 10}}, {{8, 10}, {8, 10}}), std::invalid_argument);
 }
 
 TEST(ArmComparison, EncounterRatesArePerTimeUnit) {
