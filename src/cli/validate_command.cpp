@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/world_options.hpp"
 #include "config/world_writer.hpp"
+#include "engine/engine.hpp"
 
 namespace swarmagg::cli {
 
@@ -14,7 +15,9 @@ void add_validate_command(CLI::App& app, Action& action) {
   options->add_to(*command);
   command->callback([options, &action] {
     action = [options] {
-      std::cout << world_to_yaml(options->load());
+      const WorldSpec spec = options->load();
+      check_engine_world(spec);  // what the engine refuses at its start (Box2D's limits)
+      std::cout << world_to_yaml(spec);
       return 0;
     };
   });

@@ -343,6 +343,16 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
       timeout_series_selected(options) ? timeout_runs() : std::vector<TimeoutRun>{};
   // An empty report would read as a reproduction in which nothing was checked.
   if (figures.empty() && timeouts.empty()) throw InputError(no_world_selected(options.only));
+  // Every experiment compares the paper's controllers with their models: another controller
+  // ran, then failed on the model files it has none of.
+  for (const WorldOverride& o : parse_overrides(options.overrides)) {
+    if (o.key == "controller.type") {
+      throw InputError(
+          "--set controller.type: reproduce runs the paper's experiments with their own "
+          "controllers (Bayindir, Soysal, collision), which its models describe; run another "
+          "controller on a paper world with `swarmagg run` or `compare`");
+    }
+  }
   // Given for a series that will not run, it would be ignored without a word.
   if (options.timeout_duration && timeouts.empty()) {
     throw InputError("--timeout-duration: the leave-timeout series is not selected; add --only " +

@@ -157,6 +157,13 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       // A reproduction of no world would be an empty report that reads as a success.
       {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
        "--only: no paper world's name contains 'no-such-world'"},
+      // validate checks what the engine refuses at its start, as run does.
+      {"validate worlds/examples/cockroach.yaml --engine box2d --set robots.detection_radius=49",
+       "a torus arena must be wider and higher than 100.2 for the Box2D engine"},
+      // Another controller ran, then failed on the model files it has none of.
+      {"reproduce --quick --only full-0.0025 --set controller.type=cockroach --out " +
+           temp_dir("reproduce-other").string(),
+       "--set controller.type: reproduce runs the paper's experiments with their own"},
   };
   for (const auto& [arguments, message] : refused) {
     const Outcome o = swarmagg(arguments);
