@@ -238,7 +238,8 @@ WorldKey placement_key() {
       // The agent at fault is named: "got a list" alone reads as if lists were refused.
       const auto wrong_agent = [&](const std::string& why) {
         return KeyValueError{expected, "a list whose item " + std::to_string(placed.size() + 1) +
-                                           " is " + shown_item(item) + " (" + why + ")"};
+                                           " (agent " + std::to_string(placed.size()) + ") is " +
+                                           shown_item(item) + " (" + why + ")"};
       };
       if (!item.IsSequence() || item.size() != 3) throw wrong_agent("not 3 numbers");
       try {
