@@ -63,7 +63,8 @@ std::string ratio_words(const std::vector<VariantError>& errors, const std::stri
   return text + ")";
 }
 
-// The best of the paper's variants by error / floor.
+// The paper's variant nearest its noise floor (error / floor), which need not be the one of
+// lowest error (the claims compare errors): the floors differ between variants.
 std::string best_paper_variant(const std::vector<VariantError>& errors) {
   const VariantError* best = nullptr;
   for (const VariantError& e : errors) {
@@ -287,8 +288,8 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
               report_number(100.0 * returning_share_of_joins(r.rates)) + " % of all joins. ";
     }
     const double spread = replicates_spread(r);
-    text += "The paper's best variant (" + best + ") is at " + ratio_words(*errors, best, spread) +
-            "; `returns` (q from the parameters) at " +
+    text += "Of the paper's variants, the one nearest its noise floor (" + best + ") is at " +
+            ratio_words(*errors, best, spread) + "; `returns` (q from the parameters) at " +
             ratio_words(*errors, kReturnsVariant, spread) +
             "; `measured` (measured q, new joins) at " +
             ratio_words(*errors, kMeasuredVariant, spread) + ".";
