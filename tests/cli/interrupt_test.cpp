@@ -287,6 +287,28 @@ TEST(Interrupt, ASignalAtOnceStillExitsCleanly) {
   fs::remove_all(out);
 }
 
+// Starts `arguments`, waits until its frames are staged (`frame` drawn in a hidden staging
+// folder in `frames`), then sends SIGINT and expects it to stop as interrupted.
+void interrupt_once_staged(const std::vector<std::string>& arguments, const fs::path& frames,
+                           const std::string& frame) {
+  Child child(arguments);
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  const auto staged = [&] {
+    for (const auto& entry : fs::directory_iterator(frames)) {
+      if (entry.path().filename().string().starts_with(".staged-frames.") &&
+          fs::exists(entry.path() / frame))
+        return true;
+    }
+    return false;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!staged() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  child.send(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+}
+
 // Drawing a frame every step, a run stops at the step the signal came in, not at the next
 // multiple of 1024 steps (it drew on for seconds, to frame 1025).
 // The frames an earlier run drew stay whole until the new simulation has finished, as its
@@ -306,22 +328,7 @@ TEST(Interrupt, ARunDrawingFramesStopsAtTheNextStepAndKeepsTheEarlierFrames) {
       SWARMAGG_BINARY,    "run",     kLongWorld, "--replicates", "1", "--set",
       "run.duration=300", "--force", "--out",    out.string()};
   longer.insert(longer.end(), render.begin(), render.end());
-  Child child(longer);
-  ASSERT_TRUE(child.started());
-  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
-  const auto staged_frame = [&out] {
-    for (const auto& entry : fs::directory_iterator(out / "frames")) {
-      if (entry.path().filename().string().starts_with(".staged-frames.") &&
-          fs::exists(entry.path() / "frame_000020.png"))
-        return true;
-    }
-    return false;
-  };
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!staged_frame() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  child.send(SIGINT);
-  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+  interrupt_once_staged(longer, out / "frames", "frame_000020.png");
   EXPECT_EQ(files_below(out / "frames"), before);  // the staged frames went too
   fs::remove_all(out);
 }
@@ -338,22 +345,9 @@ TEST(Interrupt, AStoppedRenderKeepsTheFramesAlreadyThere) {
             0);
   const auto before = files_below(out / "frames");
   ASSERT_EQ(before.size(), 31u);  // steps 0, 10, ..., 300
-  Child child({SWARMAGG_BINARY, "render", out.string(), "--every", "1", "--size", "1200x1200"});
-  ASSERT_TRUE(child.started());
-  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
-  const auto staged_frame = [&out] {
-    for (const auto& entry : fs::directory_iterator(out / "frames")) {
-      if (entry.path().filename().string().starts_with(".staged-frames.") &&
-          fs::exists(entry.path() / "frame_000002.png"))
-        return true;
-    }
-    return false;
-  };
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!staged_frame() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  child.send(SIGINT);
-  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+  interrupt_once_staged(
+      {SWARMAGG_BINARY, "render", out.string(), "--every", "1", "--size", "1200x1200"},
+      out / "frames", "frame_000002.png");
   EXPECT_EQ(files_below(out / "frames"), before);
   fs::remove_all(out);
 }
