@@ -54,7 +54,7 @@ bool Comparison::sizes_judged() const {
 }
 
 bool Comparison::escape_fraction_judged() const {
-  return has_leaving && a.leave.attempts.total() > 0 && b.leave.attempts.total() > 0;
+  return has_leaving && escape_fraction.judged;
 }
 
 bool Comparison::noa_differs() const {

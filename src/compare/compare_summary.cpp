@@ -37,7 +37,7 @@ constexpr const char* kKsMethod =
     "exact (lattice walk) when the two samples' sizes multiply to 10^7 or less, else the "
     "asymptotic Kolmogorov series with Stephens' correction; conservative with ties";
 constexpr const char* kNoAggregates = "an arm ended with no aggregate";
-constexpr const char* kNoAttempts = "an arm made no LEAVE attempt";
+constexpr const char* kNoAttempts = "an arm has fewer than two replicates with LEAVE attempts";
 
 std::string judged(bool differs) {
   return differs ? "different" : "no significant difference";
