@@ -47,9 +47,17 @@ constexpr const char* kPlotFolder = "plots";  // under --out, beside REPORT.md
 // reproduction's own, even one stopped early (its report, or the runs of either arm or of
 // the leave-timeout series, which a later reproduction reuses). Anything else (a run, a
 // comparison, a sweep, your own files) would get a report written among its files, and a
-// run's plots/ filled with figures that are not its own.
+// run's plots/ filled with figures that are not its own. Other commands' marks come first: a
+// sweep's folder holds a runs/ too.
 void check_is_a_reproductions_folder(const std::filesystem::path& out) {
   std::error_code missing;
+  for (const char* other :
+       {"world.resolved.yaml", "compare.json", "sweep.json", "sweep_summary.csv"}) {
+    if (!std::filesystem::exists(out / other, missing)) continue;
+    throw InputError(out.string() + "/ holds " + other + ", another command's output: a " +
+                     "reproduction would write its report and plots/ among its files; use --out "
+                     "DIR for the reproduction");
+  }
   for (const char* own : {"REPORT.md", "runs", "compaction-off", kTimeoutFolder}) {
     if (std::filesystem::exists(out / own, missing)) return;
   }

@@ -331,7 +331,8 @@ TEST(ReproduceFolder, AFolderHoldingSomethingElseIsRefusedUntouched) {
     reproduce(reduced_options(out), summary);
     ADD_FAILURE() << "reproduce wrote into a run's folder";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("holds files but no reproduction"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("holds world.resolved.yaml, another command's output"),
+              std::string::npos)
         << e.what();
   }
   std::vector<std::string> held;
@@ -339,6 +340,21 @@ TEST(ReproduceFolder, AFolderHoldingSomethingElseIsRefusedUntouched) {
     held.push_back(entry.path().lexically_relative(out).string());
   std::sort(held.begin(), held.end());
   EXPECT_EQ(held, (std::vector<std::string>{"plots", "plots/noa.gp", "world.resolved.yaml"}));
+  // A sweep's folder holds a runs/ as a reproduction does; your own files, no mark at all.
+  std::filesystem::remove_all(out);
+  std::filesystem::create_directories(out / "runs" / "p0");
+  std::ofstream(out / "sweep.json") << "{}\n";
+  EXPECT_THROW(reproduce(reduced_options(out), summary), InputError);
+  EXPECT_FALSE(std::filesystem::exists(out / "REPORT.md"));
+  std::filesystem::remove_all(out);
+  std::filesystem::create_directories(out);
+  std::ofstream(out / "notes.txt") << "mine\n";
+  try {
+    reproduce(reduced_options(out), summary);
+    ADD_FAILURE() << "reproduce wrote among someone's files";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds files but no reproduction"), std::string::npos);
+  }
   std::filesystem::remove_all(out);
 }
 
