@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -306,34 +305,30 @@ void check_controller_reads(const WorldSpec& spec, const std::map<std::string, s
   }
 }
 
-// "--set arena.width=1, --set arena.height=9": the overrides of the failed check's key block
-// (the key a check's message names, "source: arena.width: ...": the arena.* ones), as given.
-// Others (--threads, --seed) cannot have made it fail; none when the message names no key.
-std::string overrides_of_block(const std::vector<WorldOverride>& overrides,
-                               const std::string& message, const std::string& source) {
-  if (!message.starts_with(source + ": ")) return "";
-  const std::string key =
-      message.substr(source.size() + 2, message.find(':', source.size() + 2) - source.size() - 2);
-  const std::string block = key.substr(0, key.find('.')) + ".";
+// "--set arena.width=1, --engine (engine.type=box2d)": the overrides as given, but those no
+// check across keys reads (--threads, --seed), for messages.
+std::string overrides_text(const std::vector<WorldOverride>& overrides) {
   std::string text;
   for (const WorldOverride& o : overrides) {
-    if (!o.key.starts_with(block)) continue;
+    if (o.key == "run.threads" || o.key == "run.seed") continue;
     const std::string value = o.value.IsScalar() ? shortened(o.value.Scalar()) : "[...]";
-    text += (text.empty() ? "" : ", ") + o.origin + " " + o.key + "=" + value;
+    const std::string given = o.origin == "--set" ? "--set " + o.key + "=" + value
+                                                  : o.origin + " (" + o.key + "=" + value + ")";
+    text += (text.empty() ? "" : ", ") + given;
   }
   return text;
 }
 
-// The checks across keys. One that fails after overrides of its key's block names them too:
-// the file alone may hold a valid world (`--set arena.width=1` made the arena too small for
-// the file's radius).
+// The checks across keys. One that fails after overrides names them too: the file alone may
+// hold a valid world (`--set arena.width=1` made the arena too small for the file's radius),
+// and a check reads keys of several blocks (the arena's side against the sensing radius).
 void check_with_overrides(WorldSpec& spec, bool count_given,
                           const std::vector<WorldOverride>& overrides) {
   try {
     check_placement(spec, count_given);
     check_world(spec);
   } catch (const InputError& e) {
-    const std::string changed = overrides_of_block(overrides, e.what(), spec.source);
+    const std::string changed = overrides_text(overrides);
     if (changed.empty()) throw;
     throw InputError(std::string(e.what()) + " (the world as changed by " + changed + ")");
   }
@@ -409,26 +404,6 @@ void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride
   }
 }
 
-// Box2D keeps positions in single precision, which rounds every move to the spacing of floats
-// at the arena's far side: a move of k spacings comes out up to half a spacing long or short
-// (an arena 999,999 wide gave agents speeds from 0.77 to 1.26 v). A substep's move of at least
-// kBox2dMoveSpacings spacings keeps speeds within 1 %.
-void check_box2d_resolution(const WorldSpec& spec) {
-  constexpr double kBox2dMoveSpacings = 50.0;
-  const auto far = static_cast<float>(std::max(spec.arena.width, spec.arena.height));
-  const double spacing = std::nextafter(far, std::numeric_limits<float>::infinity()) - far;
-  const double move = spec.robots.speed * spec.engine.dt / std::max(1, spec.engine.box2d.substeps);
-  if (spec.robots.speed <= 0.0 || move >= kBox2dMoveSpacings * spacing) return;
-  impossible(spec, "engine.type",
-             "box2d keeps positions in single precision: in an arena " + format_number(far) +
-                 " wide a substep moves an agent " + format_number(move) +
-                 " (robots.speed * engine.dt / engine.box2d.substeps), " +
-                 format_number(move / spacing) + " times the spacing of positions there (" +
-                 format_number(spacing) + "), and needs " + format_number(kBox2dMoveSpacings) +
-                 " times to keep speeds within 1 %; use the kinematic engine, a smaller arena "
-                 "or a longer engine.dt");
-}
-
 void check_world(const WorldSpec& spec) {
   const auto& robots = spec.robots;
   const double s = robots.detection_radius;
@@ -493,7 +468,6 @@ void check_world(const WorldSpec& spec) {
                    " (its contact tolerance is 0.005 u); write the world's lengths in a smaller "
                    "unit, ideally one in which the radius is near 1");
   }
-  if (spec.engine.type == EngineType::Box2D) check_box2d_resolution(spec);
   // Box2D's solver always slides bodies along their contacts.
   if (spec.engine.type == EngineType::Box2D && spec.engine.contact == ContactResponse::Stop) {
     impossible(spec, "engine.contact",

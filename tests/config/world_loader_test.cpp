@@ -126,21 +126,6 @@ TEST(WorldLoaderErrors, ACheckFailedByAnOverrideNamesIt) {
               ::testing::EndsWith("diameter (2)"));  // no override to name
 }
 
-// Box2D rounds positions to floats: in an arena 10^5 wide a move of 0.1 is 12.8 spacings, and
-// agents' speeds came out up to 4 % off. The kinematic engine (doubles) takes the same arena.
-TEST(WorldLoaderErrors, Box2dRefusesArenasWherePositionsCannotResolveAMove) {
-  const std::string wide = "arena: {width: 100000, height: 100}\nrobots: {count: 5}\n";
-  EXPECT_EQ(error_of(wide), "no error");
-  EXPECT_THAT(error_of(wide + "engine: {type: box2d}\n"),
-              HasSubstr("engine.type: box2d keeps positions in single precision: in an arena "
-                        "100000 wide a substep moves an agent 0.1"));
-  EXPECT_THAT(error_of(wide + "engine: {type: box2d}\n"), HasSubstr("12.8 times"));
-  EXPECT_EQ(error_of("arena: {width: 16000, height: 100}\nengine: {type: box2d}\n"), "no error");
-  EXPECT_THAT(error_of("arena: {width: 16000, height: 100}\n"
-                       "engine: {type: box2d, box2d: {substeps: 4}}\n"),
-              HasSubstr("engine.type: box2d keeps positions in single precision"));
-}
-
 // engine.contact: slide (the default) or stop, which the kinematic engine alone offers.
 TEST(WorldLoaderErrors, ContactResponseIsCheckedAgainstTheEngine) {
   EXPECT_THAT(error_of("engine: {contact: bounce}\n"),
