@@ -37,10 +37,11 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   if (!std::filesystem::is_regular_file(run.timeseries))
     throw InputError("cannot read " + run.timeseries.string());
   if (!holds_every_row(run.world, run.timeseries)) {
-    throw InputError(run.timeseries.string() + ": lacks rows of the run (" +
+    throw InputError(run.timeseries.string() + ": does not hold exactly the run's rows (" +
                      std::to_string(run.world.run.replicates) + " replicates of " +
                      std::to_string(recorded_rows(run.world)) +
-                     " rows each): cut short or edited since; run the world again");
+                     " rows each, the last ending its line): cut short or edited since; run the "
+                     "world again");
   }
   run.summary = read_json(folder / "summary.json");
   if (std::filesystem::exists(folder / "model.csv")) run.model = folder / "model.csv";

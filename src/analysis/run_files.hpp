@@ -23,7 +23,7 @@ struct RunFiles {
 
 // Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
 // is written last, timeseries.csv before it), a file is unreadable or timeseries.csv lacks
-// rows (holds_every_row).
+// other rows than the run's (holds_every_row).
 RunFiles read_run_files(const std::filesystem::path& folder);
 
 // Whether `timeseries` holds every row of every replicate of `spec` and ends with a whole line:

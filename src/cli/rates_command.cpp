@@ -41,10 +41,7 @@ int rates_command(const RatesCommandOptions& options) {
   const MeasuredRun run = run_world_measuring(spec, run_options, true);
   std::string no_start;
   const std::optional<PlacementSample> start = placement_start_or_reason(spec, 0, no_start);
-  if (!no_start.empty()) {
-    std::cerr << "note: the `initial` rows' model values come from the second-order formula: "
-              << no_start << "\n";
-  }
+  if (!no_start.empty()) std::cerr << "note: " << second_order_initial_note(no_start) << "\n";
   const std::vector<RateRow> rows = measured_rate_rows(spec, *run.rates, start ? &*start : nullptr);
   std::vector<std::string> failures;
   clear_earlier_rates(out, failures);

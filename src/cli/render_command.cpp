@@ -13,6 +13,7 @@
 #include "config/world_loader.hpp"
 #include "config/world_override.hpp"
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 #include "output/output_check.hpp"
 #include "output/trajectory_layout.hpp"
 #include "output/trajectory_reader.hpp"
@@ -60,7 +61,9 @@ int render_command(const RenderCommandOptions& options) {
   }
   install_interrupt_handlers();
   // Drawn aside and moved in once every frame is drawn: Ctrl-C or a failure leaves the frames
-  // already in the folder (the run's own, by default) as they were.
+  // already in the folder (the run's own, by default) as they were. A killed render's or run's
+  // staged frames go first.
+  remove_stale_temporaries(folder);
   StagedFrames staged(folder);
   FrameRecorder recorder(spec, staged.staging());
   TrajectoryRow row;

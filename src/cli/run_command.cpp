@@ -186,6 +186,8 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
   RatesAndModel written;
   if (run.rates) {
     written.rows = measured_rate_rows(spec, *run.rates, sample);
+    if (options.rates && !no_start.empty())
+      std::cerr << "note: " << second_order_initial_note(no_start) << "\n";
     if (options.rates) {
       // Without gnuplot the run's own "plots skipped" note says it once for all plots.
       const bool draw = !options.no_plots && plots_unavailable_reason().empty();

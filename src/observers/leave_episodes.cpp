@@ -15,7 +15,7 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   // agents (one snapshot per decision that starts attempts), so that most runs never grow
   // them.
   former_.reserve(kFormerPerAgent * agents);
-  former_sets_.reserve(agents);  // one per open attempt at most
+  former_sets_.reserve(agents);  // live ones: one per open attempt at most
   renumbered_.reserve(agents);
   leavers_.reserve(agents);
   sizes_at_start_.reserve(agents);

@@ -265,7 +265,8 @@ void InvariantChecker::check_motion(const CheckedState& s) const {
 }
 
 void InvariantChecker::check_contacts(const CheckedState& s) const {
-  if (s.commands.size() != s.swarm.size() || s.signals.size() != s.swarm.size()) return;
+  if (s.commands.size() != s.swarm.size() || s.signals.size() != s.swarm.size())
+    throw std::logic_error("check_contacts: the state lacks the step's commands or signals");
   const double r = s.spec.robots.radius;
   const double contact = 2.0 * r;
   const double tolerance = box2d(s.spec) ? r : kRounding * longest_side(s.spec);

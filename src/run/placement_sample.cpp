@@ -116,16 +116,19 @@ std::optional<PlacementSample> placement_start_or_reason(const WorldSpec& world,
   }
 }
 
+std::string second_order_initial_note(const std::string& why) {
+  return "the rates' `initial` rows take their model values from the second-order formula: " + why;
+}
+
 std::string placement_start_note(const PlacementSample& sample) {
   double noa = 0.0;
   for (const double aggregates : sample.aggregates) noa += aggregates;
   char numbers[96];
   std::snprintf(numbers, sizeof numbers, "%.4g +- %.2g", noa, sample.noa_standard_error);
-  const std::string placements =
-      sample.placements == 1
-          ? "the given positions"
-          : "the mean of " + std::to_string(sample.placements) +
-                " random placements drawn as the runs draw theirs";
+  const std::string placements = sample.placements == 1
+                                     ? "the given positions"
+                                     : "the mean of " + std::to_string(sample.placements) +
+                                           " random placements drawn as the runs draw theirs";
   return "from step 1 the models start where the first decision leaves the swarm, " +
          std::string(numbers) + " aggregates: " + placements +
          " (model.initial_state: placement); at step 0, as in the runs, no agent waits";

@@ -36,6 +36,10 @@ std::optional<PlacementSample> placement_start(const WorldSpec& world, int threa
 std::optional<PlacementSample> placement_start_or_reason(const WorldSpec& world, int threads,
                                                          std::string& why);
 
+// The note for rates measured without that start (`why`): their `initial` rows' model values
+// come from the second-order formula instead.
+std::string second_order_initial_note(const std::string& why);
+
 // One sentence for the user: where the models start, from how many placements.
 std::string placement_start_note(const PlacementSample& sample);
 

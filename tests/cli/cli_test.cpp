@@ -497,7 +497,7 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
       << whole.substr(0, whole.find('\n', whole.size() / 2) + 1);
   const Outcome cut = swarmagg("plot " + run.string() + " --out " + redrawn.string());
   EXPECT_EQ(cut.exit_code, 2) << cut.output;
-  EXPECT_THAT(cut.output, HasSubstr("timeseries.csv: lacks rows of the run"));
+  EXPECT_THAT(cut.output, HasSubstr("timeseries.csv: does not hold exactly the run's rows"));
   // A comparison's or an unmerged sweep's folder: what it is, and what to plot instead.
   for (const auto& [marker, said] : {std::pair{"compare.json", "a comparison's folder"},
                                      std::pair{"sweep.json", "a sweep's folder not merged yet"}}) {

@@ -305,6 +305,7 @@ void interrupt_once_staged(const std::vector<std::string>& arguments, const fs::
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!staged() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_TRUE(staged()) << "no frame was staged in a minute: the staging went untested";
   child.send(SIGINT);
   expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
 }

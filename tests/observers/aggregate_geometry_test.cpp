@@ -49,6 +49,27 @@ TEST(AggregateGeometry, HexagonalPacksHaveRimsOfSixTwelveEighteen) {
   }
 }
 
+// A pack of 91 (5 rings, from 64 members the grid counts) on the torus seam, a member nudged
+// off the lattice: each member is on the rim by the grid exactly when by the pairwise scan, and
+// the rim is the outer ring (30).
+TEST(AggregateGeometry, TheRimCounterOfALargePackIsThePairwiseScans) {
+  Scene scene;
+  scene.add_hexagon(1.0, 99.0, 5, 2.0);
+  scene.positions[40] = scene.arena.wrap(scene.positions[40] + Vec2{0.3, -0.2});
+  const std::vector<AgentId> members = all_agents(scene);
+  ASSERT_EQ(members.size(), 91u);
+  const ShapeRules rules = rules_for(scene);
+  const RimCounter rim(members, scene.positions, rules);
+  int on_rim = 0;
+  for (const AgentId i : members) {
+    const bool scanned = rules.rim.on_rim(
+        member_surroundings(i, members, scene.positions, rules).fellows_within_reach);
+    EXPECT_EQ(rim.on_rim(i), scanned) << i;
+    on_rim += rim.on_rim(i);
+  }
+  EXPECT_EQ(on_rim, measure_aggregate(members, scene.positions, rules).rim);
+}
+
 TEST(AggregateGeometry, ThePackOnTheTorusSeamHasTheSameShape) {
   Scene inside;
   inside.add_hexagon(50.0, 50.0, 2, 2.0);

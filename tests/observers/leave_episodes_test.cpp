@@ -209,3 +209,34 @@ TEST(LeaveEpisodes, TheEscapeRadiusDecidesWhetherALeaverIsHeld) {
 
 }  // namespace
 }  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// Two leavers of one aggregate in each of six decisions share its member list (one FormerSet
+// with two users); sets die as their attempts end and are compacted away. The tallies are those
+// of one list per attempt: 12 rim attempts, by size 9 .. 19, one escape (the pair whose
+// fellow members went GO and moved off).
+TEST(LeaveEpisodes, LeaversOfOneAggregateInOneDecisionShareItsMembers) {
+  Stepper s;
+  const AgentId first = s.scene.add_hexagon(20.0, 20.0, 2, 2.0);
+  s.scene.add_hexagon(70.0, 70.0, 2, 2.0);
+  const AgentId moved = first + 7 + 5;
+  for (int k = 0; k < 6; ++k) {
+    const AgentId a = first + 7 + static_cast<AgentId>(2 * k);
+    if (k == 3) s.scene.positions[moved] = {70.0, 73.0};
+    s.step([&](auto& state) {
+      state[a] = state[a + 1] = AgentState::Leave;
+      if (k >= 2) state[a - 4] = state[a - 3] = AgentState::Go;
+    });
+  }
+  const LeaveTally& t = s.episodes.tally();
+  EXPECT_EQ(t.attempts.rim, 12);
+  EXPECT_EQ(t.escapes.rim, 1);
+  EXPECT_EQ(s.episodes.open_attempts(), 4u);
+  for (int m = 9; m <= 19; m += 2) EXPECT_EQ(t.attempts_by_size[m], 2) << m;
+  EXPECT_EQ(t.escapes_by_size[19 - 4], 1);
+}
+
+}  // namespace
+}  // namespace swarmagg

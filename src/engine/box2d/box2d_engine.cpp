@@ -368,12 +368,12 @@ int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
   const double fastest = std::sqrt(std::max(fastest2, pushed2));
   const double needed = std::ceil(fastest * dt_ / max_travel_);
   if (needed > kMaxSubsteps) {
-    const std::string what = pushed2 > fastest2 ? "the repulsion push on a leaving body reaches "
-                                                : "a commanded speed of ";
-    throw std::runtime_error("Box2D engine: " + what + std::to_string(fastest) +
-                             " u/tu, which needs more than " + std::to_string(kMaxSubsteps) +
-                             " substeps per step" +
-                             (pushed2 > fastest2 ? " (lower engine.box2d.repulsion_gain)" : ""));
+    const std::string speed = std::to_string(fastest) + " u/tu, which needs more than " +
+                              std::to_string(kMaxSubsteps) + " Box2D substeps per step";
+    // A speed the controller commanded is its fault, named with it (Replicate).
+    if (pushed2 <= fastest2) throw BadCommand("commanded a speed of " + speed);
+    throw std::runtime_error("Box2D engine: the repulsion push on a leaving body reaches " + speed +
+                             " (lower engine.box2d.repulsion_gain)");
   }
   return std::max(min_substeps_, static_cast<int>(needed));
 }
