@@ -18,6 +18,14 @@ constexpr SignalMask mask_of(Signal s) {
   return static_cast<SignalMask>(1u << s);
 }
 
+// Two bodies are solid to each other when either one's blocked_by holds the other's signal
+// (both engines and the invariant checks decide by this alone). Without a branch: whether a
+// pair is solid is a coin toss to the branch predictor.
+constexpr bool solid_pair(SignalMask blocked_by_a, Signal signal_a, SignalMask blocked_by_b,
+                          Signal signal_b) {
+  return ((blocked_by_a & mask_of(signal_b)) | (blocked_by_b & mask_of(signal_a))) != 0;
+}
+
 struct MotionCommand {
   Vec2 velocity;  // desired velocity, u/tu
   // Guarded move: stop at the first moment within the step at which an agent displaying one

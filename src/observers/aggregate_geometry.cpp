@@ -44,11 +44,11 @@ namespace {
 // densely packed swarm of 3 x 10^5 agents.
 constexpr std::size_t kGridFrom = 64;
 
+}  // namespace
+
 // The members sorted into square-ish cells at least the rim reach wide: every fellow within
 // that reach of a member lies in the member's cell or one of the 8 around it (wrapped on a
 // torus), so those hold all the fellows it counts and, whenever one is that close, its nearest.
-}  // namespace
-
 class MemberGrid {
  public:
   // Empty (unusable) when the arena is fewer than 3 cells across: the 9 cells around a

@@ -152,8 +152,7 @@ void check_events(const CheckedState& s, int waiting) {
 
 // Solid to each other during the step: either one's blocked_by mask holds the other's signal.
 bool solid(const CheckedState& s, std::size_t i, std::size_t j) {
-  return ((s.commands[i].blocked_by & mask_of(s.signals[j])) |
-          (s.commands[j].blocked_by & mask_of(s.signals[i]))) != 0;
+  return solid_pair(s.commands[i].blocked_by, s.signals[i], s.commands[j].blocked_by, s.signals[j]);
 }
 
 }  // namespace

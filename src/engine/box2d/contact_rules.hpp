@@ -35,7 +35,7 @@ struct AgentControls {
     halted.assign(n, 0);
   }
   bool solid(AgentId a, AgentId b) const {
-    return (blocked_by[a] & mask_of(signal[b])) != 0 || (blocked_by[b] & mask_of(signal[a])) != 0;
+    return solid_pair(blocked_by[a], signal[a], blocked_by[b], signal[b]);
   }
 };
 

@@ -243,8 +243,7 @@ GuardedMotion::Event GuardedMotion::pop_event() {
 // filter decides: a body cannot be solid to another that passes over it. (The controllers set
 // both sides' bits, or the unblocked side stands; a user controller may set one side only.)
 bool GuardedMotion::solid(std::uint32_t a, std::uint32_t b) const {
-  return ((commands_[a].blocked_by & mask_of(signals_[b])) |
-          (commands_[b].blocked_by & mask_of(signals_[a]))) != 0;
+  return solid_pair(commands_[a].blocked_by, signals_[a], commands_[b].blocked_by, signals_[b]);
 }
 
 bool GuardedMotion::halts_for(std::uint32_t mover, std::uint32_t other) const {
