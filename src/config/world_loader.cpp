@@ -480,8 +480,17 @@ void check_world(const WorldSpec& spec) {
   if (spec.steps() < 1) {
     impossible(spec, "run.duration", "is shorter than one step of engine.dt");
   }
-  if (robots.speed * spec.engine.dt > 0.25 * min_side) {
-    impossible(spec, "robots.speed", "moves an agent more than a quarter of the arena per step");
+  const double longest_move = spec.arena.geometry().longest_move(spec.sensing_radius());
+  if (robots.speed * spec.engine.dt > longest_move) {
+    impossible(spec, "robots.speed",
+               "moves an agent " + format_number(robots.speed * spec.engine.dt) +
+                   " per step (robots.speed * engine.dt), more than " +
+                   format_number(longest_move) +
+                   (spec.arena.topology == Topology::Torus
+                        ? ": a quarter of the arena's shorter side less half the sensing radius "
+                          "(two agents moving apart could otherwise meet through the torus's far "
+                          "side unseen)"
+                        : ": a quarter of the arena's shorter side"));
   }
   // A move shorter than this is lost in the rounding of positions across the arena.
   if (robots.speed > 0.0 && robots.speed * spec.engine.dt < 1e-12 * longest) {

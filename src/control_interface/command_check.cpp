@@ -6,8 +6,8 @@
 
 namespace swarmagg {
 
-double fastest_command_speed2(const ArenaGeometry& arena, double dt) {
-  const double fastest = 0.25 * std::min(arena.width(), arena.height()) / dt;
+double fastest_command_speed2(const ArenaGeometry& arena, double radius, double dt) {
+  const double fastest = arena.longest_move(radius) / dt;
   return fastest * fastest;
 }
 
@@ -19,7 +19,8 @@ void refuse_bad_command(std::span<const MotionCommand> commands, double fastest2
     char text[256];
     std::snprintf(text, sizeof text,
                   finite ? "commanded agent %zu a velocity of (%.6g, %.6g) u/tu, which moves it "
-                           "more than a quarter of the arena's shorter side in one step of %g tu"
+                           "farther in one step of %g tu than the engines resolve (a quarter of "
+                           "the arena's shorter side, less half the sensing radius on a torus)"
                          : "commanded agent %zu a velocity of (%.6g, %.6g) u/tu, which is not "
                            "finite",
                   i, v.x, v.y, dt);

@@ -19,10 +19,9 @@ class BadCommand : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The squared speed limit: a body that moves more than a quarter of the arena's shorter side
-// in one step breaks the torus's minimum image (world files are held to the same for
-// robots.speed).
-double fastest_command_speed2(const ArenaGeometry& arena, double dt);
+// The squared speed limit: ArenaGeometry::longest_move per step, for events up to `radius`
+// (world files are held to the same for robots.speed).
+double fastest_command_speed2(const ArenaGeometry& arena, double radius, double dt);
 
 // Whether a squared speed is finite and within the limit (false for NaN).
 inline bool command_within(double speed2, double fastest2) {

@@ -2,6 +2,7 @@
 // Distances and wrapping in the arena: the one home of the torus's minimum image. On a torus
 // every displacement is the shortest of the periodic copies; with walls it is the plain
 // difference. Below config (whose ArenaSpec makes one), engines, observers and render.
+#include <algorithm>
 #include <cmath>
 
 #include "core/vec2.hpp"
@@ -34,6 +35,15 @@ class ArenaGeometry {
   Vec2 wrap(Vec2 p) const {
     if (!torus_) return p;
     return {wrap_coordinate(p.x, width_), wrap_coordinate(p.y, height_)};
+  }
+
+  // The longest move of a body in one step that the engines resolve: a quarter of the shorter
+  // side, and on a torus less, as events within a step are found from each pair's nearest
+  // image at its start. Two bodies moving apart by twice this must stay farther than `radius`
+  // (the largest radius events happen at) from each other's far image: L/4 - radius/2.
+  double longest_move(double radius) const {
+    const double quarter = 0.25 * std::min(width_, height_);
+    return torus_ ? quarter - 0.5 * radius : quarter;
   }
 
   static double minimum_image(double d, double length) {

@@ -126,6 +126,28 @@ TEST(WorldLoaderErrors, ACheckFailedByAnOverrideNamesIt) {
               ::testing::EndsWith("diameter (2)"));  // no override to name
 }
 
+// On a torus two agents moving apart by 2 v dt must not meet through each other's far image,
+// which a step's events (found from the nearest image at its start) would miss: v dt at most
+// L/4 - s/2. A 10 x 10 torus at v dt = 2 let two searchers pass each other unseen.
+TEST(WorldLoaderErrors, ATorusStepMayNotReachTheFarImage) {
+  const std::string small =
+      "arena: {width: 10, height: 10, topology: TOPOLOGY}\nrobots: {count: 2, "
+      "speed: SPEED}\n";
+  const auto world = [&](const std::string& topology, const std::string& speed) {
+    std::string text = small;
+    text.replace(text.find("TOPOLOGY"), 8, topology);
+    text.replace(text.find("SPEED"), 5, speed);
+    return error_of(text);
+  };
+  EXPECT_THAT(world("torus", "20"),
+              HasSubstr("robots.speed: moves an agent 2 per step (robots.speed * engine.dt), more "
+                        "than 0.5: a quarter of the arena's shorter side less half the sensing "
+                        "radius"));
+  EXPECT_EQ(world("torus", "5"), "no error");   // 0.5 per step
+  EXPECT_EQ(world("walls", "20"), "no error");  // no far image: a quarter of the side, 2.5
+  EXPECT_THAT(world("walls", "30"), HasSubstr("more than 2.5: a quarter of the arena's shorter"));
+}
+
 // engine.contact: slide (the default) or stop, which the kinematic engine alone offers.
 TEST(WorldLoaderErrors, ContactResponseIsCheckedAgainstTheEngine) {
   EXPECT_THAT(error_of("engine: {contact: bounce}\n"),

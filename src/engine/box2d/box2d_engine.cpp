@@ -225,7 +225,7 @@ BodyShapes shapes_for(const WorldSpec& spec) {
 Box2DEngine::Box2DEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
     : geometry_(spec.arena.geometry()),
       dt_(spec.engine.dt),
-      fastest_command2_(fastest_command_speed2(geometry_, dt_)),
+      fastest_command2_(fastest_command_speed2(geometry_, spec.sensing_radius(), dt_)),
       detection_radius_(spec.robots.detection_radius),
       sensing_radius_(std::max(spec.sensing_radius(), spec.robots.detection_radius)),
       repulsion_gain_(spec.engine.box2d.repulsion_gain),

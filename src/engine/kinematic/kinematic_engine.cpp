@@ -87,7 +87,7 @@ class KinematicEngine final : public Engine {
         body_radius_(spec.robots.radius),
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),
-        fastest_command2_(fastest_command_speed2(arena_, spec.engine.dt)),
+        fastest_command2_(fastest_command_speed2(arena_, spec.sensing_radius(), spec.engine.dt)),
         positions_(initial_positions.begin(), initial_positions.end()),
         reflections_(positions_.size(), 0),
         pairs_(kSkinSteps * 2.0 * spec.robots.speed * spec.engine.dt) {
