@@ -22,7 +22,7 @@ struct RunFiles {
 };
 
 // Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
-// is written last, timeseries.csv before it), a file is unreadable or timeseries.csv lacks
+// is written last, timeseries.csv before it), a file is unreadable or timeseries.csv holds
 // other rows than the run's (holds_every_row).
 RunFiles read_run_files(const std::filesystem::path& folder);
 
