@@ -1,6 +1,8 @@
 #include "analysis/run_files.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <vector>
 
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
@@ -36,13 +38,6 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   run.timeseries = folder / "timeseries.csv";
   if (!std::filesystem::is_regular_file(run.timeseries))
     throw InputError("cannot read " + run.timeseries.string());
-  if (!holds_every_row(run.world, run.timeseries)) {
-    throw InputError(run.timeseries.string() + ": does not hold exactly the run's rows (" +
-                     std::to_string(run.world.run.replicates) + " replicates of " +
-                     std::to_string(recorded_rows(run.world)) +
-                     " rows each, the last ending its line): cut short or edited since; run the "
-                     "world again");
-  }
   run.summary = read_json(folder / "summary.json");
   if (std::filesystem::exists(folder / "model.csv")) run.model = folder / "model.csv";
   run.has_partitions = std::filesystem::exists(folder / "partitions.csv");
@@ -54,11 +49,22 @@ bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeser
   if (!in) return false;
   std::int64_t lines = 0;
   char last = '\n';
-  for (char c; in.get(c);) {
-    lines += c == '\n';
-    last = c;
+  std::vector<char> block(std::size_t{1} << 16);  // a long run's file is gigabytes
+  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
+    const auto read = static_cast<std::size_t>(in.gcount());
+    lines += std::count(block.data(), block.data() + read, '\n');
+    last = block[read - 1];
   }
   return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
+}
+
+void check_holds_every_row(const RunFiles& run) {
+  if (holds_every_row(run.world, run.timeseries)) return;
+  throw InputError(run.timeseries.string() + ": does not hold exactly the run's rows (" +
+                   std::to_string(run.world.run.replicates) + " replicates of " +
+                   std::to_string(recorded_rows(run.world)) +
+                   " rows each, the last ending its line): cut short or edited since; run the "
+                   "world again");
 }
 
 std::string run_title(const RunFiles& run) {

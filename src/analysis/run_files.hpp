@@ -22,13 +22,15 @@ struct RunFiles {
 };
 
 // Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
-// is written last, timeseries.csv before it), a file is unreadable or timeseries.csv holds
-// other rows than the run's (holds_every_row).
+// is written last, timeseries.csv before it) or a file is unreadable.
 RunFiles read_run_files(const std::filesystem::path& folder);
 
 // Whether `timeseries` holds every row of every replicate of `spec` and ends with a whole line:
 // a file cut short, or edited by hand, describes another run than the folder's other files.
 bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries);
+// Throws InputError naming the file unless it holds_every_row: for a stored run read back
+// (`plot`), not for the outputs a run has just written, which would only be read twice.
+void check_holds_every_row(const RunFiles& run);
 
 // The world's name for plot titles, followed by the overrides the run was given, if any:
 // "full-0.0025 (robots.count=80)".

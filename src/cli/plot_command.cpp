@@ -1,6 +1,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "analysis/run_files.hpp"
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
 #include "output/output_check.hpp"
@@ -60,7 +61,11 @@ int plot_command(const PlotCommandOptions& options) {
     if (!options.force) refuse_anothers_plots(folder, out);
   }
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
-  if (!sweep) refuse_folders_without_a_run(folder);
+  if (!sweep) {
+    refuse_folders_without_a_run(folder);
+    // A stored run may have been cut short or edited since: it would be drawn as the run.
+    check_holds_every_row(read_run_files(folder));
+  }
   const PlotOutcome outcome = sweep ? draw_sweep_plots(folder, out) : draw_run_plots(folder, out);
   throw_if_interrupted();  // gnuplot's half-drawn plots are the interruption's
   for (const std::string& failure : outcome.failures) std::cerr << "swarmagg: " << failure << "\n";

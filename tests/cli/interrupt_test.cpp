@@ -13,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -257,6 +258,14 @@ TEST(Interrupt, ARunStoringTrajectoriesLeavesNoHalfWrittenH5) {
   fs::remove_all(out);
 }
 
+// Polls `ready` every 5 ms for up to a minute; whether it became true.
+bool wait_until(const std::function<bool()>& ready) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!ready() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return ready();
+}
+
 // A run killed outright (SIGKILL, out of memory) leaves its rows' temporaries in the folder
 // made for it; they are a dead process's garbage, so the same command runs again there
 // without --force.
@@ -265,10 +274,7 @@ TEST(Interrupt, ARunKilledOutrightDoesNotBlockTheSameRunAgain) {
   Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
                "run.duration=1000000", "--quiet", "--out", out.string()});
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (temporary_files_below(out).empty() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_FALSE(temporary_files_below(out).empty()) << "no rows spooled";
+  ASSERT_TRUE(wait_until([&] { return !temporary_files_below(out).empty(); })) << "no rows spooled";
   child.send(SIGKILL);
   ASSERT_EQ(child.wait(std::chrono::seconds(60)).signal_number, SIGKILL);
   Child again({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=20",
@@ -295,17 +301,15 @@ void interrupt_once_staged(const std::vector<std::string>& arguments, const fs::
   ASSERT_TRUE(child.started());
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
   const auto staged = [&] {
-    for (const auto& entry : fs::directory_iterator(frames)) {
+    std::error_code gone;  // the directory may change while it is read
+    for (const auto& entry : fs::directory_iterator(frames, gone)) {
       if (entry.path().filename().string().starts_with(".staged-frames.") &&
-          fs::exists(entry.path() / frame))
+          fs::exists(entry.path() / frame, gone))
         return true;
     }
     return false;
   };
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!staged() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  EXPECT_TRUE(staged()) << "no frame was staged in a minute: the staging went untested";
+  EXPECT_TRUE(wait_until(staged)) << "no frame was staged in a minute: the staging went untested";
   child.send(SIGINT);
   expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
 }
@@ -421,10 +425,7 @@ TEST(Interrupt, SigintStopsALongModelAndKeepsTheEarlierModelOutputs) {
     }
     return false;
   };
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!writing() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_TRUE(writing()) << "never started writing its model";
+  ASSERT_TRUE(wait_until(writing)) << "never started writing its model";
   child.send(SIGINT);
   expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
   EXPECT_EQ(files_below(out), before) << "the earlier model outputs changed";
