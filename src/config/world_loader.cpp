@@ -492,8 +492,8 @@ void check_world(const WorldSpec& spec) {
                           "side unseen)"
                         : ": a quarter of the arena's shorter side"));
   }
-  // A move shorter than this is lost in the rounding of positions across the arena.
-  if (robots.speed > 0.0 && robots.speed * spec.engine.dt < 1e-12 * longest) {
+  if (robots.speed > 0.0 &&
+      robots.speed * spec.engine.dt < spec.arena.geometry().position_resolution()) {
     impossible(spec, "robots.speed",
                "moves an agent less than 10^-12 of the arena per step (robots.speed * "
                "engine.dt = " +

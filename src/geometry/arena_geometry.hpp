@@ -46,6 +46,10 @@ class ArenaGeometry {
     return torus_ ? quarter - 0.5 * radius : quarter;
   }
 
+  // Positions across the arena are resolved to about this much: a move shorter than it is
+  // lost in their rounding, or rounded to one ulp in a direction it did not have.
+  double position_resolution() const { return 1e-12 * std::max(width_, height_); }
+
   static double minimum_image(double d, double length) {
     if (d > 0.5 * length) return d - length;
     if (d < -0.5 * length) return d + length;

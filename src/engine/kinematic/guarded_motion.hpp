@@ -50,6 +50,11 @@ struct MotionLimits {
   // otherwise slide ever slower towards where the pull lies along the normal, never quite
   // coming to rest (a closing-up member does so for thousands of steps).
   double min_slide_speed = 0.0;
+  // A whole step's move shorter than this (squared) is dropped: the agent stays put. Rounded
+  // to the positions' resolution, such a move becomes one ulp along an axis, which can point
+  // into a body the agent touches; it then sinks by an ulp a step and keeps its aggregate
+  // awake for ever.
+  double unresolved_move2 = 0.0;
 };
 
 // Bits of wall_contacts(): the walls an agent touched during the step.
@@ -89,7 +94,10 @@ class GuardedMotion {
                         std::span<const MotionCommand> commands, std::span<const Signal> signals,
                         const MotionLimits& limits, std::span<const Vec2> positions = {});
   // The displacement of `agent` over the step resolved last.
-  Vec2 displacement(std::uint32_t agent) const { return displacement_travelled(agent, limits_.dt); }
+  Vec2 displacement(std::uint32_t agent) const {
+    const Vec2 moved = displacement_travelled(agent, limits_.dt);
+    return norm2(moved) < limits_.unresolved_move2 ? Vec2{} : moved;
+  }
   // Requests what displacement(agent) reads into the cache: a loop over the bent agents
   // reads their legs at scattered ids, and asking a few agents ahead overlaps those misses.
   void prefetch_displacement(std::uint32_t agent) const {
