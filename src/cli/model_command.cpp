@@ -114,10 +114,8 @@ int model_command(const ModelCommandOptions& options) {
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
   if (options.quiet) return 0;
   for (const std::string& caveat : model_caveats(spec)) std::cerr << "note: " << caveat << "\n";
-  if (controller_rules(spec).model == ModelFamily::None) {
-    std::cerr << "note: no macroscopic model describes controller type '" << spec.controller.type
-              << "' (docs/models.md): model.csv holds its header only\n";
-  }
+  if (const std::string note = no_model_note(spec); !note.empty())
+    std::cerr << "note: " << note << "\n";
   if (measured) std::cerr << "note: " << measured_variant_note(spec, *measured) << "\n";
   if (sample) std::cerr << "note: " << placement_start_note(*sample) << "\n";
   if (measured && spec.model.initial_state == InitialState::Measured)

@@ -116,6 +116,8 @@ void write_predictions(const WorldSpec& spec, const std::filesystem::path& out,
     return;
   }
   if (quiet) return;
+  if (const std::string note = no_model_note(spec); !note.empty())
+    std::cerr << "note: " << note << "\n";
   for (const std::string& caveat : world_caveats(spec)) std::cerr << "note: " << caveat << "\n";
 }
 

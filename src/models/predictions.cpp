@@ -144,6 +144,12 @@ std::vector<std::string> caveats_of(const WorldSpec& world, bool general) {
 
 }  // namespace
 
+std::string no_model_note(const WorldSpec& world) {
+  if (controller_rules(world).model != ModelFamily::None) return {};
+  return "no macroscopic model describes controller type '" + world.controller.type +
+         "' (docs/models.md): model.csv holds its header only";
+}
+
 std::vector<std::string> model_caveats(const WorldSpec& world) {
   return caveats_of(world, true);
 }

@@ -41,6 +41,10 @@ std::vector<VariantPrediction> predict(const WorldSpec& world,
 // probabilities above 1, say), at once: callers check before costly preparations.
 void check_predictable(const WorldSpec& world);
 
+// Why model.csv lists no variant, for a controller no macroscopic model describes; empty
+// for the others.
+std::string no_model_note(const WorldSpec& world);
+
 // Where the world departs from the models' assumptions, one sentence each.
 std::vector<std::string> model_caveats(const WorldSpec& world);
 // model_caveats without those every world of its model family shares (no LEAVE timeout in the

@@ -196,6 +196,24 @@ TEST(Cli, ForceLeavesNothingOfTheEarlierRun) {
   std::filesystem::remove_all(out);
 }
 
+// A controller no macroscopic model describes: model.csv is the bare header, with no empty
+// model-timeseries/ beside it, and `run` says why as `model` does.
+TEST(Cli, AControllerWithoutAModelGetsAHeaderOnlyModelCsvAndANote) {
+  const std::filesystem::path out = temp_dir("no-model");
+  const Outcome o = swarmagg(
+      "run worlds/examples/cockroach.yaml --set run.duration=30 "
+      "--replicates 1 --no-plots --out " +
+      out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("note: no macroscopic model describes controller type "
+                                  "'cockroach' (docs/models.md): model.csv holds its header only"));
+  std::ifstream model(out / "model.csv");
+  const std::string text((std::istreambuf_iterator<char>(model)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "model,variant,step,time,quantity,value\n");
+  EXPECT_FALSE(std::filesystem::exists(out / "model-timeseries"));
+  std::filesystem::remove_all(out);
+}
+
 // A folder `rates` wrote holds the rates of another run: `run --force` without --rates leaves
 // no rates.csv there that a later `model --rates` (or the Ctrl-C note) would take for its own.
 TEST(Cli, ForceLeavesNoRatesOfAnEarlierRatesCommand) {
