@@ -93,6 +93,10 @@ void Replicate::step() {
     events_.encounters += engine_->step(commands_, signals_).encounters;
   } catch (const BadCommand& e) {
     throw std::runtime_error(controller_context() + e.what());
+  } catch (const std::runtime_error& e) {
+    // An engine that cannot go on (a push Box2D would clamp, say): where, to reproduce it.
+    throw std::runtime_error("replicate " + std::to_string(index_) + ", step " +
+                             std::to_string(step_) + ": " + e.what());
   }
   ++step_;
   update_aggregates();

@@ -362,8 +362,13 @@ int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
   }
   if (!within) refuse_bad_command(commands, fastest_command2_, dt_);
   double pushed2 = 0.0;
+  AgentId most_pushed = 0;
   for (const AgentId i : forced_) {
-    pushed2 = std::max(pushed2, norm2(commands[i].velocity + forces_[i] * dt_));
+    const double speed2 = norm2(commands[i].velocity + forces_[i] * dt_);
+    if (speed2 > pushed2) {
+      pushed2 = speed2;
+      most_pushed = i;
+    }
   }
   const double fastest = std::sqrt(std::max(fastest2, pushed2));
   const double needed = std::ceil(fastest * dt_ / max_travel_);
@@ -372,7 +377,8 @@ int Box2DEngine::substeps_for(std::span<const MotionCommand> commands) const {
                               std::to_string(kMaxSubsteps) + " Box2D substeps per step";
     // A speed the controller commanded is its fault, named with it (Replicate).
     if (pushed2 <= fastest2) throw BadCommand("commanded a speed of " + speed);
-    throw std::runtime_error("Box2D engine: the repulsion push on a leaving body reaches " + speed +
+    throw std::runtime_error("Box2D engine: the repulsion push on leaving agent " +
+                             std::to_string(most_pushed) + " reaches " + speed +
                              " (lower engine.box2d.repulsion_gain)");
   }
   return std::max(min_substeps_, static_cast<int>(needed));

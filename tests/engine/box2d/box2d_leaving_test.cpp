@@ -2,6 +2,7 @@
 // real contacts and the repulsion of waiting agents (docs/architecture.md), with the controllers
 // unchanged: a LEAVE agent in the middle of a packed aggregate cannot get out within its timeout,
 // one on the rim can.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -180,6 +181,33 @@ TEST(Box2DLeaving, ReplicateInnerLeaversAreCaughtRimLeaversEscape) {
   EXPECT_GE(inner_rate, 0.65);
   EXPECT_LE(rim_rate, 0.35);
   EXPECT_GE(inner_rate - rim_rate, 0.4);
+}
+
+}  // namespace
+}  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// A repulsion gain validation lets through (it bounds the push of one waiting body) can still
+// push a leaver among several faster than Box2D's substeps allow: the run stops naming the
+// replicate, the step and the agent, so that it can be found again.
+TEST(Box2DLeaving, APushTooStrongForTheSubstepsNamesWhereItHappened) {
+  const WorldSpec spec = load_world("worlds/examples/compact.yaml",
+                                    {"engine.type=box2d", "engine.box2d.repulsion_gain=4e5",
+                                     "robots.count=100", "arena.width=50", "arena.height=50"});
+  Replicate replicate(spec, 0);
+  std::string message;
+  for (int step = 0; step < 600 && message.empty(); ++step) {
+    try {
+      replicate.step();
+    } catch (const std::runtime_error& e) {
+      message = e.what();
+    }
+  }
+  EXPECT_THAT(message, ::testing::MatchesRegex(
+                           "replicate 0, step [0-9]+: Box2D engine: the repulsion push on "
+                           "leaving agent [0-9]+ reaches .*lower engine.box2d.repulsion_gain.*"));
 }
 
 }  // namespace
