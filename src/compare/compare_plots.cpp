@@ -14,6 +14,7 @@
 #include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/gnuplot_batch.hpp"
+#include "rates/poisson_interval.hpp"
 
 namespace swarmagg {
 namespace {
@@ -66,14 +67,20 @@ std::string final_script(const std::string& world_name, const Comparison& c) {
 constexpr double kMinExpectedAttempts = 10.0;
 
 std::string escape_rate_script(const std::string& world_name, const Comparison& c) {
+  // A left-out size's interval too: gnuplot scales the axis to the error bars of points
+  // whose value is NaN.
   const auto points = [](int time_column, int rate_column) {
-    return "($" + std::to_string(time_column) +
-           " * $10 >= " + std::to_string(static_cast<int>(kMinExpectedAttempts)) + " ? $" +
-           std::to_string(rate_column) + " : NaN)";
+    std::string text;
+    for (int column = rate_column; column < rate_column + 3; ++column) {
+      text += std::string(column > rate_column ? ":" : "") + "($" + std::to_string(time_column) +
+              " * $12 >= " + std::to_string(static_cast<int>(kMinExpectedAttempts)) + " ? $" +
+              std::to_string(column) + " : NaN)";
+    }
+    return text;
   };
   std::ostringstream gp;
-  gp << "# Escapes per tu per aggregate of size m, pooled over replicates (points: 95% CI,\n"
-     << "# normal approximation to Poisson counts), with the models' two leave laws. Sizes\n"
+  gp << "# Escapes per tu per aggregate of size m, pooled over replicates (points: exact 95%\n"
+     << "# Poisson interval of the count), with the models' two leave laws. Sizes\n"
      << "# with fewer than " << kMinExpectedAttempts
      << " expected attempts (aggregate_time x m p/dt) are left out.\n"
      << "set datafile separator ','\nset terminal pngcairo size 1000,650\n"
@@ -82,11 +89,11 @@ std::string escape_rate_script(const std::string& world_name, const Comparison& 
      << "set xlabel 'aggregate size m'\nset ylabel 'escapes per tu per aggregate'\n"
      << "set key top left\nset xrange [1.5:*]\nset yrange [0:*]\n"
      << "plot 'escape_rate.csv' skip 1 using ($1-0.1):" << points(3, 4)
-     << ":5 with yerrorbars pt 7 lc rgb '#1f77b4' title " << gnuplot_quote(c.a.label) << ", \\\n"
-     << "     '' skip 1 using ($1+0.1):" << points(7, 8)
-     << ":9 with yerrorbars pt 5 lc rgb '#d62728' title " << gnuplot_quote(c.b.label) << ", \\\n"
-     << "     '' skip 1 using 1:10 with lines lw 2 dt 2 lc rgb '#444444' title 'm p / dt', \\\n"
-     << "     '' skip 1 using 1:11 with lines lw 2 lc rgb '#009e73' title 'periph(m) p / dt'\n";
+     << " with yerrorbars pt 7 lc rgb '#1f77b4' title " << gnuplot_quote(c.a.label) << ", \\\n"
+     << "     '' skip 1 using ($1+0.1):" << points(8, 9)
+     << " with yerrorbars pt 5 lc rgb '#d62728' title " << gnuplot_quote(c.b.label) << ", \\\n"
+     << "     '' skip 1 using 1:12 with lines lw 2 dt 2 lc rgb '#444444' title 'm p / dt', \\\n"
+     << "     '' skip 1 using 1:13 with lines lw 2 lc rgb '#009e73' title 'periph(m) p / dt'\n";
   return gp.str();
 }
 
@@ -109,11 +116,13 @@ void write_rate(std::ostringstream& csv, const LeaveTally& leave, int size, doub
   const std::int64_t escapes = k < leave.escapes_by_size.size() ? leave.escapes_by_size[k] : 0;
   csv << ',' << escapes << ',' << csv_number(exposure);
   if (exposure <= 0.0) {
-    csv << ",NaN,NaN";
+    csv << ",NaN,NaN,NaN";
     return;
   }
-  const auto e = static_cast<double>(escapes);
-  csv << ',' << csv_number(e / exposure) << ',' << csv_number(1.96 * std::sqrt(e) / exposure);
+  // Exact, not the normal approximation: that one's lower end fell below 0 under 4 escapes.
+  const PoissonInterval interval = garwood_interval(static_cast<std::uint64_t>(escapes), exposure);
+  csv << ',' << csv_number(static_cast<double>(escapes) / exposure) << ','
+      << csv_number(interval.low) << ',' << csv_number(interval.high);
 }
 
 }  // namespace
@@ -123,7 +132,7 @@ std::string escape_rate_csv(const ArmResult& a, const ArmResult& b, const Compar
   csv << "size";
   for (const std::string& label : {c.a.label, c.b.label}) {
     csv << ',' << label << "_escapes," << label << "_aggregate_time," << label << "_rate," << label
-        << "_ci95_half_width";
+        << "_ci95_low," << label << "_ci95_high";
   }
   csv << ",all_members_law,periphery_law\n";
   const int largest = std::max(c.a.leave.largest_size(), c.b.leave.largest_size());

@@ -221,10 +221,33 @@ TEST(ComparePlots, EscapeRateIsEscapesPerAggregateTimeBesideBothLaws) {
   std::getline(lines, ten);
   EXPECT_FALSE(std::getline(lines, none));
   EXPECT_EQ(header,
-            "size,a_escapes,a_aggregate_time,a_rate,a_ci95_half_width,b_escapes,b_aggregate_time,"
-            "b_rate,b_ci95_half_width,all_members_law,periphery_law");
-  EXPECT_EQ(two, "2,4,100,0.04,0.0392,1,200,0.005,0.0098,0.02,0.02");
-  EXPECT_THAT(ten, ::testing::StartsWith("10,0,0,NaN,NaN,9,50,0.18,0.1176,0.1,0.0824"));
+            "size,a_escapes,a_aggregate_time,a_rate,a_ci95_low,a_ci95_high,b_escapes,"
+            "b_aggregate_time,b_rate,b_ci95_low,b_ci95_high,all_members_law,periphery_law");
+  // Exact (Garwood) intervals, from scipy: gamma.ppf(0.025, k) / T and gamma.ppf(0.975, k + 1)
+  // / T. The normal approximation gave 1 escape in 200 tu 0.005 +- 0.0098, below 0.
+  const auto fields = [](const std::string& row) {
+    std::vector<double> out;
+    std::istringstream in(row);
+    for (std::string field; std::getline(in, field, ',');) out.push_back(std::stod(field));
+    return out;
+  };
+  const std::vector<double> at_two = fields(two);
+  ASSERT_EQ(at_two.size(), 13u);
+  EXPECT_EQ(std::vector<double>(at_two.begin(), at_two.begin() + 4),
+            (std::vector<double>{2, 4, 100, 0.04}));
+  EXPECT_NEAR(at_two[4], 0.010898653736263248, 1e-12);
+  EXPECT_NEAR(at_two[5], 0.10241588675403694, 1e-12);
+  EXPECT_EQ(std::vector<double>(at_two.begin() + 6, at_two.begin() + 9),
+            (std::vector<double>{1, 200, 0.005}));
+  EXPECT_NEAR(at_two[9], 0.00012658903992144937, 1e-15);
+  EXPECT_NEAR(at_two[10], 0.027858216954694492, 1e-12);
+  EXPECT_THAT(two, ::testing::EndsWith(",0.02,0.02"));
+  EXPECT_THAT(ten, ::testing::StartsWith("10,0,0,NaN,NaN,NaN,9,50,0.18,"));
+  const std::vector<double> at_ten = fields(ten);
+  ASSERT_EQ(at_ten.size(), 13u);
+  EXPECT_NEAR(at_ten[9], 0.08230746194756668, 1e-12);
+  EXPECT_NEAR(at_ten[10], 0.34169606902838334, 1e-12);
+  EXPECT_NEAR(at_ten[11], 0.1, 1e-12);
 }
 
 // Soysal's paper worlds set model.periphery_cap: false, and their model then lets periph(3) =
