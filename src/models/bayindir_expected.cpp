@@ -10,7 +10,9 @@ namespace swarmagg {
 
 double advance_expected(const BayindirRates& rates, BayindirState& state) {
   const double y = state.searching;
-  const double creations = rates.creation.at(y);
+  // One agent meets nobody; the original variant's C y^2 is not 0 at y = 1, and with no size
+  // of two to hold them its pairs took agents out of the model (searching fell below 1).
+  const double creations = state.agents() >= 2 ? rates.creation.at(y) : 0.0;
   state.totals.encounters += creations;
   if (!rates.forms_aggregates) return 0.0;
 

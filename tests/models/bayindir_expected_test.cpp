@@ -38,6 +38,19 @@ TEST(BayindirExpected, CreationOnlyOriginalFollowsTheClosedForm) {
   }
 }
 
+// A world of one agent: nobody to pair with, in every variant (the original's C y^2 had taken
+// 0.26 of the agent out of the model over 1,000 tu of full-0.0025's rates).
+TEST(BayindirExpected, OneAgentAloneStaysSearchingInEveryVariant) {
+  for (const CreationVariant variant : {CreationVariant::Original, CreationVariant::Collision}) {
+    const BayindirRates rates =
+        bayindir_rates(testing::bayindir_world(1, 0.0025, true, true), variant);
+    const BayindirState state = run_steps(rates, 10000);
+    EXPECT_EQ(state.searching, 1.0);
+    EXPECT_EQ(state.noa(), 0.0);
+    EXPECT_EQ(state.totals.creations, 0.0);
+  }
+}
+
 TEST(BayindirExpected, CreationOnlyCollisionFollowsTheOrderedPairSolution) {
   // dy/dt = -2k y (y - 1) gives (y - 1)/y = (1 - 1/N) e^{-2kt}; it differs from the
   // closed form N / (1 + 2kNt) by at most about one agent (y -> 1 instead of 0).
