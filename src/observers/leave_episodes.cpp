@@ -112,8 +112,14 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
   const std::int32_t aggregate = aggregates.aggregate_of()[attempt.agent];
   const bool in_time = decision_ - 1 - attempt.start <= episodes_.return_window_steps;
   if (aggregate >= 0) {
-    if (in_time && holds_former_member(attempt, aggregate, aggregates)) {
-      count_return(attempt, aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1);
+    // A return joins an aggregate that lasted while the agent was away. Pairing again with a
+    // former member who searched again (its pair fell apart) makes a new aggregate, which the
+    // models count as a creation; counted as a return too, the measured model kept the pair
+    // and created it again.
+    const std::int32_t joined_size = aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1;
+    const bool lasted = joined_size >= 2 || episodes_.lone_members_wait;
+    if (in_time && lasted && holds_former_member(attempt, aggregate, aggregates)) {
+      count_return(attempt, joined_size);
     }
     return true;
   }

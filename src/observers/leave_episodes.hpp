@@ -12,8 +12,10 @@
 //
 // After its LEAVE phase the attempt stays open as an excursion until the agent is next seen
 // in an aggregate, or until the return window has passed. It is a return when that aggregate
-// holds a member of the one it left and the agent joined it within the window (measured from
-// the start of the attempt). A return remembers how long it took, the size of the aggregate
+// holds a member of the one it left, lasted while the agent was away (two or more members
+// before it came, or one that kept waiting alone: a pair with a former member who searched
+// again is a creation), and the agent joined it within the window (measured from the start of
+// the attempt). A return remembers how long it took, the size of the aggregate
 // it joined, and the searcher exposure it spent away (the aggregates of each size that
 // existed at each decision of the excursion), which a rate of new joins must leave out.
 //
@@ -42,6 +44,9 @@ struct EpisodeRules {
   double escape_radius = 0.0;  // within it a waiting former member holds the leaver
   // Decisions after the attempt starts within which a return counts (0: none counts).
   std::int64_t return_window_steps = 0;
+  // A member left alone keeps waiting (isolated_wait: stay) instead of searching again: coming
+  // back to it restores the pair, a return; otherwise pairing with it is a new pair.
+  bool lone_members_wait = false;
 };
 
 class LeaveEpisodes {

@@ -19,7 +19,8 @@ namespace {
 EpisodeRules episode_rules(const WorldSpec& spec, const ControllerRules& rules) {
   return {.escape_radius = rules.allows(AgentState::Approach) ? spec.controller.approach_radius
                                                               : spec.robots.detection_radius,
-          .return_window_steps = std::llround(spec.return_window() / spec.engine.dt)};
+          .return_window_steps = std::llround(spec.return_window() / spec.engine.dt),
+          .lone_members_wait = spec.controller.isolated_wait == IsolatedWait::Stay};
 }
 
 }  // namespace

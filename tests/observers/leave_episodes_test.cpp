@@ -16,8 +16,9 @@ using testing::Scene;
 constexpr std::int64_t kWindow = 30;
 
 struct Stepper {
-  explicit Stepper(std::int64_t window = 0, double escape_radius = Scene::kDetectionRadius)
-      : episodes{64, EpisodeRules{escape_radius, window},
+  explicit Stepper(std::int64_t window = 0, double escape_radius = Scene::kDetectionRadius,
+                   bool lone_members_wait = false)
+      : episodes{64, EpisodeRules{escape_radius, window, lone_members_wait},
                  ShapeRules{scene.arena, 1.0, RimRule::for_spacing(2.0)}} {}
   Scene scene;
   LeaveEpisodes episodes;
@@ -135,9 +136,10 @@ TEST(LeaveEpisodes, ManyOverlappingAttemptsKeepTheirOwnMembers) {
 // Returns: a triangle at (20, 20); agent `leaver` leaves, walks 6 away, and its timeout ends
 // there (outside s: an escape). What it does next decides whether it returned.
 struct ReturnScene {
-  Stepper s{kWindow};
+  Stepper s;
   AgentId first = 0, leaver = 0;
-  ReturnScene() {
+  explicit ReturnScene(bool lone_members_wait = false)
+      : s{kWindow, Scene::kDetectionRadius, lone_members_wait} {
     first = s.scene.add(20.0, 20.0);
     s.scene.add(22.0, 20.0);
     leaver = s.scene.add(21.0, 21.7);
@@ -181,6 +183,36 @@ TEST(LeaveEpisodes, JoiningAnotherAggregateIsNoReturn) {
   EXPECT_EQ(t.returns_into_size[2], 0);
   EXPECT_EQ(t.returning_aggregate_steps_by_size[2], 0);
   EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // decided: it waited elsewhere
+}
+
+// The pair it left falls apart (its two members search again) and the leaver then pairs with
+// one of them: a new aggregate, a creation, not a return (the models count it as a creation;
+// as a return too, the measured model kept the pair and created it again).
+TEST(LeaveEpisodes, PairingAgainWithAFormerMemberIsNoReturn) {
+  ReturnScene r;
+  const AgentId second = r.first + 1;
+  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
+  r.s.scene.positions[second] = {60.0, 60.0};
+  r.s.scene.positions[r.leaver] = {21.0, 21.7};
+  r.s.step([&](auto& state) { state[r.first] = state[r.leaver] = AgentState::Wait; });
+  r.s.step([](auto&) {});  // seen in the new pair
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 0);
+  EXPECT_EQ(t.returns_into_size[1], 0);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // decided: it waits in an aggregate
+}
+
+// Under isolated_wait: stay the member left alone keeps waiting: coming back to it restores
+// the pair, a return into a "size" of one.
+TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
+  ReturnScene r{true};
+  const AgentId second = r.first + 1;
+  r.s.step([&](auto& state) { state[second] = AgentState::Go; });  // first waits alone
+  r.s.scene.positions[second] = {60.0, 60.0};
+  r.wait_at({21.0, 21.7}, 1);
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 1);
+  EXPECT_EQ(t.returns_into_size[1], 1);
 }
 
 TEST(LeaveEpisodes, ComingBackAfterTheWindowIsNoReturn) {
