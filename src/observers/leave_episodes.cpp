@@ -10,6 +10,7 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   tally_.resize(agent_count);
   const auto agents = static_cast<std::size_t>(agent_count);
   open_.reserve(agents);  // one attempt per agent at most
+  closing_.reserve(agents);
   // Room for several remembered members per agent (attempts stay open through their
   // excursion, up to the return window) and for as many remembered sizes as there are
   // agents (one snapshot per decision that starts attempts), so that most runs never grow
@@ -39,6 +40,7 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
     }
   }
   open_.resize(kept);
+  close_due_attempts();
   // Amortised: each remembered entry is copied at most once per time it is remembered. The
   // snapshots are compacted before they would outgrow their room.
   if (dead_former_ > former_.size() / 2 ||
@@ -106,7 +108,9 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
       ++tally_.escapes_by_size[attempt.size];
     }
     attempt.leaving = false;
-    return episodes_.return_window_steps <= 0;
+    if (episodes_.return_window_steps > 0) return false;
+    close(attempt.size, false, 0);  // no return counts
+    return true;
   }
   // It went WAIT in the decision before the one that first sees it in an aggregate.
   const std::int32_t aggregate = aggregates.aggregate_of()[attempt.agent];
@@ -118,12 +122,44 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
     // and created it again.
     const std::int32_t joined_size = aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1;
     const bool lasted = joined_size >= 2 || episodes_.lone_members_wait;
-    if (in_time && lasted && holds_former_member(attempt, aggregate, aggregates)) {
-      count_return(attempt, joined_size);
-    }
+    const bool returned = in_time && lasted && holds_former_member(attempt, aggregate, aggregates);
+    if (returned) count_return(attempt, joined_size);
+    close_when_due(attempt, returned);
     return true;
   }
-  return !in_time;
+  if (in_time) return false;
+  close(attempt.size, false, 0);
+  return true;
+}
+
+void LeaveEpisodes::close_when_due(const OpenAttempt& attempt, bool returned) {
+  const std::int64_t away = decision_ - 1 - attempt.start;
+  if (window_closed(attempt.start)) {
+    close(attempt.size, returned, away);
+  } else {
+    closing_.push_back({attempt.start, attempt.size, returned, away});
+  }
+}
+
+void LeaveEpisodes::close(std::int32_t size, bool returned, std::int64_t away) {
+  const auto m = static_cast<std::size_t>(size);
+  ++tally_.return_attempts_by_size[m];
+  if (!returned) return;
+  ++tally_.returns_by_size[m];
+  tally_.return_steps_by_size[m] += away;
+  tally_.return_square_steps_by_size[m] += away * away;
+}
+
+void LeaveEpisodes::close_due_attempts() {
+  std::size_t kept = 0;
+  for (const Closing& c : closing_) {
+    if (window_closed(c.start)) {
+      close(c.size, c.returned, c.away);
+    } else {
+      closing_[kept++] = c;
+    }
+  }
+  closing_.resize(kept);
 }
 
 // The aggregate's members when the attempt started, the agent itself among them (which no
@@ -154,11 +190,6 @@ bool LeaveEpisodes::holds_former_member(const OpenAttempt& attempt, std::int32_t
 // The exposure spent away: the aggregate steps by size counted since the attempt started
 // (sizes that had never existed then were at 0).
 void LeaveEpisodes::count_return(const OpenAttempt& attempt, std::int32_t joined_size) {
-  const auto m = static_cast<std::size_t>(attempt.size);
-  ++tally_.returns_by_size[m];
-  const std::int64_t away = decision_ - 1 - attempt.start;
-  tally_.return_steps_by_size[m] += away;
-  tally_.return_square_steps_by_size[m] += away * away;
   ++tally_.returns_into_size[static_cast<std::size_t>(joined_size)];
   for (std::size_t k = 0; k < sizes_seen_; ++k) {
     const std::int64_t before = k < attempt.sizes ? sizes_at_start_[attempt.sizes_first + k] : 0;

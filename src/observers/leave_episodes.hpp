@@ -15,9 +15,12 @@
 // holds a member of the one it left, lasted while the agent was away (two or more members
 // before it came, or one that kept waiting alone: a pair with a former member who searched
 // again is a creation), and the agent joined it within the window (measured from the start of
-// the attempt). A return remembers how long it took, the size of the aggregate
-// it joined, and the searcher exposure it spent away (the aggregates of each size that
-// existed at each decision of the excursion), which a rate of new joins must leave out.
+// the attempt). The fraction that returned counts only attempts whose window closed within
+// the run: at its end, one still away could yet have come back (a run of 200 tu cut 15 % of
+// its attempts short, and counted them as not returning). A return remembers how long it
+// took, the size of the aggregate it joined, and the searcher exposure it spent away (the
+// aggregates of each size that existed at each decision of the excursion), which a rate of
+// new joins must leave out.
 //
 // observe_decision() runs once per step, between the controller's decision and the engine's
 // move, so the rim and the escape are judged on exactly what the controller saw when it
@@ -99,6 +102,13 @@ class LeaveEpisodes {
   std::span<const AgentId> former_members(const OpenAttempt& attempt) const;
   void start_attempt(AgentId agent, std::int32_t size, bool rim);
   void count_return(const OpenAttempt& attempt, std::int32_t joined_size);
+  // An attempt decided before its return window closed waits in closing_ until it closes.
+  void close_when_due(const OpenAttempt& attempt, bool returned);
+  void close(std::int32_t size, bool returned, std::int64_t away);
+  void close_due_attempts();
+  bool window_closed(std::int64_t start) const {
+    return decision_ - 1 - start > episodes_.return_window_steps;
+  }
   void compact();
 
   EpisodeRules episodes_;
@@ -109,6 +119,13 @@ class LeaveEpisodes {
   std::vector<AgentId> members_;  // of the aggregate an attempt leaves
   std::vector<Leaver> leavers_;   // of the decision at hand
   std::vector<OpenAttempt> open_;
+  struct Closing {
+    std::int64_t start = 0;
+    std::int32_t size = 0;
+    bool returned = false;
+    std::int64_t away = 0;  // steps, for a return
+  };
+  std::vector<Closing> closing_;
   std::vector<AgentId> former_;  // sorted ranges, one per FormerSet (live or dead)
   std::vector<FormerSet> former_sets_;
   std::vector<std::uint32_t> renumbered_;  // compact()'s: the new index of each former set

@@ -17,6 +17,7 @@ void LeaveTally::resize(int agent_count) {
   attempts_by_size.resize(sizes, 0);
   escapes_by_size.resize(sizes, 0);
   aggregate_steps_by_size.resize(sizes, 0);
+  return_attempts_by_size.resize(sizes, 0);
   returns_by_size.resize(sizes, 0);
   return_steps_by_size.resize(sizes, 0);
   return_square_steps_by_size.resize(sizes, 0);
@@ -38,6 +39,7 @@ LeaveTally& LeaveTally::operator+=(const LeaveTally& other) {
   add_by_size(attempts_by_size, other.attempts_by_size);
   add_by_size(escapes_by_size, other.escapes_by_size);
   add_by_size(aggregate_steps_by_size, other.aggregate_steps_by_size);
+  add_by_size(return_attempts_by_size, other.return_attempts_by_size);
   add_by_size(returns_by_size, other.returns_by_size);
   add_by_size(return_steps_by_size, other.return_steps_by_size);
   add_by_size(return_square_steps_by_size, other.return_square_steps_by_size);

@@ -133,10 +133,10 @@ void add_return_rows(const WorldSpec& world, const RateTally& tally, std::vector
   const std::string model = is_soysal(world) ? "soysal" : "bayindir";
   for (int m = 2; m <= tally.agents; ++m) {
     const auto index = static_cast<std::size_t>(m);
-    if (tally.attempts[index] == 0) continue;
+    if (tally.return_attempts[index] == 0) continue;
     RateRow row{.term = "return",
                 .size = m,
-                .estimate = estimate_fraction(tally.returns[index], tally.attempts[index])};
+                .estimate = estimate_fraction(tally.returns[index], tally.return_attempts[index])};
     row.models.push_back({model, kReturnsVariant, attempt_return_probability(world, m)});
     rows.push_back(row);
   }

@@ -14,7 +14,8 @@
 //    periph(m)), Soysal L(m)).
 //  - join_new, by the size m joined: joins that are not returns, per searcher (away agents
 //    left out) per size-m aggregate per tu; models as growth;
-//  - return, by the size m left: the fraction of attempts that came back (binomial interval);
+//  - return, by the size m left: the fraction of attempts that came back, of those whose
+//    return window closed within the run (binomial interval);
 //    model: the returns variant's q over every attempt (models/return_probability.hpp);
 //  - return_time, by the size m left: the mean time away of a return in tu (no model);
 //  - radius and rim, by size m: the aggregates' mean outer radius and rim count.

@@ -13,6 +13,7 @@ RateTally::RateTally(int agent_count)
       attempts(static_cast<std::size_t>(agent_count) + 1, 0),
       escapes(static_cast<std::size_t>(agent_count) + 1, 0),
       leave_aggregate_steps(static_cast<std::size_t>(agent_count) + 1, 0),
+      return_attempts(static_cast<std::size_t>(agent_count) + 1, 0),
       returns(static_cast<std::size_t>(agent_count) + 1, 0),
       return_steps(static_cast<std::size_t>(agent_count) + 1, 0),
       return_square_steps(static_cast<std::size_t>(agent_count) + 1, 0),
@@ -35,6 +36,7 @@ void RateTally::merge(const RateTally& other) {
     attempts[m] += other.attempts[m];
     escapes[m] += other.escapes[m];
     leave_aggregate_steps[m] += other.leave_aggregate_steps[m];
+    return_attempts[m] += other.return_attempts[m];
     returns[m] += other.returns[m];
     return_steps[m] += other.return_steps[m];
     return_square_steps[m] += other.return_square_steps[m];

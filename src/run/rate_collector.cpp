@@ -50,6 +50,7 @@ class RateObserver final : public ReplicateObserver {
     copy(leave.attempts_by_size, tally.attempts);
     copy(leave.escapes_by_size, tally.escapes);
     copy(leave.aggregate_steps_by_size, tally.leave_aggregate_steps);
+    copy(leave.return_attempts_by_size, tally.return_attempts);
     copy(leave.returns_by_size, tally.returns);
     copy(leave.return_steps_by_size, tally.return_steps);
     copy(leave.return_square_steps_by_size, tally.return_square_steps);

@@ -155,6 +155,10 @@ struct ReturnScene {
     s.step([&](auto& state) { state[leaver] = AgentState::Wait; });
     s.step([](auto&) {});
   }
+  // Steps on until the attempt's return window (kWindow decisions from decision 1) closed.
+  void close_window() {
+    for (int k = 0; k <= kWindow; ++k) s.step([](auto&) {});
+  }
 };
 
 TEST(LeaveEpisodes, ALeaverThatComesBackReturns) {
@@ -163,9 +167,14 @@ TEST(LeaveEpisodes, ALeaverThatComesBackReturns) {
   EXPECT_EQ(r.s.episodes.open_attempts(), 1u);  // on its excursion
   r.wait_at({21.0, 21.7}, 4);                   // waits again at decision 8
   const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_into_size[2], 1);  // the pair it left behind: no new join
+  // The return fraction takes it once its window closed: a run ending earlier leaves it out,
+  // as it leaves out the attempts still away then.
+  EXPECT_EQ(t.return_attempts_by_size[3], 0);
+  r.close_window();
+  EXPECT_EQ(t.return_attempts_by_size[3], 1);
   EXPECT_EQ(t.returns_by_size[3], 1);
   EXPECT_EQ(t.return_steps_by_size[3], 8 - 1);  // from decision 1 to decision 8
-  EXPECT_EQ(t.returns_into_size[2], 1);         // the pair it left behind
   // Away from decision 1 to 8 it saw the pair (size 2) at decisions 2..8 and its triangle
   // (size 3) at none of them: the triangle was counted at decision 1, before it left.
   EXPECT_EQ(t.returning_aggregate_steps_by_size[2], 7);
@@ -178,11 +187,27 @@ TEST(LeaveEpisodes, JoiningAnotherAggregateIsNoReturn) {
   r.s.scene.add(60.0, 60.0);
   r.s.scene.add(62.0, 60.0);
   r.wait_at({61.0, 61.7}, 4);
+  r.close_window();
   const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.return_attempts_by_size[3], 1);
   EXPECT_EQ(t.returns_by_size[3], 0);
   EXPECT_EQ(t.returns_into_size[2], 0);
   EXPECT_EQ(t.returning_aggregate_steps_by_size[2], 0);
   EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // decided: it waited elsewhere
+}
+
+// An attempt still away when the run ends could yet come back: it counts as an attempt, not
+// in the return fraction (which took it as a failure to return, 15 % of a 200-tu run's).
+TEST(LeaveEpisodes, AnAttemptTheRunCutsShortIsLeftOutOfTheReturnFraction) {
+  ReturnScene r;
+  for (int k = 0; k < 10; ++k) r.s.step([](auto&) {});
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.attempts_by_size[3], 1);
+  EXPECT_EQ(t.return_attempts_by_size[3], 0);
+  EXPECT_EQ(r.s.episodes.open_attempts(), 1u);
+  r.close_window();  // never came back: now a failure to return
+  EXPECT_EQ(t.return_attempts_by_size[3], 1);
+  EXPECT_EQ(t.returns_by_size[3], 0);
 }
 
 // The pair it left falls apart (its two members search again) and the leaver then pairs with
@@ -210,6 +235,7 @@ TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
   r.s.step([&](auto& state) { state[second] = AgentState::Go; });  // first waits alone
   r.s.scene.positions[second] = {60.0, 60.0};
   r.wait_at({21.0, 21.7}, 1);
+  r.close_window();
   const LeaveTally& t = r.s.episodes.tally();
   EXPECT_EQ(t.returns_by_size[3], 1);
   EXPECT_EQ(t.returns_into_size[1], 1);
@@ -219,6 +245,7 @@ TEST(LeaveEpisodes, ComingBackAfterTheWindowIsNoReturn) {
   ReturnScene r;
   r.wait_at({21.0, 21.7}, static_cast<int>(kWindow));  // waits again at decision 34 > 1 + 30
   const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.return_attempts_by_size[3], 1);
   EXPECT_EQ(t.returns_by_size[3], 0);
   EXPECT_EQ(t.return_steps_by_size[3], 0);
   EXPECT_EQ(r.s.episodes.open_attempts(), 0u);  // given up when the window passed

@@ -3,8 +3,10 @@
 A Soysal world whose agents leave often runs with every step stored. From the stored states
 and aggregate ids alone, this test follows every LEAVE attempt (a WAIT agent of an aggregate
 that goes LEAVE) to the agent's next step in an aggregate, and counts a return when that
-aggregate holds a member of the one it left within the return window. The fraction must agree
-with rates.csv's `return` rows within 0.05.
+aggregate holds a member of the one it left and had two or more members before the agent came
+(a new pair with a former member is a creation), within the return window. Attempts whose
+window had not closed when the run ended are left out (they could yet return). The fraction
+must agree with rates.csv's `return` rows within 0.05.
 """
 import csv
 import os
@@ -45,6 +47,10 @@ def returns_from_trajectories(path):
                 starts = np.nonzero((state[:-1, agent] == WAIT) & (state[1:, agent] == LEAVE)
                                     & (aggregate[:-1, agent] >= 0))[0] + 1
                 for t in starts:
+                    # The decision of step t started the attempt; its window closes by the
+                    # run's last decision (rows - 1) when t + window + 2 < rows.
+                    if t + window + 2 >= rows:
+                        continue
                     left = aggregate[t - 1, agent]
                     former = [j for j in range(agents) if j != agent and aggregate[t - 1, j] == left]
                     attempts += 1
@@ -53,7 +59,9 @@ def returns_from_trajectories(path):
                         continue
                     back = t + 1 + later[0]
                     joined = aggregate[back, agent]
-                    if back - t <= window and any(aggregate[back, j] == joined for j in former):
+                    lasted = np.count_nonzero(aggregate[back] == joined) - 1 >= 2
+                    if back - t <= window and lasted and any(aggregate[back, j] == joined
+                                                             for j in former):
                         returns += 1
     return returns, attempts
 
