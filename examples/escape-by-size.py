@@ -98,8 +98,9 @@ def main(folder):
         print("size  aggregate_tu  attempts  escapes  escape/tu  exact 95% interval   m p/dt"
               "  periph p/dt  rate/(m p/dt)  rate/(periph p/dt)")
         for r in rows:
-            low = float(table[r["size"]][f"{engine}_ci95_low"])
-            high = float(table[r["size"]][f"{engine}_ci95_high"])
+            csv_row = table.get(r["size"], {})
+            low = float(csv_row.get(f"{engine}_ci95_low", "nan"))
+            high = float(csv_row.get(f"{engine}_ci95_high", "nan"))
             print(f"{r['size']:4d}  {r['time']:12.1f}  {r['attempts']:8d}  {r['escapes']:7d}"
                   f"  {r['rate']:9.5f}  [{low:7.5f}, {high:7.5f}]  {r['all']:7.4f}"
                   f"  {r['periph']:11.4f}  {r['rate'] / r['all']:13.3f}"

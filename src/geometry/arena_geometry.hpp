@@ -46,8 +46,9 @@ class ArenaGeometry {
     return torus_ ? quarter - 0.5 * radius : quarter;
   }
 
-  // Positions across the arena are resolved to about this much: a move shorter than it is
-  // lost in their rounding, or rounded to one ulp in a direction it did not have.
+  // The shortest move a world may ask for (robots.speed * engine.dt): 10^-12 of the longer
+  // side, some 4,500 ulps of a coordinate at the far edge, so that a step's move is never lost
+  // in the rounding of positions.
   double position_resolution() const { return 1e-12 * std::max(width_, height_); }
 
   static double minimum_image(double d, double length) {

@@ -11,6 +11,7 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   const auto agents = static_cast<std::size_t>(agent_count);
   open_.reserve(agents);  // one attempt per agent at most
   closing_.reserve(agents);
+  waiting_since_.assign(agents, kNotWaiting);
   // Room for several remembered members per agent (attempts stay open through their
   // excursion, up to the return window) and for as many remembered sizes as there are
   // agents (one snapshot per decision that starts attempts), so that most runs never grow
@@ -51,6 +52,16 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
     sizes_seen_ = std::max(sizes_seen_, static_cast<std::size_t>(size) + 1);
   }
   start_attempts(aggregates, positions, state);
+  note_waiting(state);
+}
+
+// After the attempts were advanced on the states before this decision.
+void LeaveEpisodes::note_waiting(std::span<const AgentState> state) {
+  std::int64_t* since = waiting_since_.data();
+  const std::int64_t now = decision_;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    since[i] = state[i] == AgentState::Wait ? std::min(since[i], now) : kNotWaiting;
+  }
 }
 
 // Every agent in an aggregate was waiting when the decision started, so one now leaving has
@@ -116,14 +127,13 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
   const std::int32_t aggregate = aggregates.aggregate_of()[attempt.agent];
   const bool in_time = decision_ - 1 - attempt.start <= episodes_.return_window_steps;
   if (aggregate >= 0) {
-    // A return joins an aggregate that lasted while the agent was away. Pairing again with a
-    // former member who searched again (its pair fell apart) makes a new aggregate, which the
-    // models count as a creation; counted as a return too, the measured model kept the pair
-    // and created it again.
-    const std::int32_t joined_size = aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1;
-    const bool lasted = joined_size >= 2 || episodes_.lone_members_wait;
-    const bool returned = in_time && lasted && holds_former_member(attempt, aggregate, aggregates);
-    if (returned) count_return(attempt, joined_size);
+    // A return joins a former member that kept waiting. Pairing again with one who searched
+    // again (its pair fell apart) makes a new aggregate, which the models count as a creation;
+    // counted as a return too, the measured model kept the pair and created it again.
+    const bool returned = in_time && holds_former_member(attempt, aggregate, aggregates);
+    if (returned) {
+      count_return(attempt, aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1);
+    }
     close_when_due(attempt, returned);
     return true;
   }
@@ -183,7 +193,8 @@ bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& ne
 bool LeaveEpisodes::holds_former_member(const OpenAttempt& attempt, std::int32_t aggregate,
                                         const AggregateTracker& aggregates) const {
   return std::ranges::any_of(former_members(attempt), [&](AgentId j) {
-    return j != attempt.agent && aggregates.aggregate_of()[j] == aggregate;
+    return j != attempt.agent && aggregates.aggregate_of()[j] == aggregate &&
+           waiting_since_[j] <= attempt.start;
   });
 }
 

@@ -12,15 +12,15 @@
 //
 // After its LEAVE phase the attempt stays open as an excursion until the agent is next seen
 // in an aggregate, or until the return window has passed. It is a return when that aggregate
-// holds a member of the one it left, lasted while the agent was away (two or more members
-// before it came, or one that kept waiting alone: a pair with a former member who searched
-// again is a creation), and the agent joined it within the window (measured from the start of
-// the attempt). The fraction that returned counts only attempts whose window closed within
-// the run: at its end, one still away could yet have come back (a run of 200 tu cut 15 % of
-// its attempts short, and counted them as not returning). A return remembers how long it
-// took, the size of the aggregate it joined, and the searcher exposure it spent away (the
-// aggregates of each size that existed at each decision of the excursion), which a rate of
-// new joins must leave out.
+// holds a member of the one it left that kept waiting all the while (alone, too, under
+// isolated_wait: stay), and the agent joined it within the window (measured from the start of
+// the attempt). A former member who searched again in between (its pair fell apart) and then
+// waits beside the agent is in a new aggregate, a creation or a join of another one. The fraction
+// that returned counts only attempts whose window closed within the run: at its end, one still away
+// could yet have come back (a run of 200 tu cut 15 % of its attempts short, and counted them as not
+// returning). A return remembers how long it took, the size of the aggregate it joined, and the
+// searcher exposure it spent away (the aggregates of each size that existed at each decision of the
+// excursion), which a rate of new joins must leave out.
 //
 // observe_decision() runs once per step, between the controller's decision and the engine's
 // move, so the rim and the escape are judged on exactly what the controller saw when it
@@ -32,6 +32,7 @@
 // 64 members: room for 4N remembered members, N remembered sizes and N member lists is reserved
 // up front, and only worlds whose open attempts remember more grow it, to a high-water mark.
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -47,9 +48,6 @@ struct EpisodeRules {
   double escape_radius = 0.0;  // within it a waiting former member holds the leaver
   // Decisions after the attempt starts within which a return counts (0: none counts).
   std::int64_t return_window_steps = 0;
-  // A member left alone keeps waiting (isolated_wait: stay) instead of searching again: coming
-  // back to it restores the pair, a return; otherwise pairing with it is a new pair.
-  bool lone_members_wait = false;
 };
 
 class LeaveEpisodes {
@@ -119,6 +117,11 @@ class LeaveEpisodes {
   std::vector<AgentId> members_;  // of the aggregate an attempt leaves
   std::vector<Leaver> leavers_;   // of the decision at hand
   std::vector<OpenAttempt> open_;
+  // Per agent, the decision since which it has waited without a break (kNotWaiting: it does
+  // not wait), as the state after each decision says.
+  static constexpr std::int64_t kNotWaiting = std::numeric_limits<std::int64_t>::max();
+  std::vector<std::int64_t> waiting_since_;
+  void note_waiting(std::span<const AgentState> state);
   struct Closing {
     std::int64_t start = 0;
     std::int32_t size = 0;

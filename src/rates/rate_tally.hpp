@@ -25,12 +25,12 @@ struct RateTally {
   // LEAVE episodes by the size m of the aggregate left (observers/leave_episodes.hpp): the
   // attempts, the escapes and their exposure (aggregates of size m at each decision).
   std::vector<std::uint64_t> attempts, escapes, leave_aggregate_steps;
-  // Returns (a leaver back in an aggregate holding a member of the one it left, within
-  // rates.return_window): [m] by the size m left, the attempts whose window closed within the
-  // run, the returns among them and their summed steps away (and squares); [j] by the size j of
-  // the aggregate joined on return (1: a lone member that kept waiting); [k] the
-  // searcher-aggregate steps (y n_k) of returning agents while away, which new joins leave out
-  // of their exposure (these two over every return).
+  // Returns (a leaver back in an aggregate holding a member of the one it left who kept
+  // waiting, within rates.return_window; observers/leave_episodes.hpp): [m] by the size m left, the
+  // attempts whose window closed within the run, the returns among them and their summed steps away
+  // (and squares); [j] by the size j of the aggregate joined on return (1: a lone member that kept
+  // waiting); [k] the searcher-aggregate steps (y n_k) of returning agents while away, which new
+  // joins leave out of their exposure (these two over every return).
   std::vector<std::uint64_t> return_attempts, returns, return_steps, return_square_steps,
       returns_into, returning_searcher_steps;
   // [m] the geometry of size-m aggregates (docs/models.md) observed at the recorded steps after the

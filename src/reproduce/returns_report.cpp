@@ -268,9 +268,9 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
       "## Why the models miss\n\nBoth models treat a leaver as a fresh searcher. Each run "
       "follows every LEAVE attempt (`rates.csv`, terms `return`, `return_time`, `join_new`; "
       "docs/models-returns.md) and counts a return when the leaver's next WAIT is in an "
-      "aggregate holding a member of the one it left that lasted while it was away (pairing "
-      "again with a former member who searched again is a creation), within 3 leave timeouts. "
-      "The numbers below are this run's.\n\n";
+      "aggregate holding a member of the one it left who kept waiting all the while (one who "
+      "searched again in between is in a new aggregate), within 3 leave timeouts. The numbers "
+      "below are this run's.\n\n";
   for (const FigureResult& r : results) {
     const std::vector<VariantError>* errors = model_errors(r);
     if (!errors || r.rates.empty()) continue;

@@ -139,12 +139,13 @@ std::vector<VariantPrediction> write_model_outputs(const WorldSpec& spec,
     throw;
   }
   progress.finish();
-  // A controller without a model has no variant files: no empty folder for them.
-  if (variants.empty()) made.remove_if_empty();
   // A variant the earlier model of the folder had (`measured`, say) would stay beside these;
   // files of yours in model-timeseries/ stay.
   std::error_code error;
   for (const std::string& file : stale) std::filesystem::remove(series / file, error);
+  // A controller without a model has no variant files: no empty folder for them (remove()
+  // leaves a folder that still holds something).
+  if (variants.empty()) std::filesystem::remove(series, error);
   return written;
 }
 

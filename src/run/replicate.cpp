@@ -3,6 +3,7 @@
 #include <cmath>
 #include <new>
 #include <stdexcept>
+#include <system_error>
 
 #include "control_interface/command_check.hpp"
 #include "core/errors.hpp"
@@ -19,8 +20,7 @@ namespace {
 EpisodeRules episode_rules(const WorldSpec& spec, const ControllerRules& rules) {
   return {.escape_radius = rules.allows(AgentState::Approach) ? spec.controller.approach_radius
                                                               : spec.robots.detection_radius,
-          .return_window_steps = std::llround(spec.return_window() / spec.engine.dt),
-          .lone_members_wait = spec.controller.isolated_wait == IsolatedWait::Stay};
+          .return_window_steps = std::llround(spec.return_window() / spec.engine.dt)};
 }
 
 }  // namespace
@@ -94,6 +94,12 @@ void Replicate::step() {
     events_.encounters += engine_->step(commands_, signals_).encounters;
   } catch (const BadCommand& e) {
     throw std::runtime_error(controller_context() + e.what());
+  } catch (const InputError&) {
+    throw;  // callers tell these apart by type (exit codes, Python's exceptions)
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const std::system_error&) {
+    throw;
   } catch (const std::runtime_error& e) {
     // An engine that cannot go on (a push Box2D would clamp, say): where, to reproduce it.
     throw std::runtime_error("replicate " + std::to_string(index_) + ", step " +

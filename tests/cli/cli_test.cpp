@@ -212,6 +212,15 @@ TEST(Cli, AControllerWithoutAModelGetsAHeaderOnlyModelCsvAndANote) {
   EXPECT_EQ(text, "model,variant,step,time,quantity,value\n");
   EXPECT_FALSE(std::filesystem::exists(out / "model-timeseries"));
   std::filesystem::remove_all(out);
+  // `model` into a folder an earlier model wrote: its variant files go, and their folder too.
+  const std::filesystem::path models = temp_dir("no-model-after-a-model");
+  const std::string into = " --quiet --out " + models.string();
+  ASSERT_EQ(swarmagg("model worlds/examples/demo.yaml" + into).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(models / "model-timeseries"));
+  const Outcome again = swarmagg("model worlds/examples/cockroach.yaml" + into);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_FALSE(std::filesystem::exists(models / "model-timeseries"));
+  std::filesystem::remove_all(models);
 }
 
 // A folder `rates` wrote holds the rates of another run: `run --force` without --rates leaves

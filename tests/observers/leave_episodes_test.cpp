@@ -16,9 +16,8 @@ using testing::Scene;
 constexpr std::int64_t kWindow = 30;
 
 struct Stepper {
-  explicit Stepper(std::int64_t window = 0, double escape_radius = Scene::kDetectionRadius,
-                   bool lone_members_wait = false)
-      : episodes{64, EpisodeRules{escape_radius, window, lone_members_wait},
+  explicit Stepper(std::int64_t window = 0, double escape_radius = Scene::kDetectionRadius)
+      : episodes{64, EpisodeRules{escape_radius, window},
                  ShapeRules{scene.arena, 1.0, RimRule::for_spacing(2.0)}} {}
   Scene scene;
   LeaveEpisodes episodes;
@@ -136,10 +135,9 @@ TEST(LeaveEpisodes, ManyOverlappingAttemptsKeepTheirOwnMembers) {
 // Returns: a triangle at (20, 20); agent `leaver` leaves, walks 6 away, and its timeout ends
 // there (outside s: an escape). What it does next decides whether it returned.
 struct ReturnScene {
-  Stepper s;
+  Stepper s{kWindow};
   AgentId first = 0, leaver = 0;
-  explicit ReturnScene(bool lone_members_wait = false)
-      : s{kWindow, Scene::kDetectionRadius, lone_members_wait} {
+  ReturnScene() {
     first = s.scene.add(20.0, 20.0);
     s.scene.add(22.0, 20.0);
     leaver = s.scene.add(21.0, 21.7);
@@ -230,7 +228,7 @@ TEST(LeaveEpisodes, PairingAgainWithAFormerMemberIsNoReturn) {
 // Under isolated_wait: stay the member left alone keeps waiting: coming back to it restores
 // the pair, a return into a "size" of one.
 TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
-  ReturnScene r{true};
+  ReturnScene r;
   const AgentId second = r.first + 1;
   r.s.step([&](auto& state) { state[second] = AgentState::Go; });  // first waits alone
   r.s.scene.positions[second] = {60.0, 60.0};
@@ -239,6 +237,41 @@ TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
   const LeaveTally& t = r.s.episodes.tally();
   EXPECT_EQ(t.returns_by_size[3], 1);
   EXPECT_EQ(t.returns_into_size[1], 1);
+}
+
+// Its pair falls apart; the former member searches, then waits again at the same moment as
+// the leaver and a stranger beside it: a new aggregate of three (found by review: an aggregate
+// of two or more before the leaver came was taken for one that lasted).
+TEST(LeaveEpisodes, ANewAggregateFormedWithAFormerMemberIsNoReturn) {
+  ReturnScene r;
+  const AgentId second = r.first + 1;
+  const AgentId stranger = r.s.scene.add(40.0, 40.0, AgentState::Go);
+  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
+  r.s.scene.positions[second] = {60.0, 60.0};
+  r.s.scene.positions[stranger] = {22.0, 20.0};
+  r.s.scene.positions[r.leaver] = {21.0, 21.7};
+  r.s.step(
+      [&](auto& state) { state[r.first] = state[stranger] = state[r.leaver] = AgentState::Wait; });
+  r.s.step([](auto&) {});
+  r.close_window();
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.return_attempts_by_size[3], 1);
+  EXPECT_EQ(t.returns_by_size[3], 0);
+}
+
+// The former member searched again and paired with a stranger; the leaver joins that new pair.
+TEST(LeaveEpisodes, JoiningAFormerMembersNewPairIsNoReturn) {
+  ReturnScene r;
+  const AgentId second = r.first + 1;
+  const AgentId stranger = r.s.scene.add(22.0, 20.0, AgentState::Go);
+  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
+  r.s.scene.positions[second] = {60.0, 60.0};
+  r.s.step([&](auto& state) { state[r.first] = state[stranger] = AgentState::Wait; });
+  r.wait_at({21.0, 21.7}, 1);
+  r.close_window();
+  const LeaveTally& t = r.s.episodes.tally();
+  EXPECT_EQ(t.returns_by_size[3], 0);
+  EXPECT_EQ(t.returns_into_size[2], 0);
 }
 
 TEST(LeaveEpisodes, ComingBackAfterTheWindowIsNoReturn) {

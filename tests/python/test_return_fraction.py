@@ -3,10 +3,10 @@
 A Soysal world whose agents leave often runs with every step stored. From the stored states
 and aggregate ids alone, this test follows every LEAVE attempt (a WAIT agent of an aggregate
 that goes LEAVE) to the agent's next step in an aggregate, and counts a return when that
-aggregate holds a member of the one it left and had two or more members before the agent came
-(a new pair with a former member is a creation), within the return window. Attempts whose
-window had not closed when the run ended are left out (they could yet return). The fraction
-must agree with rates.csv's `return` rows within 0.05.
+aggregate holds a member of the one it left that kept waiting all the while (one that searched
+again in between is in a new aggregate), within the return window. Attempts whose window had
+not closed when the run ended are left out (they could yet return). The attempts and the
+returns must match rates.csv's `return` rows exactly.
 """
 import csv
 import os
@@ -59,9 +59,9 @@ def returns_from_trajectories(path):
                         continue
                     back = t + 1 + later[0]
                     joined = aggregate[back, agent]
-                    lasted = np.count_nonzero(aggregate[back] == joined) - 1 >= 2
-                    if back - t <= window and lasted and any(aggregate[back, j] == joined
-                                                             for j in former):
+                    if back - t <= window and any(aggregate[back, j] == joined
+                                                  and np.all(state[t:back, j] == WAIT)
+                                                  for j in former):
                         returns += 1
     return returns, attempts
 
@@ -90,4 +90,4 @@ def test_rates_return_fraction_matches_trajectories(tmp_path):
     rate_returns, rate_attempts = returns_from_rates(out / "rates.csv")
     assert h5_attempts >= 100, "too few attempts for the comparison to mean anything"
     assert rate_attempts == h5_attempts
-    assert abs(h5_returns / h5_attempts - rate_returns / rate_attempts) <= 0.05
+    assert rate_returns == h5_returns

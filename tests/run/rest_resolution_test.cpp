@@ -55,5 +55,30 @@ TEST(RestResolution, ADenseWorldOfWaitingAgentsFallsAsleepWholeAndStays) {
   }
 }
 
+// Two searchers meant to halt on each other, in an arena so vast that 10^-12 of its side is
+// more than the hair a perceiving halt stops inside s: their last moves are below that and were
+// dropped, and the pair stood just outside s for ever, meeting anew every step (NOA 0, 45
+// encounters in 50 steps). Dropped moves are now also held below a quarter of that hair.
+TEST(RestResolution, TwoSearchersMeetInAVastArena) {
+  for (const char* side : {"5000", "1000000"}) {
+    std::string text = "name: vast\narena: {width: ";
+    text += side;
+    text += ", height: ";
+    text += side;
+    text += R"(, topology: torus}
+robots:
+  placement: [[100, 20, 0], [105.000000005, 20, 180]]
+controller: {type: bayindir, p_leave: 0.0}
+run: {duration: 5}
+)";
+    const WorldSpec spec = load_world_text(text, "vast");
+    Replicate replicate(spec, 0);
+    replicate.set_checking(true);
+    for (int step = 0; step < 50; ++step) replicate.step();
+    EXPECT_EQ(replicate.aggregates().count(), 1) << side;
+    EXPECT_EQ(replicate.events().encounters, 1u) << side;
+  }
+}
+
 }  // namespace
 }  // namespace swarmagg

@@ -50,10 +50,12 @@ struct MotionLimits {
   // otherwise slide ever slower towards where the pull lies along the normal, never quite
   // coming to rest (a closing-up member does so for thousands of steps).
   double min_slide_speed = 0.0;
-  // A whole step's move shorter than this (squared) is dropped: the agent stays put. Rounded
-  // to the positions' resolution, such a move becomes one ulp along an axis, which can point
-  // into a body the agent touches; it then sinks by an ulp a step and keeps its aggregate
-  // awake for ever.
+  // A step's move that events changed (a halt, a slide) and that is shorter than this
+  // (squared) is dropped: the agent stays put. Such a move, far below anything a world asks
+  // for, comes from an event a hair into the step; rounded to the grid of doubles it becomes
+  // one ulp along an axis, which can point into a body the agent touches, and the agent then
+  // sinks by an ulp a step and keeps its aggregate awake for ever. A move as commanded is
+  // never dropped.
   double unresolved_move2 = 0.0;
 };
 
@@ -95,7 +97,8 @@ class GuardedMotion {
                         const MotionLimits& limits, std::span<const Vec2> positions = {});
   // The displacement of `agent` over the step resolved last.
   Vec2 displacement(std::uint32_t agent) const {
-    const Vec2 moved = displacement_travelled(agent, limits_.dt);
+    if (!bent(agent)) return commands_[agent].velocity * limits_.dt;
+    const Vec2 moved = travelled_on(leg_[agent], limits_.dt);
     return norm2(moved) < limits_.unresolved_move2 ? Vec2{} : moved;
   }
   // Requests what displacement(agent) reads into the cache: a loop over the bent agents

@@ -28,9 +28,22 @@ bool zero_velocity(Vec2 v) {
   return (v.x == 0.0) & (v.y == 0.0);
 }
 
+// Perceiving halts stop a hair inside the detection radius, this fraction of it: the halted
+// pair then perceives each other.
+constexpr double kHaltInside = 1e-9;
 // Slides slower than this fraction of the nominal speed halt (MotionLimits::min_slide_speed):
 // as Box2D lets bodies slower than its linear sleep tolerance (0.01) come to rest.
 constexpr double kMinSlideFraction = 0.01;
+// Below the world's shortest move (ArenaGeometry::position_resolution), and below a quarter
+// of the hair a perceiving halt stops inside s: two searchers meant to halt on each other whose
+// last moves were both dropped are still within s (in an arena of 5,000 u, 10^-12 of its side
+// exceeds that hair, and such a pair froze just outside s for ever).
+double unresolved_move2(const ArenaGeometry& arena, double detection_radius) {
+  const double longest =
+      std::min(arena.position_resolution(), 0.25 * kHaltInside * detection_radius);
+  return longest * longest;
+}
+
 // Agents per move task below which waking another thread costs more than it saves.
 constexpr std::size_t kAgentsPerMoveTask = 65536;
 // The Verlet list's skin, in steps of two agents at the nominal speed closing in on each
@@ -74,9 +87,8 @@ class KinematicEngine final : public Engine {
  public:
   KinematicEngine(const WorldSpec& spec, std::span<const Vec2> initial_positions)
       : arena_(spec.arena.geometry()),
-        // Halting a hair inside s guarantees the halted pair perceives each other afterwards.
         limits_{
-            spec.robots.detection_radius * (1.0 - 1e-9),
+            spec.robots.detection_radius * (1.0 - kHaltInside),
             2.0 * spec.robots.radius,
             spec.engine.dt,
             spec.engine.contact,
@@ -84,7 +96,7 @@ class KinematicEngine final : public Engine {
             WallBounds{{spec.robots.radius, spec.robots.radius},
                        {arena_.width() - spec.robots.radius, arena_.height() - spec.robots.radius}},
             kMinSlideFraction * spec.robots.speed,
-            arena_.position_resolution() * arena_.position_resolution()},
+            unresolved_move2(arena_, spec.robots.detection_radius)},
         body_radius_(spec.robots.radius),
         sensing_radius_(spec.perception_radius()),
         nominal_speed_(spec.robots.speed),

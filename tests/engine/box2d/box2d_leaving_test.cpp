@@ -183,12 +183,6 @@ TEST(Box2DLeaving, ReplicateInnerLeaversAreCaughtRimLeaversEscape) {
   EXPECT_GE(inner_rate - rim_rate, 0.4);
 }
 
-}  // namespace
-}  // namespace swarmagg
-
-namespace swarmagg {
-namespace {
-
 // A repulsion gain validation lets through (it bounds the push of one waiting body) can still
 // push a leaver among several faster than Box2D's substeps allow: the run stops naming the
 // replicate, the step and the agent, so that it can be found again.
