@@ -1,6 +1,7 @@
 #include "observers/leave_episodes.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace swarmagg {
@@ -12,6 +13,8 @@ LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, cons
   open_.reserve(agents);  // one attempt per agent at most
   closing_.reserve(agents);
   waiting_since_.assign(agents, kNotWaiting);
+  // No agent waits before the first decision: the first that waits is noted then.
+  state_before_.assign(agents, AgentState::Go);
   // Room for several remembered members per agent (attempts stay open through their
   // excursion, up to the return window) and for as many remembered sizes as there are
   // agents (one snapshot per decision that starts attempts), so that most runs never grow
@@ -55,12 +58,24 @@ void LeaveEpisodes::observe_decision(const AggregateTracker& aggregates,
   note_waiting(state);
 }
 
-// After the attempts were advanced on the states before this decision.
+// After the attempts were advanced on the states before this decision. Few agents change
+// state in a decision: blocks of states equal to the last decision's are passed over whole,
+// so a world that does not wait (ghost) or rests costs a compare of its states.
 void LeaveEpisodes::note_waiting(std::span<const AgentState> state) {
-  std::int64_t* since = waiting_since_.data();
-  const std::int64_t now = decision_;
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    since[i] = state[i] == AgentState::Wait ? std::min(since[i], now) : kNotWaiting;
+  constexpr std::size_t kBlock = 64;
+  const std::size_t n = state.size();
+  for (std::size_t first = 0; first < n; first += kBlock) {
+    const std::size_t count = std::min(kBlock, n - first);
+    if (std::memcmp(state.data() + first, state_before_.data() + first,
+                    count * sizeof(AgentState)) == 0)
+      continue;
+    for (std::size_t i = first; i < first + count; ++i) {
+      if (state[i] == state_before_[i]) continue;
+      const bool was_waiting = state_before_[i] == AgentState::Wait;
+      const bool waits = state[i] == AgentState::Wait;
+      if (waits != was_waiting) waiting_since_[i] = waits ? decision_ : kNotWaiting;
+      state_before_[i] = state[i];
+    }
   }
 }
 

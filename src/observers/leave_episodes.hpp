@@ -121,6 +121,7 @@ class LeaveEpisodes {
   // not wait), as the state after each decision says.
   static constexpr std::int64_t kNotWaiting = std::numeric_limits<std::int64_t>::max();
   std::vector<std::int64_t> waiting_since_;
+  std::vector<AgentState> state_before_;  // each agent's state after the last decision
   void note_waiting(std::span<const AgentState> state);
   struct Closing {
     std::int64_t start = 0;
