@@ -153,6 +153,16 @@ struct ReturnScene {
     s.step([&](auto& state) { state[leaver] = AgentState::Wait; });
     s.step([](auto&) {});
   }
+  // The pair the leaver left falls apart (one decision): its members search again, the second
+  // walking off; `first_searches` false keeps the first waiting alone.
+  void pair_falls_apart(bool first_searches = true) {
+    const AgentId second = first + 1;
+    s.step([&](auto& state) {
+      state[second] = AgentState::Go;
+      if (first_searches) state[first] = AgentState::Go;
+    });
+    s.scene.positions[second] = {60.0, 60.0};
+  }
   // Steps on until the attempt's return window (kWindow decisions from decision 1) closed.
   void close_window() {
     for (int k = 0; k <= kWindow; ++k) s.step([](auto&) {});
@@ -213,9 +223,7 @@ TEST(LeaveEpisodes, AnAttemptTheRunCutsShortIsLeftOutOfTheReturnFraction) {
 // as a return too, the measured model kept the pair and created it again).
 TEST(LeaveEpisodes, PairingAgainWithAFormerMemberIsNoReturn) {
   ReturnScene r;
-  const AgentId second = r.first + 1;
-  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
-  r.s.scene.positions[second] = {60.0, 60.0};
+  r.pair_falls_apart();
   r.s.scene.positions[r.leaver] = {21.0, 21.7};
   r.s.step([&](auto& state) { state[r.first] = state[r.leaver] = AgentState::Wait; });
   r.s.step([](auto&) {});  // seen in the new pair
@@ -229,9 +237,7 @@ TEST(LeaveEpisodes, PairingAgainWithAFormerMemberIsNoReturn) {
 // the pair, a return into a "size" of one.
 TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
   ReturnScene r;
-  const AgentId second = r.first + 1;
-  r.s.step([&](auto& state) { state[second] = AgentState::Go; });  // first waits alone
-  r.s.scene.positions[second] = {60.0, 60.0};
+  r.pair_falls_apart(false);  // the first waits alone
   r.wait_at({21.0, 21.7}, 1);
   r.close_window();
   const LeaveTally& t = r.s.episodes.tally();
@@ -244,10 +250,8 @@ TEST(LeaveEpisodes, ComingBackToAMemberThatWaitedAloneReturns) {
 // of two or more before the leaver came was taken for one that lasted).
 TEST(LeaveEpisodes, ANewAggregateFormedWithAFormerMemberIsNoReturn) {
   ReturnScene r;
-  const AgentId second = r.first + 1;
   const AgentId stranger = r.s.scene.add(40.0, 40.0, AgentState::Go);
-  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
-  r.s.scene.positions[second] = {60.0, 60.0};
+  r.pair_falls_apart();
   r.s.scene.positions[stranger] = {22.0, 20.0};
   r.s.scene.positions[r.leaver] = {21.0, 21.7};
   r.s.step(
@@ -262,10 +266,8 @@ TEST(LeaveEpisodes, ANewAggregateFormedWithAFormerMemberIsNoReturn) {
 // The former member searched again and paired with a stranger; the leaver joins that new pair.
 TEST(LeaveEpisodes, JoiningAFormerMembersNewPairIsNoReturn) {
   ReturnScene r;
-  const AgentId second = r.first + 1;
   const AgentId stranger = r.s.scene.add(22.0, 20.0, AgentState::Go);
-  r.s.step([&](auto& state) { state[r.first] = state[second] = AgentState::Go; });
-  r.s.scene.positions[second] = {60.0, 60.0};
+  r.pair_falls_apart();
   r.s.step([&](auto& state) { state[r.first] = state[stranger] = AgentState::Wait; });
   r.wait_at({21.0, 21.7}, 1);
   r.close_window();
