@@ -516,8 +516,9 @@ std::vector<WorldKey> build_keys() {
           "rates.return_window",
           [](WorldSpec& w) -> std::optional<double>& { return w.rates.return_window; },
           [](const WorldSpec& w) { return w.return_window(); }, kPositive),
-      "tu after a LEAVE attempt within which waiting again beside the aggregate left counts as a "
-      "return (default 3 leave timeouts; 3 steps when controller.leave_timeout is 0)"));
+      "tu after a LEAVE attempt within which waiting again beside a member of the aggregate left "
+      "that kept waiting counts as a return (default 3 leave timeouts; 3 steps when "
+      "controller.leave_timeout is 0)"));
   keys.push_back(described(
       integer_key<int>(
           "render.every", [](WorldSpec& w) -> int& { return w.render.every; }, 0, kMaxInt),
