@@ -147,14 +147,34 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
     // counted as a return too, the measured model kept the pair and created it again.
     const bool returned = in_time && holds_former_member(attempt, aggregate, aggregates);
     if (returned) {
-      count_return(attempt, aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1);
+      count_return(attempt, attempt.joined_size >= 0
+                                ? attempt.joined_size
+                                : aggregates.sizes()[static_cast<std::size_t>(aggregate)] - 1);
     }
     close_when_due(attempt, returned);
     return true;
   }
+  if (state[attempt.agent] != AgentState::Wait) {
+    attempt.joined_size = -1;
+  } else if (attempt.joined_size < 0) {
+    attempt.joined_size = size_joined(attempt.agent, aggregates, neighbours);
+  }
   if (in_time) return false;
   close(attempt.size, false, 0);
   return true;
+}
+
+// The size a join decided now is filed under, as the controllers file growths: the aggregate
+// of the nearest agent within s that waited before the decision (0: none, a pair formed).
+// The tracker, a step later, sees the size after every join of that decision, so a return
+// filed by it fell under another size than its growth when several agents joined at once.
+std::int32_t LeaveEpisodes::size_joined(AgentId agent, const AggregateTracker& aggregates,
+                                        const NeighbourLists& neighbours) const {
+  for (const Neighbour& nb : neighbours.of(agent)) {
+    if (nb.distance > episodes_.detection_radius) break;
+    if (state_before_[nb.id] == AgentState::Wait) return aggregates.size_of_agent()[nb.id];
+  }
+  return 0;
 }
 
 void LeaveEpisodes::close_when_due(const OpenAttempt& attempt, bool returned) {

@@ -45,7 +45,8 @@
 namespace swarmagg {
 
 struct EpisodeRules {
-  double escape_radius = 0.0;  // within it a waiting former member holds the leaver
+  double escape_radius = 0.0;     // within it a waiting former member holds the leaver
+  double detection_radius = 0.0;  // s: a join is filed under the size of the aggregate within it
   // Decisions after the attempt starts within which a return counts (0: none counts).
   std::int64_t return_window_steps = 0;
 };
@@ -73,6 +74,7 @@ class LeaveEpisodes {
     std::uint32_t former = 0;       // its aggregate's members then: former_sets_[former]
     std::uint32_t sizes_first = 0;  // the aggregate steps by size when it started:
     std::uint32_t sizes = 0;        // sizes_at_start_[sizes_first, sizes_first + sizes)
+    std::int32_t joined_size = -1;  // the size its join was filed under, once it waits again
   };
   // The members of an aggregate that attempts left in one decision, the leavers included:
   // former_[first, first + count), sorted; `users` of the open attempts remember it.
@@ -95,6 +97,8 @@ class LeaveEpisodes {
                const NeighbourLists& neighbours, std::span<const AgentState> state);
   bool escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
                std::span<const AgentState> state) const;
+  std::int32_t size_joined(AgentId agent, const AggregateTracker& aggregates,
+                           const NeighbourLists& neighbours) const;
   bool holds_former_member(const OpenAttempt& attempt, std::int32_t aggregate,
                            const AggregateTracker& aggregates) const;
   std::span<const AgentId> former_members(const OpenAttempt& attempt) const;

@@ -34,7 +34,7 @@ struct LeaveTally {
   // Returns (observers/leave_episodes.hpp), by the size m left: the attempts whose return
   // window closed within the run (one still open when it ended could yet have returned: the
   // fraction that returned counts only the others), how many of them returned, and their
-  // summed time away in steps; by the size of the aggregate joined on return (1: a lone member
+  // summed time away in steps; by the size of the aggregate joined on return (0: a lone member
   // that kept waiting); and by aggregate size k, the steps that size-k aggregates existed while
   // returning agents were away (searcher exposure that was no search). The last two count
   // every return, the run's last ones too: those joins were no new ones either.

@@ -28,7 +28,7 @@ struct RateTally {
   // Returns (a leaver back in an aggregate holding a member of the one it left who kept
   // waiting, within rates.return_window; observers/leave_episodes.hpp): [m] by the size m left, the
   // attempts whose window closed within the run, the returns among them and their summed steps away
-  // (and squares); [j] by the size j of the aggregate joined on return (1: a lone member that kept
+  // (and squares); [j] by the size j of the aggregate joined on return (0: a lone member that kept
   // waiting); [k] the searcher-aggregate steps (y n_k) of returning agents while away, which new
   // joins leave out of their exposure (these two over every return).
   std::vector<std::uint64_t> return_attempts, returns, return_steps, return_square_steps,

@@ -20,6 +20,7 @@ namespace {
 EpisodeRules episode_rules(const WorldSpec& spec, const ControllerRules& rules) {
   return {.escape_radius = rules.allows(AgentState::Approach) ? spec.controller.approach_radius
                                                               : spec.robots.detection_radius,
+          .detection_radius = spec.robots.detection_radius,
           .return_window_steps = std::llround(spec.return_window() / spec.engine.dt)};
 }
 
