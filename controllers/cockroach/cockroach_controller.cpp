@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "control_interface/joined_size.hpp"
 #include "control_interface/state_signals.hpp"
 
 namespace swarmagg {
@@ -29,11 +30,8 @@ int CockroachController::waiting_perceived(std::uint32_t agent,
 
 // The size of the aggregate of the nearest waiting agent `agent` perceives (the one it joins).
 int CockroachController::joined_size(std::uint32_t agent, const ControllerInput& input) const {
-  for (const Neighbour& nb : input.neighbours.of(agent)) {
-    if (nb.distance > parameters_.detection_radius) break;
-    if (previous_[nb.id] == AgentState::Wait) return input.aggregates.size_of_agent[nb.id];
-  }
-  return 0;
+  return joined_aggregate_size(input.neighbours.of(agent), parameters_.detection_radius, previous_,
+                               input.aggregates.size_of_agent);
 }
 
 // Away from the agents it perceives; enclosed in a packed aggregate (compaction), a random

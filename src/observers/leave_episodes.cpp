@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "control_interface/joined_size.hpp"
+
 namespace swarmagg {
 
 LeaveEpisodes::LeaveEpisodes(int agent_count, const EpisodeRules& episodes, const ShapeRules& rules)
@@ -164,17 +166,14 @@ bool LeaveEpisodes::advance(OpenAttempt& attempt, const AggregateTracker& aggreg
   return true;
 }
 
-// The size a join decided now is filed under, as the controllers file growths: the aggregate
-// of the nearest agent within s that waited before the decision (0: none, a pair formed).
-// The tracker, a step later, sees the size after every join of that decision, so a return
-// filed by it fell under another size than its growth when several agents joined at once.
+// The size a join decided now is filed under, as the controllers file growths
+// (control_interface/joined_size.hpp). The tracker, a step later, sees the size after every join of
+// that decision, so a return filed by it fell under another size than its growth when several
+// agents joined at once.
 std::int32_t LeaveEpisodes::size_joined(AgentId agent, const AggregateTracker& aggregates,
                                         const NeighbourLists& neighbours) const {
-  for (const Neighbour& nb : neighbours.of(agent)) {
-    if (nb.distance > episodes_.detection_radius) break;
-    if (state_before_[nb.id] == AgentState::Wait) return aggregates.size_of_agent()[nb.id];
-  }
-  return 0;
+  return joined_aggregate_size(neighbours.of(agent), episodes_.detection_radius, state_before_,
+                               aggregates.size_of_agent());
 }
 
 void LeaveEpisodes::close_when_due(const OpenAttempt& attempt, bool returned) {
