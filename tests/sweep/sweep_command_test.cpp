@@ -77,12 +77,15 @@ class SweepCommandTest : public testing::SweepTest {
   int swarmagg(const std::vector<std::string>& arguments) { return wait_for(start(arguments)); }
   std::string output() const { return read_file_text(dir_ / "output.txt"); }
 
+  // Counts while the sweep may still be writing: its check that the folder is writable makes
+  // the folder and removes it again, and a run's folder may vanish while it is read, so a
+  // folder gone mid-count ends the count instead of throwing.
   int count_files(const std::string& out, const std::string& ending) const {
     int count = 0;
-    if (!std::filesystem::exists(dir_ / out)) return 0;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir_ / out)) {
-      count += entry.path().filename().string().ends_with(ending) ? 1 : 0;
-    }
+    std::error_code gone;
+    std::filesystem::recursive_directory_iterator entry(dir_ / out, gone);
+    for (; !gone && entry != std::filesystem::recursive_directory_iterator(); entry.increment(gone))
+      count += entry->path().filename().string().ends_with(ending) ? 1 : 0;
     return count;
   }
 
