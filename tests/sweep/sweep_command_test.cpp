@@ -133,6 +133,7 @@ class SweepCommandTest : public testing::SweepTest {
 
   static void TearDownTestSuite() {
     if (!reference_.empty()) std::filesystem::remove_all(reference_);
+    reference_.clear();  // --gtest_repeat runs the suite again in this process
   }
 
   static inline std::filesystem::path reference_;
