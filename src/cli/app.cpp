@@ -24,6 +24,15 @@ int interrupted(int signal_number) {
 
 // CLI11 would call a misspelt command "a subcommand is required" (it takes the word for a
 // stray argument): name the word and the nearest command instead.
+// Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's, also when it
+// reads as bad input (ffmpeg's probe of what it can make, stopped by the signal, looks like an
+// ffmpeg that cannot make that kind of video).
+int failed(const std::string& prefix, const std::string& message, int code) {
+  if (const int signal_number = interrupt_signal()) return interrupted(signal_number);
+  std::cerr << prefix << message << "\n";
+  return code;
+}
+
 std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return std::nullopt;
   std::vector<std::string> commands;
@@ -119,18 +128,14 @@ int main(int argc, char** argv) {
   } catch (const Interrupted& e) {
     return interrupted(e.signal_number());
   } catch (const InputError& e) {
-    std::cerr << "swarmagg: " << e.what() << "\n";
-    return 2;
+    return failed("swarmagg: ", e.what(), 2);
   } catch (const std::bad_alloc&) {
     std::cerr << "swarmagg: error: out of memory: the world (agents, replicates run at once) or "
                  "the sweep needs more memory than this machine gives; use fewer agents, fewer "
                  "--threads or a smaller sweep\n";
     return 1;
   } catch (const std::exception& e) {
-    // Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's.
-    if (const int signal_number = interrupt_signal()) return interrupted(signal_number);
-    std::cerr << "swarmagg: error: " << e.what() << "\n";
-    return 1;
+    return failed("swarmagg: error: ", e.what(), 1);
   }
 }
 

@@ -266,6 +266,21 @@ bool wait_until(const std::function<bool()>& ready) {
   return ready();
 }
 
+// Files below `dir` whose names are `counted`, counted while a child may be writing there: a folder
+// that vanishes mid-count ends the count instead of throwing.
+int count_below(const fs::path& dir, const std::function<bool(const std::string&)>& counted) {
+  int count = 0;
+  std::error_code gone;
+  fs::recursive_directory_iterator entry(dir, gone);
+  for (; !gone && entry != fs::recursive_directory_iterator(); entry.increment(gone))
+    count += counted(entry->path().filename().string()) ? 1 : 0;
+  return count;
+}
+
+int count_named_below(const fs::path& dir, const std::string& name) {
+  return count_below(dir, [&](const std::string& file) { return file == name; });
+}
+
 // A run killed outright (SIGKILL, out of memory) leaves its rows' temporaries in the folder
 // made for it; they are a dead process's garbage, so the same command runs again there
 // without --force.
@@ -274,7 +289,10 @@ TEST(Interrupt, ARunKilledOutrightDoesNotBlockTheSameRunAgain) {
   Child child({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set",
                "run.duration=1000000", "--quiet", "--out", out.string()});
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
-  ASSERT_TRUE(wait_until([&] { return !temporary_files_below(out).empty(); })) << "no rows spooled";
+  const auto spooling = [&] {
+    return count_below(out, [](const std::string& file) { return file.ends_with(".tmp"); }) > 0;
+  };
+  ASSERT_TRUE(wait_until(spooling)) << "no rows spooled";
   child.send(SIGKILL);
   ASSERT_EQ(child.wait(std::chrono::seconds(60)).signal_number, SIGKILL);
   Child again({SWARMAGG_BINARY, "run", kLongWorld, "--replicates", "1", "--set", "run.duration=20",
@@ -372,7 +390,16 @@ TEST(Interrupt, SigintStopsAVideoAndLeavesNoHalfMadeFile) {
               true);
   ASSERT_TRUE(child.started());
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // ffmpeg under way
+  // Once the video's hidden temporary exists the real ffmpeg is under way, past the probe
+  // that checks what it can make (SigintDuringTheVideoProbeExitsAsInterrupted).
+  const auto writing = [&] {
+    std::error_code gone;  // the directory may change while it is read
+    for (const auto& entry : fs::directory_iterator(out, gone)) {
+      if (entry.path().filename().string().ends_with(".tmp.mp4")) return true;
+    }
+    return false;
+  };
+  ASSERT_TRUE(wait_until(writing)) << "ffmpeg never started the video";
   child.send_to_group(SIGINT);
   const Outcome o = child.wait(std::chrono::seconds(60));
   if (o.exit_code == 0) GTEST_SKIP() << "ffmpeg finished before the signal";
@@ -381,6 +408,35 @@ TEST(Interrupt, SigintStopsAVideoAndLeavesNoHalfMadeFile) {
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_NE(entry.path().filename().string().front(), '.') << "left " << entry.path();
   fs::remove_all(out);
+}
+
+// Before the video, ffmpeg makes a two-frame probe to check it can write that kind of file.
+// Ctrl-C during the probe kills it too, and the command exits as interrupted, not as bad input
+// (exit 2: "ffmpeg cannot make a .mp4 video"). A stand-in ffmpeg that waits for the signal
+// makes the timing certain.
+TEST(Interrupt, SigintDuringTheVideoProbeExitsAsInterrupted) {
+  const fs::path dir = fresh_dir("video-probe");
+  fs::create_directories(dir / "frames");
+  fs::create_directories(dir / "bin");
+  std::ofstream(dir / "frames" / "frame_000000.png") << "not read before the probe";
+  const fs::path started = dir / "ffmpeg-started";
+  std::ofstream(dir / "bin" / "ffmpeg")
+      << "#!/bin/sh\n: > '" << started.string() << "'\nexec sleep 60\n";
+  fs::permissions(dir / "bin" / "ffmpeg", fs::perms::owner_all);
+  const std::string path = std::getenv("PATH");
+  setenv("PATH", ((dir / "bin").string() + ":" + path).c_str(), 1);
+  Child child({SWARMAGG_BINARY, "video", (dir / "frames").string(), (dir / "v.mp4").string()},
+              true);
+  setenv("PATH", path.c_str(), 1);
+  ASSERT_TRUE(child.started());
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  ASSERT_TRUE(wait_until([&] { return fs::exists(started); })) << "the probe never started";
+  child.send_to_group(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
+  EXPECT_FALSE(fs::exists(dir / "v.mp4"));
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "left " << entry.path();
+  fs::remove_all(dir);
 }
 
 // Ctrl-C after the simulation, while the models are computed: no later phase starts, the run
@@ -470,10 +526,14 @@ TEST(Interrupt, SigintStopsASweepAndKeepsItsCompletedRuns) {
                        << "\nparameters:\n  run.duration: [20, 30, 1000000]\nreplicates: 1\n"
                           "seed: 1\n";
   const fs::path out = dir / "out";
-  const Outcome o = interrupt({SWARMAGG_BINARY, "sweep", sweep.string(), "--threads", "1",
-                               "--quiet", "--no-plots", "--out", out.string()},
-                              SIGINT, std::chrono::milliseconds(1500));
-  expect_interrupted(o, 130);
+  Child child({SWARMAGG_BINARY, "sweep", sweep.string(), "--threads", "1", "--quiet", "--no-plots",
+               "--out", out.string()});
+  ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
+  // A fixed delay could end before the short runs' last writes on a slow disk.
+  ASSERT_TRUE(wait_until([&] { return count_named_below(out, "world.resolved.yaml") == 2; }))
+      << "the two short runs did not complete in a minute";
+  child.send(SIGINT);
+  expect_interrupted(child.wait(std::chrono::seconds(60)), 130);
   EXPECT_THAT(temporary_files_below(out), ::testing::IsEmpty());
   int complete = 0;
   for (const auto& point : fs::directory_iterator(out / "runs")) {
