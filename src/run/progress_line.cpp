@@ -61,6 +61,7 @@ void ProgressLine::report() {
   const double now = elapsed();
   if (tenths <= logged_tenths_ && now - logged_at_ < kLogEverySeconds) return;
   logged_tenths_ = tenths;
+  logged_units_ = done_units_;
   logged_at_ = now;
   std::fprintf(stderr, "%s\n", text().c_str());
   std::fflush(stderr);
@@ -70,7 +71,9 @@ void ProgressLine::finish() {
   std::lock_guard lock(mutex_);
   if (terminal_) {
     std::fprintf(stderr, "\r%*s\r", 78, "");
-  } else if (logged_tenths_ < 10) {
+  } else if (logged_tenths_ < 10 || logged_units_ != done_units_) {
+    // A unit's work is all counted before its last writes, so a line logged in between says
+    // 100 % with units still open: the log ends with the line that counts them all.
     std::fprintf(stderr, "%s\n", text().c_str());
   }
   std::fflush(stderr);

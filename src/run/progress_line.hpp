@@ -38,6 +38,7 @@ class ProgressLine {
   int done_units_ = 0;
   double done_work_ = 0.0;
   int logged_tenths_ = 0;   // tenths of the work done at the last log line
+  int logged_units_ = -1;   // units done at the last log line
   double logged_at_ = 0.0;  // seconds since start_ at the last log line
 
   std::string text() const;  // with the mutex held
