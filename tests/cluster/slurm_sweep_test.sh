@@ -66,7 +66,12 @@ wait_until() {
     sleep 0.5
   done
 }
-queue_empty() { [[ -z $(squeue -h -o %i) ]]; }
+# A squeue that fails (a slurmctld timeout prints nothing on stdout) is not an empty queue.
+queue_empty() {
+  local ids
+  ids=$(squeue -h -o %i) || return 1
+  [[ -z $ids ]]
+}
 
 # --- swarmagg, installed as a user would --------------------------------------------------
 cmake --install "$build_dir" --prefix "$tmp/prefix" >/dev/null

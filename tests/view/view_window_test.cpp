@@ -29,29 +29,40 @@ const std::string kDemo = std::string(SWARMAGG_SOURCE_DIR) + "/worlds/examples/d
         " is not installed: the window tests need it " \
         "(scripts/install-deps.sh installs xvfb, xauth and xdotool)";
 
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
 // A command line on a fresh virtual display, from the folder `cwd`. Each test is its own
 // process (ctest -j): the search for a free display starts at a number of its own, so two
-// tests starting at once do not race for the same one.
+// tests starting at once do not race for the same one. The command's exit code is kept in a
+// file: xvfb-run's own may instead report its clean-up of a display that a quickly finished
+// client just left.
 testing::CliOutcome on_xvfb(const std::string& command_line, const fs::path& cwd) {
+  const std::string id = std::to_string(::getpid());
+  const fs::path script = fs::temp_directory_path() / ("swarmagg-view-command-" + id + ".sh");
+  const fs::path status_file = fs::temp_directory_path() / ("swarmagg-view-status-" + id);
+  fs::remove(status_file);
+  write_text(script, command_line + "\necho $? > '" + status_file.string() + "'\n");
   const std::string first_display = std::to_string(100 + ::getpid() % 800);
   const std::string command = "cd '" + cwd.string() + "' && xvfb-run -a -n " + first_display +
-                              " -s '-screen 0 1024x768x24' " + command_line;
+                              " -s '-screen 0 1024x768x24' sh '" + script.string() + "'";
   testing::CliOutcome outcome;
   FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return outcome;
   char buffer[4096];
   while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) outcome.output += buffer;
   const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream kept(status_file);
+  if (!(kept >> outcome.exit_code))
+    outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  fs::remove(script);
+  fs::remove(status_file);
   return outcome;
 }
 
 testing::CliOutcome run_on_xvfb(const std::string& arguments, const fs::path& cwd) {
   return on_xvfb(std::string(SWARMAGG_BINARY) + " " + arguments, cwd);
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path) << text;
 }
 
 // The demo's view at 320x240 on a virtual display, driven through the X server: `window`
@@ -190,17 +201,10 @@ TEST(ViewWindow, BadScriptIsBadInput) {
 TEST(ViewWindow, AScriptedCommandThatFailsEndsTheViewNamingItsLine) {
   SKIP_WITHOUT("xvfb-run");
   const testing::ScratchDir dir("view-failing-script");
-  // The view's own exit code, kept in a file: xvfb-run's may instead report its clean-up of a
-  // display that a quickly failing client just left.
   const auto view_exit_code = [&](const std::string& script, std::string& output) {
-    const auto outcome = on_xvfb("sh -c '" + std::string(SWARMAGG_BINARY) + " view " + kDemo +
-                                     " --script " + script + "; echo $? > status'",
-                                 dir.path());
+    const auto outcome = run_on_xvfb("view " + kDemo + " --script " + script, dir.path());
     output = outcome.output;
-    std::ifstream status(dir.path() / "status");
-    int code = -1;
-    status >> code;
-    return code;
+    return outcome.exit_code;
   };
   std::string output;
   write_text(dir.path() / "select.txt", "step 2\nselect 60\nquit\n");
