@@ -46,10 +46,12 @@ Replicate::Replicate(const WorldSpec& spec, int index)
 
 Replicate::~Replicate() = default;
 
-// "controller 'timer' (replicate 0, step 5) ": where a controller's error came from.
+// "controller 'timer' (replicate 0, deciding at step 5) ": where a controller's error came
+// from. Steps are numbered as timeseries.csv numbers its rows (step 5: the state at 5 dt),
+// and as the invariants' messages name the state they found broken.
 std::string Replicate::controller_context() const {
   return "controller '" + spec_.controller.type + "' (replicate " + std::to_string(index_) +
-         ", step " + std::to_string(step_) + ") ";
+         ", deciding at step " + std::to_string(step_) + ") ";
 }
 
 // A controller is the user's code: what it throws, and a swarm it resized, are reported naming
@@ -103,8 +105,9 @@ void Replicate::step() {
     throw;
   } catch (const std::runtime_error& e) {
     // An engine that cannot go on (a push Box2D would clamp, say): where, to reproduce it.
-    throw std::runtime_error("replicate " + std::to_string(index_) + ", step " +
-                             std::to_string(step_) + ": " + e.what());
+    throw std::runtime_error("replicate " + std::to_string(index_) + ", moving from step " +
+                             std::to_string(step_) + " to " + std::to_string(step_ + 1) + ": " +
+                             e.what());
   }
   ++step_;
   update_aggregates();

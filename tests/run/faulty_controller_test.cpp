@@ -99,7 +99,7 @@ TEST(FaultyController, ACorrectOneRunsOnBothEngines) {
 TEST(FaultyController, ANonFiniteVelocityIsRefusedNamingTheAgentOnBothEngines) {
   for (const char* engine : {"kinematic", "box2d"}) {
     EXPECT_EQ(error_of("nan", engine),
-              "controller 'faulty' (replicate 0, step 5) commanded agent 3 a velocity of (nan, 0) "
+              "controller 'faulty' (replicate 0, deciding at step 5) commanded agent 3 a velocity of (nan, 0) "
               "u/tu, which is not finite")
         << engine;
     EXPECT_THAT(error_of("inf", engine), HasSubstr("agent 3 a velocity of (inf, 0) u/tu"))
@@ -119,12 +119,12 @@ TEST(FaultyController, ASpeedBeyondWhatTheEnginesResolveIsRefused) {
 
 TEST(FaultyController, WhatItThrowsAndASwarmItResizesNameIt) {
   EXPECT_EQ(error_of("throw"),
-            "controller 'faulty' (replicate 0, step 5) failed: no rule for this neighbourhood");
+            "controller 'faulty' (replicate 0, deciding at step 5) failed: no rule for this neighbourhood");
   EXPECT_EQ(error_of("odd"),
-            "controller 'faulty' (replicate 0, step 5) threw something that is not a "
+            "controller 'faulty' (replicate 0, deciding at step 5) threw something that is not a "
             "std::exception");
   EXPECT_EQ(error_of("resize"),
-            "controller 'faulty' (replicate 0, step 5) changed the number of entries of the "
+            "controller 'faulty' (replicate 0, deciding at step 5) changed the number of entries of the "
             "swarm's state (20 agents): a controller keeps one per agent");
 }
 

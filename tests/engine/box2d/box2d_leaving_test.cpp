@@ -199,9 +199,11 @@ TEST(Box2DLeaving, APushTooStrongForTheSubstepsNamesWhereItHappened) {
       message = e.what();
     }
   }
-  EXPECT_THAT(message, ::testing::MatchesRegex(
-                           "replicate 0, step [0-9]+: Box2D engine: the repulsion push on "
-                           "leaving agent [0-9]+ reaches .*lower engine.box2d.repulsion_gain.*"));
+  EXPECT_THAT(
+      message,
+      ::testing::MatchesRegex(
+          "replicate 0, moving from step [0-9]+ to [0-9]+: Box2D engine: the repulsion push on "
+          "leaving agent [0-9]+ reaches .*lower engine.box2d.repulsion_gain.*"));
 }
 
 }  // namespace
