@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/decimal_integer.hpp"
 #include "config/did_you_mean.hpp"
 #include "core/errors.hpp"
 #include "output/hdf5_file.hpp"
@@ -108,6 +109,7 @@ int main(int argc, char** argv) {
   add_keys_command(app, action);
   add_help_command(app, action);
   refuse_empty_paths(app);
+  read_integers_in_decimal(app);
   if (const auto message = unknown_command(app, argc, argv)) {
     std::cerr << *message << "\n";
     return 2;

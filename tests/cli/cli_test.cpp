@@ -59,6 +59,25 @@ TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
 }
 
 // A world printed onto a full disk is not a success.
+// CLI11 alone read `--replicates 010` as 8 and `0x10` as 16; a world file reads 010 as 10.
+TEST(Cli, IntegerOptionsAreDecimal) {
+  const Outcome leading_zeros =
+      swarmagg("validate worlds/examples/demo.yaml --replicates 010 --seed 007");
+  ASSERT_EQ(leading_zeros.exit_code, 0) << leading_zeros.output;
+  EXPECT_THAT(leading_zeros.output, HasSubstr("replicates: 10\n"));
+  EXPECT_THAT(leading_zeros.output, HasSubstr("seed: 7\n"));
+  for (const char* arguments :
+       {"validate worlds/examples/demo.yaml --replicates 0x10",
+        "validate worlds/examples/demo.yaml --threads 1e1",
+        "run worlds/examples/demo.yaml --render-every 0b11 --out /tmp/swarmagg-never-written",
+        "sweep worlds/examples/demo.yaml --threads 0x2 --list",
+        "reproduce --plot-width 0x300 --worlds worlds/paper"}) {
+    const Outcome o = swarmagg(arguments);
+    EXPECT_EQ(o.exit_code, 2) << arguments << "\n" << o.output;
+    EXPECT_THAT(o.output, HasSubstr("expected a whole number in decimal digits")) << arguments;
+  }
+}
+
 TEST(Cli, OutputThatCannotBeWrittenIsAFailure) {
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   for (const char* command :
