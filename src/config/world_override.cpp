@@ -1,5 +1,6 @@
 #include "config/world_override.hpp"
 
+#include "config/yaml_document.hpp"
 #include "core/errors.hpp"
 
 namespace swarmagg {
@@ -12,9 +13,13 @@ WorldOverride parse_override(const std::string& assignment) {
   }
   WorldOverride result{assignment.substr(0, equals), YAML::Node(), "--set"};
   try {
-    result.value = YAML::Load(assignment.substr(equals + 1));
-  } catch (const YAML::ParserException& e) {
-    throw InputError(at + ": the value is not valid YAML: " + e.msg);
+    result.value = parse_one_yaml_document(assignment.substr(equals + 1), "value", "a --set value");
+  } catch (const InputError& e) {
+    // The assignment is cut short: a long value would bury the message.
+    constexpr std::size_t kShown = 80;
+    const std::string shown =
+        assignment.size() <= kShown ? assignment : assignment.substr(0, kShown) + "...";
+    throw InputError("--set " + shown + ": the value is not valid YAML: " + e.what());
   }
   return result;
 }

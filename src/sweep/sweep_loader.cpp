@@ -13,6 +13,7 @@
 #include "config/world_keys.hpp"
 #include "config/world_loader.hpp"
 #include "config/world_writer.hpp"
+#include "config/yaml_document.hpp"
 #include "core/errors.hpp"
 
 namespace swarmagg {
@@ -224,13 +225,7 @@ class SweepReader {
 };
 
 YAML::Node parse(const std::string& path) {
-  const std::string text = read_input_file(path, "sweep file");
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(path + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
-  }
+  return parse_one_yaml_document(read_input_file(path, "sweep file"), path, "a sweep file");
 }
 
 }  // namespace

@@ -70,6 +70,23 @@ TEST(WorldLoader, OverridesUseTheSameKeyPaths) {
   EXPECT_FALSE(spec.controller.join);
 }
 
+// A --set value is one YAML document, as a world file is; a deep one is named short.
+TEST(WorldLoader, AnOverrideValueIsOneShortlyNamedDocument) {
+  const auto refusal = [](const std::string& assignment) {
+    try {
+      load_world_text("robots: {count: 50}\n", "w.yaml", {assignment});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_THAT(refusal("robots.count=5\n---\n7"),
+              HasSubstr("a second YAML document starts here; a --set value is one YAML document"));
+  const std::string deep = refusal("robots.count=" + std::string(3000, '['));
+  EXPECT_THAT(deep, HasSubstr("nested more than"));
+  EXPECT_LT(deep.size(), 300u) << deep;
+}
+
 TEST(WorldLoader, TheResolvedWorldLoadsBackUnchanged) {
   const WorldSpec spec = load_world_text(
       "name: r\nrobots: {placement: [[10.25, 10, 33.5]]}\nengine: {dt: 0.07}\n"

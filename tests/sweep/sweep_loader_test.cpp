@@ -122,6 +122,14 @@ TEST_F(SweepLoaderTest, RefusesMissingOrBrokenParts) {
       refusal("base: worlds/tiny.yaml\nbase: worlds/tiny.yaml\nparameters: {robots.count: [1]}\n"),
       HasSubstr("grid.yaml:2:1: 'base' given twice"));
   EXPECT_THAT(refusal("- base\n"), HasSubstr("expected a sweep"));
+  // yaml-cpp's Load kept the first document and dropped the second without a word.
+  EXPECT_THAT(refusal("base: worlds/tiny.yaml\nparameters: {robots.count: [10]}\n---\n"
+                      "parameters: {robots.count: [30]}\n"),
+              HasSubstr("grid.yaml:3:1: a second YAML document starts here; a sweep file is one "
+                        "YAML document"));
+  EXPECT_THAT(refusal("base: worlds/tiny.yaml\nparameters: {robots.count: " +
+                      std::string(600, '[') + std::string(600, ']') + "}\n"),
+              HasSubstr("nested more than"));
 }
 
 TEST_F(SweepLoaderTest, NamesAMissingSweepFile) {
