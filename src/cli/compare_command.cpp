@@ -91,7 +91,7 @@ void add_compare_command(CLI::App& app, Action& action) {
   command->add_flag(
       "--force", options->force,
       "Replace the comparison or run already in the output folder (other files stay)");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   options->progress.add_to(*command);
   command->callback(
       [options, &action] { action = [options] { return compare_command(*options); }; });

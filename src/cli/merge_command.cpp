@@ -42,7 +42,7 @@ void add_merge_command(CLI::App& app, Action& action) {
   command->add_option("folders", options->folders, "Sweep output folders (the shards' --out)")
       ->required();
   command->add_option("--out", options->out, "Folder for the merged outputs")->required();
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   command->add_flag("--force", options->force,
                     "Merge into a folder that holds another sweep's merge or a run "
                     "(refused otherwise)");

@@ -142,7 +142,7 @@ void add_model_command(CLI::App& app, Action& action) {
   command->add_option("--rates", options->rates,
                       "Measured terms (rates.csv of `swarmagg rates` or `run --rates`): adds the "
                       "`measured` variants and the measured initial state");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   options->progress.add_to(*command);
   command->add_flag(
       "--force", options->force,

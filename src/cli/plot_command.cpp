@@ -93,7 +93,7 @@ void add_plot_command(CLI::App& app, Action& action) {
                       "Where the PNGs go (scripts and CSVs in <out>/plots/; default: the folder)");
   command->add_flag("--force", options->force,
                     "Write into an --out folder that holds another run or merged sweep");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   command->callback([options, &action] { action = [options] { return plot_command(*options); }; });
 }
 

@@ -68,7 +68,7 @@ void add_rates_command(CLI::App& app, Action& action) {
   command->add_option(
       "--out", options->out,
       "Output folder for rates.csv, rates.json and plots (default runs/<world name>)");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   command->add_flag(
       "--force", options->force,
       "Write into a folder that holds a run or rates of another world (refused otherwise)");

@@ -32,11 +32,12 @@ struct RenderCommandOptions {
   std::optional<int> replicate;
   std::string out;
   std::string video;
-  double fps = 25.0;
+  std::optional<double> fps;  // of --video; VideoOptions' default when not given
   bool quiet = false;
 };
 
 int render_command(const RenderCommandOptions& options) {
+  if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
   const std::filesystem::path file =
       std::filesystem::path(options.run_dir) / trajectory_layout::kFileName;
   const TrajectoryReader reader(file);
@@ -57,7 +58,7 @@ int render_command(const RenderCommandOptions& options) {
   check_output_folder(folder, options.out.empty() ? "the frame folder" : "--out");
   if (!options.video.empty()) {
     check_output_file(options.video, "--video");
-    check_video_request(options.video, VideoOptions{.fps = options.fps});
+    check_video_request(options.video, video_options(options.fps));
   }
   install_interrupt_handlers();
   // Drawn aside and moved in once every frame is drawn: Ctrl-C or a failure leaves the frames
@@ -81,7 +82,7 @@ int render_command(const RenderCommandOptions& options) {
               << every << " steps) in " << folder.string() << "/\n";
   }
   if (!options.video.empty()) {
-    assemble_video_unless_stopped(folder, options.video, {.fps = options.fps});
+    assemble_video_unless_stopped(folder, options.video, video_options(options.fps));
     if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;
@@ -105,7 +106,7 @@ void add_render_command(CLI::App& app, Action& action) {
   command->add_option("--video", options->video,
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   command->callback(
       [options, &action] { action = [options] { return render_command(*options); }; });
 }

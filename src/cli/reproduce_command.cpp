@@ -84,7 +84,7 @@ void add_reproduce_command(CLI::App& app, Action& action) {
                     "Also draw each run's rate plots (rates-<term>.png); without it their "
                     "gnuplot scripts and CSVs are written, and 'gnuplot rates-<term>.gp' in the "
                     "run folder draws one");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   options->progress.add_to(*command);
   command->callback(
       [options, &action] { action = [options] { return reproduce_command(*options); }; });

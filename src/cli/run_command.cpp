@@ -57,12 +57,6 @@ struct RunCommandOptions {
   std::optional<double> fps;  // of --video; VideoOptions' default when not given
 };
 
-VideoOptions video_options(const RunCommandOptions& options) {
-  VideoOptions video;
-  if (options.fps) video.fps = *options.fps;
-  return video;
-}
-
 // The render flags are shortcuts for render.* world keys, so they land in the resolved world.
 void add_render_overrides(const RunCommandOptions& options, WorldOptions& world) {
   auto& typed = world.typed_overrides;
@@ -241,7 +235,7 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   }
   if (!options.video.empty()) {
     check_output_file(options.video, "--video");
-    check_video_request(options.video, video_options(options));
+    check_video_request(options.video, video_options(options.fps));
   }
 }
 
@@ -315,7 +309,7 @@ int run_command(const RunCommandOptions& options) {
               << trajectories->target().string() << "\n";
   }
   if (!options.video.empty()) {
-    assemble_video_unless_stopped(frames, options.video, video_options(options));
+    assemble_video_unless_stopped(frames, options.video, video_options(options.fps));
     if (!options.quiet) std::cout << "video " << options.video << "\n";
   }
   return 0;
@@ -341,7 +335,7 @@ void add_run_command(CLI::App& app, Action& action) {
   command->add_option("--video", options->video,
                       "Assemble the frames into this video with ffmpeg (e.g. out.mp4)");
   command->add_option("--fps", options->fps, "Frames per second of --video (default 25)");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   options->progress.add_to(*command);
   command->add_flag("--no-model", options->no_model,
                     "Skip the macroscopic predictions (model.csv) beside the run");

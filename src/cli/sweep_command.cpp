@@ -106,7 +106,7 @@ void add_sweep_command(CLI::App& app, Action& action) {
   command->add_flag("--list", options->list, "Print the runs (index, seed, status) and exit");
   command->add_flag("--force", options->force,
                     "Replace runs whose folders hold results of another world (the sweep changed)");
-  command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+  command->add_flag("--quiet", options->quiet, kQuietHelp);
   options->progress.add_to(*command);
   command->add_flag("--no-plots", options->no_plots, "Skip the merged sweep's plots (gnuplot)");
   command->add_flag("--run-plots", options->run_plots,

@@ -156,6 +156,7 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
       {"run worlds/examples/demo.yaml --render-size 100x100", "--render-size needs frames"},
       {"run worlds/examples/demo.yaml --render-dir x", "--render-dir needs frames"},
       {"run worlds/examples/demo.yaml --fps 30", "--fps needs --video"},
+      {"render /nonexistent-run --fps -5", "--fps needs --video"},
       {"run worlds/examples/demo.yaml --video ''", "--video: expected a path, got ''"},
       {"validate worlds", "worlds: is a folder; expected a world file"},
       {"plot /nonexistent-run", "/nonexistent-run: no such folder"},
