@@ -249,6 +249,8 @@ int run_command(const RunCommandOptions& options) {
   const std::filesystem::path frames = frames_folder(spec, out, out_given);
   refuse_idle_render_options(options, spec);
   check_outputs(spec, options, out, frames);
+  if (const std::string note = spec.rounded_duration_note(); !note.empty() && !options.quiet)
+    std::cerr << "note: " << note << "\n";
   install_interrupt_handlers();
   // The run's files are written into `out` while it runs (timeseries.csv's replicates,
   // trajectories): a run that fails or is interrupted leaves no folder made for them.

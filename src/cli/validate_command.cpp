@@ -18,6 +18,8 @@ void add_validate_command(CLI::App& app, Action& action) {
       const WorldSpec spec = options->load();
       check_engine_world(spec);  // what the engine refuses at its start (Box2D's limits)
       std::cout << world_to_yaml(spec);
+      if (const std::string note = spec.rounded_duration_note(); !note.empty())
+        std::cerr << "note: " << note << "\n";
       return 0;
     };
   });

@@ -456,7 +456,8 @@ std::vector<WorldKey> build_keys() {
   keys.push_back(described(
       real_key(
           "run.duration", [](WorldSpec& w) -> double& { return w.run.duration; }, kPositive),
-      "simulated time of each replicate, tu"));
+      "simulated time of each replicate, tu; rounded to the nearest whole step of engine.dt (run "
+      "and validate say so when it is not one)"));
   keys.push_back(described(
       integer_key<int>(
           "run.replicates", [](WorldSpec& w) -> int& { return w.run.replicates; }, 1, 100000),

@@ -58,6 +58,19 @@ TEST(Cli, ValidatePrintsTheResolvedWorldWithOverrides) {
   EXPECT_THAT(o.output, HasSubstr("isolated_wait: resume"));
 }
 
+// A duration between two whole steps runs the nearer one (a sweep over engine.dt keeps one
+// duration), and says so: summary.json records the duration asked for.
+TEST(Cli, ADurationOfNoWholeNumberOfStepsSaysWhatRuns) {
+  const Outcome between = swarmagg("validate worlds/examples/demo.yaml --set run.duration=20.06");
+  EXPECT_EQ(between.exit_code, 0) << between.output;
+  EXPECT_THAT(between.output,
+              HasSubstr("note: run.duration 20.06 is 200.6 steps of engine.dt 0.1: each "
+                        "replicate runs 201 steps, 20.1 tu"));
+  const Outcome whole = swarmagg("validate worlds/examples/demo.yaml --set run.duration=0.3");
+  EXPECT_THAT(whole.output, ::testing::Not(HasSubstr("note:")))
+      << "0.3 / 0.1 rounds to 2.9999999999999996, a whole step";
+}
+
 // A world printed onto a full disk is not a success.
 // CLI11 alone read `--replicates 010` as 8 and `0x10` as 16; a world file reads 010 as 10.
 TEST(Cli, IntegerOptionsAreDecimal) {
