@@ -9,6 +9,7 @@
 #include <array>
 #include <charconv>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -65,8 +66,16 @@ class Simulation {
   void step(const py::object& count) {
     const std::int64_t steps =
         whole_argument(count, "steps", std::numeric_limits<std::int64_t>::max());
+    if (failure_) std::rethrow_exception(failure_);
     for (std::int64_t k = 1; k <= steps; ++k) {
-      replicate_->step();
+      try {
+        replicate_->step();
+      } catch (...) {
+        // The failed step left the state half changed (moved bodies, an uncounted step):
+        // carrying on would reach states no run reaches, so every later step() fails alike.
+        failure_ = std::current_exception();
+        throw;
+      }
       // After every step, as the docs promise: with no signal pending it reads one flag, and
       // one step of a large swarm takes long enough (13 ms at 2 x 10^5 agents) that every
       // 1024th step kept Ctrl-C waiting for 14 s.
@@ -145,6 +154,7 @@ class Simulation {
 
   World world_;
   std::unique_ptr<Replicate> replicate_;
+  std::exception_ptr failure_;  // what stopped a step, raised again by every later step()
   std::unique_ptr<FrameRenderer> renderer_;
 };
 
