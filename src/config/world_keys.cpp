@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include "config/controller_catalog.hpp"
 
@@ -181,15 +182,43 @@ WorldKey enum_key(std::string path, Access<Enum> access,
   return {std::move(path), "choice", expected, read, write, {}, {}, {}};
 }
 
+// Whether `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past
+// U+10FFFF), as a YAML text must be.
+bool is_utf8(std::string_view text) {
+  std::size_t k = 0;
+  while (k < text.size()) {
+    const auto lead = static_cast<unsigned char>(text[k]);
+    const int length = lead < 0x80   ? 1
+                       : lead < 0xC2 ? 0
+                       : lead < 0xE0 ? 2
+                       : lead < 0xF0 ? 3
+                       : lead < 0xF5 ? 4
+                                     : 0;
+    if (length == 0 || k + static_cast<std::size_t>(length) > text.size()) return false;
+    std::uint32_t code = length == 1 ? lead : lead & (0x7Fu >> length);
+    for (int i = 1; i < length; ++i) {
+      const auto next = static_cast<unsigned char>(text[k + static_cast<std::size_t>(i)]);
+      if ((next & 0xC0u) != 0x80u) return false;
+      code = (code << 6) | (next & 0x3Fu);
+    }
+    const std::uint32_t smallest[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+      return false;
+    k += static_cast<std::size_t>(length);
+  }
+  return true;
+}
+
 WorldKey string_key(std::string path, Access<std::string> access) {
-  const std::string expected = "a text without control characters";
+  const std::string expected = "a UTF-8 text without control characters";
   auto read = [access, expected](WorldSpec& w, const YAML::Node& node) {
     std::string text = scalar_text(node, expected);
     // A "\0" (possible in a quoted YAML string) would cut a path short where the C library
-    // reads it: render.dir "a\0b" wrote frames into "a".
+    // reads it: render.dir "a\0b" wrote frames into "a". Bytes that are not UTF-8 loaded, but
+    // no JSON output (summary.json, rates.json) could hold them, nor Python's str.
     const bool control = std::any_of(text.begin(), text.end(),
                                      [](char c) { return static_cast<unsigned char>(c) < 0x20; });
-    if (control) throw KeyValueError{expected};
+    if (control || !is_utf8(text)) throw KeyValueError{expected};
     access(w) = std::move(text);
   };
   auto write = [access](const WorldSpec& w) {
