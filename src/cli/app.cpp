@@ -23,8 +23,6 @@ int interrupted(int signal_number) {
   return Interrupted(signal_number).exit_code();
 }
 
-// CLI11 would call a misspelt command "a subcommand is required" (it takes the word for a
-// stray argument): name the word and the nearest command instead.
 // Ctrl-C reaches gnuplot and ffmpeg too: their failure is the interruption's, also when it
 // reads as bad input (ffmpeg's probe of what it can make, stopped by the signal, looks like an
 // ffmpeg that cannot make that kind of video).
@@ -34,6 +32,8 @@ int failed(const std::string& prefix, const std::string& message, int code) {
   return code;
 }
 
+// CLI11 would call a misspelt command "a subcommand is required" (it takes the word for a
+// stray argument): name the word and the nearest command instead.
 std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return std::nullopt;
   std::vector<std::string> commands;

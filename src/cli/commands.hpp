@@ -12,9 +12,10 @@ namespace swarmagg::cli {
 
 using Action = std::function<int()>;
 
-// --quiet keeps the notes that say an output was left out and why (no model.csv for a world the
-// models cannot describe, plots without gnuplot): a script would otherwise miss them.
-inline constexpr const char* kQuietHelp = "Print nothing but errors and notes on outputs left out";
+// --quiet keeps warnings and the notes that say an output was left out and why (no model.csv
+// for a world the models cannot describe, plots without gnuplot): a script would miss them.
+inline constexpr const char* kQuietHelp =
+    "Print nothing but errors, warnings and notes on outputs left out";
 
 void add_run_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);

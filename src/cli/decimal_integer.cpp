@@ -6,10 +6,10 @@
 
 namespace swarmagg::cli {
 
-CLI::Validator decimal_integer() {
+CLI::Validator decimal_integer(bool signed_option) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
-        const std::size_t sign = value.starts_with('-') || value.starts_with('+') ? 1 : 0;
+      [signed_option](std::string& value) -> std::string {
+        const std::size_t sign = signed_option && value.starts_with('-') ? 1 : 0;
         const bool digits_only =
             value.size() > sign &&
             std::all_of(value.begin() + static_cast<std::ptrdiff_t>(sign), value.end(),
@@ -26,8 +26,10 @@ CLI::Validator decimal_integer() {
 void read_integers_in_decimal(CLI::App& app) {
   for (CLI::App* command : app.get_subcommands({})) {
     for (CLI::Option* option : command->get_options()) {
-      const std::string type = option->get_type_name();
-      if (type == "INT" || type == "UINT") option->transform(decimal_integer());
+      // "INT", or "INT:..." once a check has added its description.
+      const std::string type_name = option->get_type_name();
+      const std::string type = type_name.substr(0, type_name.find_first_of(": "));
+      if (type == "INT" || type == "UINT") option->transform(decimal_integer(type == "INT"));
     }
   }
 }

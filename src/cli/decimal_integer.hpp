@@ -1,15 +1,16 @@
 #pragma once
 // CLI11 reads integers as C does, in the base their prefix names: `--replicates 010` would run
 // 8 replicates and `0x10` 16, where the same text in a world file or `--set` reads 10 (or is
-// refused). Integers on the command line are decimal: this transform drops leading zeros and
-// refuses any other form. Give it before a range check, which would read the raw text.
+// refused). Integers on the command line are decimal digits, as in world files: leading zeros
+// are dropped, and a sign other than a minus on a signed option is refused. CLI11 runs a
+// transform before an option's checks (a range), so those read the digits.
 #include <CLI/CLI.hpp>
 
 namespace swarmagg::cli {
 
-CLI::Validator decimal_integer();
+CLI::Validator decimal_integer(bool signed_option);
 
-// Every integer option of every command that has no range check of its own.
+// Every integer option of every command (type INT or UINT, with or without checks).
 void read_integers_in_decimal(CLI::App& app);
 
 }  // namespace swarmagg::cli

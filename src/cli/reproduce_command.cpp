@@ -2,7 +2,6 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/decimal_integer.hpp"
 #include "cli/progress_option.hpp"
 #include "core/errors.hpp"
 #include "output/output_check.hpp"
@@ -58,7 +57,6 @@ void add_reproduce_command(CLI::App& app, Action& action) {
       ->add_option("--threads", r.threads,
                    "Threads in all (0 = all cores): runs go side by side, one thread each, "
                    "as long as there are more runs than threads")
-      ->transform(decimal_integer())
       ->check(CLI::Range(0, 1024));
   command->add_option("--only", r.only,
                       "Only the worlds whose name contains this text (repeatable); "
@@ -75,10 +73,8 @@ void add_reproduce_command(CLI::App& app, Action& action) {
   // Checked before the runs, not by gnuplot after them: at least a pixel, at most what a
   // cairo surface holds.
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)")
-      ->transform(decimal_integer())
       ->check(CLI::Range(1, 32767));
   command->add_option("--plot-height", r.plot_size.height, "Plot height in pixels (default 600)")
-      ->transform(decimal_integer())
       ->check(CLI::Range(1, 32767));
   command->add_flag("--run-plots", r.run_plots,
                     "Also draw each run's rate plots (rates-<term>.png); without it their "

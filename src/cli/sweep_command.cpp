@@ -2,7 +2,6 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/decimal_integer.hpp"
 #include "cli/merge_removals.hpp"
 #include "cli/progress_option.hpp"
 #include "output/output_check.hpp"
@@ -99,7 +98,6 @@ void add_sweep_command(CLI::App& app, Action& action) {
       ->required();
   command->add_option("--out", options->out, "Output folder (default runs/<sweep name>)");
   command->add_option("--threads", options->threads, "Runs in parallel (0 = all cores)")
-      ->transform(decimal_integer())
       ->check(CLI::Range(0, 1024));  // as run.threads
   command->add_option("--shard", options->shard,
                       "Run only shard i of n (runs whose index mod n is i-1), e.g. 2/8");

@@ -20,6 +20,7 @@ void WorldOptions::add_to(CLI::App& command, bool run_options) {
 
 WorldSpec WorldOptions::load() const {
   std::vector<WorldOverride> all = parse_overrides(overrides);
+  refuse_repeated_keys(all);
   std::vector<WorldOverride> from_options;
   if (engine) from_options.push_back(typed_override("engine.type", *engine, "--engine"));
   if (replicates)

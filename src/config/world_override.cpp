@@ -12,15 +12,10 @@ WorldOverride parse_override(const std::string& assignment) {
     throw InputError(at + ": expected key.path=value, e.g. --set robots.count=80");
   }
   WorldOverride result{assignment.substr(0, equals), YAML::Node(), "--set"};
-  try {
-    result.value = parse_one_yaml_document(assignment.substr(equals + 1), "value", "a --set value");
-  } catch (const InputError& e) {
-    // The assignment is cut short: a long value would bury the message.
-    constexpr std::size_t kShown = 80;
-    const std::string shown =
-        assignment.size() <= kShown ? assignment : assignment.substr(0, kShown) + "...";
-    throw InputError("--set " + shown + ": the value is not valid YAML: " + e.what());
-  }
+  // Messages name the key and the line and column within the value, not the whole
+  // assignment: a long value would bury them.
+  result.value = parse_one_yaml_document(assignment.substr(equals + 1), "--set " + result.key,
+                                         "a --set value");
   return result;
 }
 
@@ -29,6 +24,15 @@ std::vector<WorldOverride> parse_overrides(const std::vector<std::string>& assig
   result.reserve(assignments.size());
   for (const std::string& a : assignments) result.push_back(parse_override(a));
   return result;
+}
+
+void refuse_repeated_keys(const std::vector<WorldOverride>& overrides) {
+  for (std::size_t i = 0; i < overrides.size(); ++i) {
+    for (std::size_t j = i + 1; j < overrides.size(); ++j) {
+      if (overrides[i].key == overrides[j].key)
+        throw InputError("--set " + overrides[i].key + " is given twice: give it once");
+    }
+  }
 }
 
 }  // namespace swarmagg

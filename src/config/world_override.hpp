@@ -28,6 +28,10 @@ struct WorldOverride {
 WorldOverride parse_override(const std::string& assignment);
 std::vector<WorldOverride> parse_overrides(const std::vector<std::string>& assignments);
 
+// InputError when two --set give one key: the last would win and the first be silently
+// unused (as an option and a --set of its key would be).
+void refuse_repeated_keys(const std::vector<WorldOverride>& overrides);
+
 // A typed value (number, string) for `key`; `origin` is the option that gave it.
 template <typename T>
 WorldOverride typed_override(std::string key, const T& value, std::string origin) {

@@ -160,8 +160,8 @@ struct WorldSpec {
   }
   // Number of steps a replicate runs: duration / dt, rounded to the nearest step.
   std::int64_t steps() const { return std::llround(run.duration / engine.dt); }
-  // Says how long a replicate runs when run.duration is not a whole number of steps (a sweep
-  // over engine.dt keeps one duration), "" when it is.
+  // Says how long a replicate runs when run.duration is not a whole number of steps (a
+  // world's duration kept while its engine.dt changes), "" when it is.
   std::string rounded_duration_note() const;
   // The largest radius any sensor of this world's controller reads (the controller says).
   double sensing_radius() const;

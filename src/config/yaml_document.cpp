@@ -67,7 +67,7 @@ class DocumentStarts final : public YAML::EventHandler {
 // YAML::Load would silently drop everything after a second '---'. Empty documents (a stray
 // '---' at the end) lose nothing and are let through.
 void check_one_document(const std::string& text, const std::string& source,
-                        const std::string& what) {
+                        const std::string& kind) {
   std::istringstream in(text);
   YAML::Parser parser(in);
   DocumentStarts starts;
@@ -80,7 +80,7 @@ void check_one_document(const std::string& text, const std::string& source,
     }
     if (starts.documents().size() > 1 && !last.empty) {
       throw InputError(where_mark(source, last.start) + ": a second YAML document starts here; " +
-                       what + " is one YAML document");
+                       kind + " is one YAML document");
     }
   }
 }

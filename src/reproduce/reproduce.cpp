@@ -353,7 +353,9 @@ ReproduceOutcome reproduce(const ReproduceOptions& options, std::ostream& summar
   if (figures.empty() && timeouts.empty()) throw InputError(no_world_selected(options.only));
   // Every experiment compares the paper's controllers with their models: another controller
   // ran, then failed on the model files it has none of.
-  for (const WorldOverride& o : parse_overrides(options.overrides)) {
+  const std::vector<WorldOverride> sets = parse_overrides(options.overrides);
+  refuse_repeated_keys(sets);
+  for (const WorldOverride& o : sets) {
     if (o.key == "controller.type") {
       throw InputError(
           "--set controller.type: reproduce runs the paper's experiments with their own "

@@ -125,7 +125,9 @@ TEST(Trajectories, BadRenderRequestsExitTwoWithAReason) {
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_THAT(o.output, HasSubstr("trajectories.h5"));
   ASSERT_EQ(
-      swarmagg("run " + kWorld + " --trajectories 10 --set run.duration=5 --out " + out.string())
+      swarmagg("run worlds/examples/demo.yaml --replicates 2 --no-model --quiet --trajectories 10 "
+               "--set run.duration=5 --out " +
+               out.string())
           .exit_code,
       0);
   o = swarmagg("render " + out.string() + " --every 15");
