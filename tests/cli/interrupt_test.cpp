@@ -277,6 +277,16 @@ int count_below(const fs::path& dir, const std::function<bool(const std::string&
   return count;
 }
 
+// Whether `dir` itself (not below) holds a file whose name is `wanted`, read while a child
+// may be changing it.
+bool holds_file(const fs::path& dir, const std::function<bool(const std::string&)>& wanted) {
+  std::error_code gone;
+  for (const auto& entry : fs::directory_iterator(dir, gone)) {
+    if (wanted(entry.path().filename().string())) return true;
+  }
+  return false;
+}
+
 int count_named_below(const fs::path& dir, const std::string& name) {
   return count_below(dir, [&](const std::string& file) { return file == name; });
 }
@@ -393,11 +403,7 @@ TEST(Interrupt, SigintStopsAVideoAndLeavesNoHalfMadeFile) {
   // Once the video's hidden temporary exists the real ffmpeg is under way, past the probe
   // that checks what it can make (SigintDuringTheVideoProbeExitsAsInterrupted).
   const auto writing = [&] {
-    std::error_code gone;  // the directory may change while it is read
-    for (const auto& entry : fs::directory_iterator(out, gone)) {
-      if (entry.path().filename().string().ends_with(".tmp.mp4")) return true;
-    }
-    return false;
+    return holds_file(out, [](const std::string& file) { return file.ends_with(".tmp.mp4"); });
   };
   ASSERT_TRUE(wait_until(writing)) << "ffmpeg never started the video";
   child.send_to_group(SIGINT);
@@ -475,11 +481,7 @@ TEST(Interrupt, SigintStopsALongModelAndKeepsTheEarlierModelOutputs) {
   ASSERT_TRUE(child.wait_for_handlers(std::chrono::seconds(60)));
   // Once it writes its model.csv temporary it is in the walks, past the placements.
   const auto writing = [&] {
-    std::error_code gone;  // the directory may change while it is read
-    for (const auto& entry : fs::directory_iterator(out, gone)) {
-      if (entry.path().filename().string().starts_with(".model.csv.")) return true;
-    }
-    return false;
+    return holds_file(out, [](const std::string& file) { return file.starts_with(".model.csv."); });
   };
   ASSERT_TRUE(wait_until(writing)) << "never started writing its model";
   child.send(SIGINT);
