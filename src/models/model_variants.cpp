@@ -118,7 +118,7 @@ PendingVariant soysal_variant(const std::shared_ptr<const WorldSpec>& world,
                          .walk_rows_work = static_cast<double>(world->steps())};
   pending.walk_rows = [=](const RowVisitor& visit, const WalkProgress& progress, Extras extras) {
     VariantPrediction prediction =
-        soysal_prediction(*world, rates, variant, start, partitions.get());
+        soysal_prediction(*world, rates, variant, start, partitions.get(), progress);
     for (const ModelRow& row : prediction.series) visit(row);
     if (progress) progress(world->steps());
     if (extras == Extras::Skipped) return std::vector<TidyValue>{};

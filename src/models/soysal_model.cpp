@@ -154,7 +154,8 @@ void check_partition_chain_size(const WorldSpec& world) {
 
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
                                     const std::string& variant, const std::vector<double>& start,
-                                    const std::map<Partition, double>* start_partitions) {
+                                    const std::map<Partition, double>* start_partitions,
+                                    const WalkProgress& check) {
   const bool sampled = start_partitions && !start_partitions->empty();
   check_partition_chain_size(world);
   const int agents = world.robots.count;
@@ -163,14 +164,15 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
   const StateObservables values = observables_of(chain.states);
   const std::vector<std::int64_t> grid = sparse_grid(world, kPartitionReportPoints);
   std::optional<Eigen::VectorXd> stationary;
-  if (chain.recurrent) stationary = stationary_distribution(chain.generator);
+  if (chain.recurrent) stationary = stationary_distribution(chain.generator, check);
   Eigen::MatrixXd distributions;
   ChainRun run{.start = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(chain.states.size()),
                                               chain.all_free),
                .start_step = 0,
                .steps = world.steps()};
   if (start.empty() && !sampled) {
-    distributions = transient_distributions(chain.generator, chain.all_free, grid, stationary);
+    distributions =
+        transient_distributions(chain.generator, chain.all_free, grid, stationary, check);
   } else {
     // Step 0 is all free; from step 1 on the chain runs from the first decision's distribution.
     std::vector<std::int64_t> after_first(grid.size());
@@ -179,7 +181,8 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
     run.start = sampled ? sampled_first_decision_distribution(chain, *start_partitions)
                         : first_decision_distribution(chain, start);
     run.start_step = 1;
-    distributions = transient_distributions(chain.generator, run.start, after_first, stationary);
+    distributions =
+        transient_distributions(chain.generator, run.start, after_first, stationary, check);
     for (std::size_t j = 0; j < grid.size(); ++j) {
       if (grid[j] == 0) {
         distributions.row(static_cast<Eigen::Index>(j)) =

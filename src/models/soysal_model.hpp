@@ -8,6 +8,7 @@
 #include "config/world_spec.hpp"
 #include "models/initial_state.hpp"
 #include "models/model_series.hpp"
+#include "models/output_grid.hpp"
 #include "models/partitions.hpp"
 #include "models/soysal_rates.hpp"
 
@@ -30,11 +31,13 @@ void check_partition_chain_size(const WorldSpec& world);
 // renormalized), and the chain runs from there.
 // With `start_partitions` (PlacementSample::partitions: the probability of each partition
 // after the first decision, as sampled) the chain starts from that distribution exactly
-// instead (`start` is then not read).
+// instead (`start` is then not read). `check` is called with 0 now and then (the caller's
+// check for Ctrl-C: the chain of N = 30 takes seconds).
 VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& rates,
                                     const std::string& variant,
                                     const std::vector<double>& start = {},
-                                    const std::map<Partition, double>* start_partitions = nullptr);
+                                    const std::map<Partition, double>* start_partitions = nullptr,
+                                    const WalkProgress& check = {});
 // The world's own rates and start (model.initial_state, not measured; `sample` as for
 // start_aggregates).
 VariantPrediction soysal_prediction(const WorldSpec& world, LeavingVariant variant,

@@ -20,6 +20,24 @@ std::map<std::int64_t, double> probability_mass(const VariantPrediction& predict
   return mass;
 }
 
+// The chain of a large swarm takes seconds (5 s for the stationary law of N = 30): the
+// caller's check for Ctrl-C is called during it, and what it throws ends the prediction.
+TEST(SoysalModel, CallsItsCheckWhileTheChainIsComputedAndStopsWhenItThrows) {
+  WorldSpec world = testing::soysal_world(20, 300.0);
+  world.run.duration = 100000.0;
+  const SoysalRates rates = soysal_rates(world, LeavingVariant::Peripheral);
+  int checks = 0;
+  const WalkProgress count = [&](std::int64_t work) {
+    EXPECT_EQ(work, 0);
+    ++checks;
+  };
+  soysal_prediction(world, rates, "peripheral", {}, nullptr, count);
+  EXPECT_GE(checks, 10);  // 627 partitions: every 64 rows of the elimination, and the products
+  struct Stop {};
+  const WalkProgress stop = [](std::int64_t) { throw Stop{}; };
+  EXPECT_THROW(soysal_prediction(world, rates, "peripheral", {}, nullptr, stop), Stop);
+}
+
 TEST(SoysalModel, StartsFreeAndReportsNormalisedDistributions) {
   WorldSpec world = testing::soysal_world(10, 212.0);
   world.run.duration = 500000.0;  // 5e6 steps
