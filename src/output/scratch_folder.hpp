@@ -12,6 +12,17 @@
 
 namespace swarmagg {
 
+// The system's temporary directory as POSIX and Python's tempfile read it: $TMPDIR when set
+// and not empty, else /tmp (std::filesystem::temp_directory_path fails on an empty $TMPDIR).
+inline std::filesystem::path temporary_directory(std::error_code& error) {
+  const char* tmpdir = std::getenv("TMPDIR");
+  const std::filesystem::path folder = tmpdir != nullptr && *tmpdir != '\0' ? tmpdir : "/tmp";
+  error.clear();
+  if (!std::filesystem::is_directory(folder, error) && !error)
+    error = std::make_error_code(std::errc::not_a_directory);
+  return folder;
+}
+
 class ScratchFolder {
  public:
   // `prefix` starts the folder's name (six random characters follow).
@@ -19,7 +30,7 @@ class ScratchFolder {
   // directory ($TMPDIR, else /tmp) when it is missing or refuses the folder.
   explicit ScratchFolder(const std::string& prefix) {
     std::error_code error;
-    const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
+    const std::filesystem::path temporary = temporary_directory(error);
     if (error) {
       const char* tmpdir = std::getenv("TMPDIR");
       throw std::filesystem::filesystem_error(

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "output/scratch_folder.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/gnuplot_process.hpp"
 
@@ -30,7 +31,8 @@ std::string batch_commands(const std::vector<std::filesystem::path>& scripts) {
 class CommandFile {
  public:
   explicit CommandFile(const std::string& commands) {
-    std::string name = (std::filesystem::temp_directory_path() / "swarmagg-plots-XXXXXX.gp");
+    std::error_code missing;  // mkstemps below names the folder in its error
+    std::string name = (temporary_directory(missing) / "swarmagg-plots-XXXXXX.gp");
     const int fd = ::mkstemps(name.data(), 3);
     if (fd < 0) throw std::runtime_error("cannot create a temporary file for gnuplot in " + name);
     path_ = name;
