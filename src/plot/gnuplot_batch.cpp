@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "output/scratch_folder.hpp"
+#include "output/temporary_directory.hpp"
 #include "plot/gnuplot.hpp"
 #include "plot/gnuplot_process.hpp"
 
