@@ -64,7 +64,36 @@ const std::vector<ControllerCatalogEntry>& controller_catalog() {
   return entries;
 }
 
+namespace {
+
+// The model.* keys each family of models reads (models/predictions.cpp and what it calls):
+// the Bayindir equations and the encounter rate take kappa and the creation variant, the
+// Soysal partition chain the leaving variant and its periphery; only the Bayindir equations
+// have a stochastic version.
+bool model_reads(ModelFamily model, const std::string& path) {
+  static const std::vector<std::string> bayindir = {
+      "model.kappa", "model.creation", "model.stochastic_replicates", "model.initial_state"};
+  static const std::vector<std::string> soysal = {"model.leaving", "model.periphery_cap",
+                                                  "model.initial_state"};
+  const auto holds = [&](const std::vector<std::string>& keys) {
+    return std::find(keys.begin(), keys.end(), path) != keys.end();
+  };
+  switch (model) {
+    case ModelFamily::None:
+      return false;
+    case ModelFamily::Encounters:
+    case ModelFamily::Bayindir:
+      return holds(bayindir);
+    case ModelFamily::Soysal:
+      return holds(soysal);
+  }
+  return true;
+}
+
+}  // namespace
+
 bool controller_reads(const WorldSpec& spec, const WorldKey& key) {
+  if (key.path.starts_with("model.")) return model_reads(controller_rules(spec).model, key.path);
   if (!key.path.starts_with("controller.") || key.path == "controller.type") return true;
   if (!key.controller.empty()) return key.controller == spec.controller.type;
   const std::vector<std::string>& shared = catalog_entry(spec.controller.type).shared_keys;

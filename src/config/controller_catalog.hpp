@@ -34,8 +34,9 @@ struct ControllerCatalogEntry {
   std::vector<std::string> shared_keys;
 };
 
-// Whether `spec`'s resolved world holds `key`: any key outside controller.*, controller.type,
-// and the controller.* keys its controller reads.
+// Whether `spec`'s resolved world holds `key`: any key outside controller.* and model.*,
+// controller.type, the controller.* keys its controller reads and the model.* keys the
+// model of its controller's worlds reads (none when there is no model).
 bool controller_reads(const WorldSpec& spec, const WorldKey& key);
 
 // Every registered controller, in registration order (defined by the controllers library).

@@ -510,27 +510,27 @@ std::vector<WorldKey> build_keys() {
       enum_key<Kappa>(
           "model.kappa", [](WorldSpec& w) -> Kappa& { return w.model.kappa; },
           {{"kinetic", Kappa::Kinetic}, {"maxwell", Kappa::Maxwell}, {"paper", Kappa::Paper}}),
-      "constant of the encounter rate kappa s v y(y-1)/A: kinetic 4/pi, maxwell sqrt 2, paper (the "
-      "founding paper's fitted constant) (docs/models.md)"));
+      "bayindir and collision models: constant of the encounter rate kappa s v y(y-1)/A: kinetic "
+      "4/pi, maxwell sqrt 2, paper (the founding paper's fitted constant) (docs/models.md)"));
   keys.push_back(described(
       enum_key<CreationVariant>(
           "model.creation", [](WorldSpec& w) -> CreationVariant& { return w.model.creation; },
           {{"original", CreationVariant::Original}, {"collision", CreationVariant::Collision}}),
-      "the Bayindir model's creation variant marked chosen: original or collision "
+      "bayindir and collision models: the creation variant marked chosen: original or collision "
       "(docs/models.md)"));
   keys.push_back(described(
       enum_key<LeavingVariant>(
           "model.leaving", [](WorldSpec& w) -> LeavingVariant& { return w.model.leaving; },
           {{"original", LeavingVariant::Original}, {"peripheral", LeavingVariant::Peripheral}}),
-      "the Soysal model's leaving variant marked chosen: original or peripheral (docs/models.md)"));
+      "soysal model: the leaving variant marked chosen: original or peripheral (docs/models.md)"));
   keys.push_back(described(
       bool_key("model.periphery_cap", [](WorldSpec& w) -> bool& { return w.model.periphery_cap; }),
-      "cap periph(m) at m (a rim cannot hold more agents than the aggregate)"));
+      "soysal model: cap periph(m) at m (a rim cannot hold more agents than the aggregate)"));
   keys.push_back(
       described(integer_key<int>(
                     "model.stochastic_replicates",
                     [](WorldSpec& w) -> int& { return w.model.stochastic_replicates; }, 0, 100000),
-                "replicates of the stochastic Bayindir model; 0: none"));
+                "bayindir and collision models: replicates of the stochastic version; 0: none"));
   keys.push_back(described(
       enum_key<InitialState>("model.initial_state",
                              [](WorldSpec& w) -> InitialState& { return w.model.initial_state; },

@@ -182,19 +182,45 @@ bool reads(const ControllerCatalogEntry& entry, const std::string& path) {
          std::find(shared.begin(), shared.end(), path) != shared.end();
 }
 
-// " (read by controller type 'a', 'b')", or nothing when no type reads `path`.
-std::string readers_of(const std::string& path) {
-  std::string types;
-  for (const ControllerCatalogEntry& entry : controller_catalog()) {
-    if (reads(entry, path)) types += (types.empty() ? "'" : ", '") + entry.type + "'";
-  }
-  return types.empty() ? "" : " (read by controller type " + types + ")";
+// A model.* key that the model of `type`'s worlds does not read (each controller names its
+// model family in its rules; a default world of the type asks them).
+bool unread_model_key(const std::string& type, const std::string& path) {
+  const WorldKey* key = find_world_key(path);
+  if (!path.starts_with("model.") || key == nullptr) return false;
+  WorldSpec world;
+  world.controller.type = type;
+  return !controller_reads(world, *key);
+}
+
+// Whether `type`'s worlds have a macroscopic model (one that reads some model.* key).
+bool has_model(const std::string& type) {
+  const std::vector<std::string> paths = world_key_paths();
+  return std::any_of(paths.begin(), paths.end(), [&](const std::string& path) {
+    return path.starts_with("model.") && !unread_model_key(type, path);
+  });
 }
 
 // A controller.* key (not the type itself) that `controller` does not read.
 bool unread_controller_key(const ControllerCatalogEntry& controller, const std::string& path) {
   return path.starts_with("controller.") && path != "controller.type" &&
          find_world_key(path) != nullptr && !reads(controller, path);
+}
+
+// A key `controller`'s worlds ignore: one of another controller's, or one its model does not
+// read.
+bool unread_key(const ControllerCatalogEntry& controller, const std::string& path) {
+  return unread_controller_key(controller, path) || unread_model_key(controller.type, path);
+}
+
+// " (read by controller type 'a', 'b')", or nothing when no type reads `path`.
+std::string readers_of(const std::string& path) {
+  std::string types;
+  for (const ControllerCatalogEntry& entry : controller_catalog()) {
+    if (!unread_key(entry, path)) types += (types.empty() ? "'" : ", '") + entry.type + "'";
+  }
+  const std::string readers =
+      path.starts_with("model.") ? "the models of controller type " : "controller type ";
+  return types.empty() ? "" : " (read by " + readers + types + ")";
 }
 
 // A file switched to another controller type by an override (a sweep over controller types)
@@ -300,7 +326,7 @@ void apply_override(WorldSpec& spec, const WorldOverride& override) {
 }
 
 bool controller_type_reads(const std::string& type, const std::string& path) {
-  return !unread_controller_key(catalog_entry(type), path);
+  return !unread_key(catalog_entry(type), path);
 }
 
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides) {
@@ -311,11 +337,15 @@ void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride
                                    "type that does"
                                  : "; remove it or set controller.type too";
   for (const WorldOverride& override : overrides) {
-    if (override.any_controller || !unread_controller_key(controller, override.key)) continue;
-    throw InputError(override.origin + ": " + override.key + ": the world's controller type '" +
-                     spec.controller.type + "' (" + spec.source +
-                     ") does not read this key, so the run would ignore it" +
-                     readers_of(override.key) + remedy);
+    if (override.any_controller || !unread_key(controller, override.key)) continue;
+    const std::string type = "controller type '" + spec.controller.type + "' (" + spec.source + ")";
+    const std::string ignored = !override.key.starts_with("model.")
+                                    ? "the world's " + type + " does not read this key"
+                                : has_model(spec.controller.type)
+                                    ? "the model of the world's " + type + " does not read this key"
+                                    : "the world's " + type + " has no model";
+    throw InputError(override.origin + ": " + override.key + ": " + ignored +
+                     ", so the run would ignore it" + readers_of(override.key) + remedy);
   }
 }
 

@@ -264,6 +264,43 @@ TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
               HasSubstr("controller.p_leave: the world's controller type 'soysal'"));
 }
 
+// Each family of models reads some model.* keys (kappa and the creation variant the Bayindir
+// equations and the encounter rate, the leaving variant the Soysal chain): --set or a sweep
+// point giving one the world's model ignores would be listed as a change that changed nothing.
+// A file may hold them (resolved worlds of earlier versions wrote every model key); the
+// resolved world drops them.
+TEST(WorldLoaderErrors, ModelKeysTheModelDoesNotReadAreRefusedFromOverrides) {
+  const std::string soysal = "controller: {type: soysal}\n";
+  EXPECT_THAT(error_of(soysal, {"model.kappa=maxwell"}),
+              AllOf(HasSubstr("--set: model.kappa: the model of the world's controller type "
+                              "'soysal' (w.yaml) does not read this key"),
+                    HasSubstr("read by the models of controller type 'bayindir', 'collision'"),
+                    HasSubstr("remove it or set controller.type too")));
+  EXPECT_THAT(error_of(soysal, {"model.stochastic_replicates=0"}),
+              HasSubstr("model.stochastic_replicates: the model of"));
+  EXPECT_EQ(error_of(soysal, {"model.leaving=original"}), "no error");
+  EXPECT_THAT(error_of("controller: {type: bayindir}\n", {"model.periphery_cap=false"}),
+              AllOf(HasSubstr("model.periphery_cap: the model of the world's controller type "
+                              "'bayindir'"),
+                    HasSubstr("read by the models of controller type 'soysal'")));
+  EXPECT_EQ(error_of("controller: {type: collision}\n", {"model.kappa=maxwell"}), "no error");
+  EXPECT_THAT(error_of("controller: {type: cockroach}\n", {"model.initial_state=all_searching"}),
+              HasSubstr("the world's controller type 'cockroach' (w.yaml) has no model, so the "
+                        "run would ignore it"));
+  // Overrides that set the type act on the type they set.
+  EXPECT_EQ(error_of(soysal, {"controller.type=bayindir", "model.kappa=maxwell"}), "no error");
+
+  const WorldSpec world =
+      load_world_text("controller: {type: soysal}\nmodel: {kappa: maxwell, leaving: original}\n",
+                      "w.yaml");
+  const std::string resolved = world_to_yaml(world);
+  EXPECT_THAT(resolved, HasSubstr("leaving: original"));
+  EXPECT_THAT(resolved, Not(HasSubstr("kappa")));
+  EXPECT_THAT(resolved, Not(HasSubstr("stochastic_replicates")));
+  EXPECT_THAT(world_to_yaml(load_world_text("controller: {type: cockroach}\n", "w.yaml")),
+              Not(HasSubstr("model:")));
+}
+
 // A key given no value is named where it stands, not where the next token starts.
 TEST(WorldLoaderErrors, AMissingValueNamesTheLineOfItsKey) {
   EXPECT_THAT(error_of("robots:\n  count:\n"),

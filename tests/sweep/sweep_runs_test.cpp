@@ -62,6 +62,17 @@ TEST_F(SweepTest, APointSettingAKeyItsControllerDoesNotReadIsRefused) {
                  "  controller.approach_radius: [8]\n",
                  "none.yaml"));
   EXPECT_THROW(expand_sweep(none), InputError);
+  // Model keys too: a Soysal sweep over kappa would plot a parameter that changed nothing.
+  const SweepPlan kappa = load_sweep(
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n"
+                 "  model.kappa: [kinetic, maxwell]\n",
+                 "kappa.yaml"));
+  EXPECT_THROW(expand_sweep(kappa), InputError);
+  const SweepPlan models = load_sweep(
+      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [bayindir, soysal]\n"
+                 "  model.kappa: [maxwell]\n",
+                 "models.yaml"));
+  EXPECT_EQ(expand_sweep(models).size(), 2u * 5u);
 }
 
 TEST_F(SweepTest, EachRunIsOneReplicateWithItsOwnSeed) {
