@@ -1,7 +1,10 @@
 #include "analysis/run_files.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "config/world_loader.hpp"
@@ -21,6 +24,60 @@ nlohmann::json read_json(const std::filesystem::path& file) {
   }
 }
 
+[[noreturn]] void refuse_summary(const std::filesystem::path& file, const std::string& key,
+                                 const std::string& expected) {
+  throw InputError(file.string() + ": " + key + ": expected " + expected +
+                   "; the file was edited or damaged since the run: run the world again");
+}
+
+// Each replicate's final aggregate sizes: whole numbers from 2 to N, N at most in all.
+std::vector<int> final_sizes_of(const nlohmann::json& replicate, const std::string& key,
+                                const std::filesystem::path& file, int agents) {
+  const std::string expected = "a list of aggregate sizes, whole numbers from 2 to " +
+                               std::to_string(agents) +
+                               " (the world's robots.count) that add up to at most that";
+  if (!replicate.is_object() || !replicate.contains("final") || !replicate["final"].is_object() ||
+      !replicate["final"].contains("aggregate_sizes") ||
+      !replicate["final"]["aggregate_sizes"].is_array())
+    refuse_summary(file, key, expected);
+  std::vector<int> sizes;
+  std::int64_t total = 0;
+  for (const nlohmann::json& size : replicate["final"]["aggregate_sizes"]) {
+    if (!size.is_number_integer() || size.get<std::int64_t>() < 2 ||
+        size.get<std::int64_t>() > agents)
+      refuse_summary(file, key, expected + ", got " + size.dump());
+    sizes.push_back(size.get<int>());
+    total += sizes.back();
+  }
+  if (total > agents) refuse_summary(file, key, expected + ", got " + std::to_string(total));
+  return sizes;
+}
+
+// What the plots read of summary.json: each replicate's final sizes and the overrides.
+void read_summary(const std::filesystem::path& file, RunFiles& run) {
+  const nlohmann::json summary = read_json(file);
+  const int replicates = run.world.run.replicates;
+  if (!summary.is_object() || !summary.contains("replicates") ||
+      !summary["replicates"].is_array() ||
+      summary["replicates"].size() != static_cast<std::size_t>(replicates))
+    refuse_summary(file, "replicates",
+                   "a list of " + std::to_string(replicates) + " (the world's run.replicates)");
+  for (std::size_t i = 0; i < summary["replicates"].size(); ++i) {
+    run.final_sizes.push_back(final_sizes_of(
+        summary["replicates"][i], "replicates[" + std::to_string(i) + "].final.aggregate_sizes",
+        file, run.world.robots.count));
+  }
+  if (summary.contains("wall_seconds") && summary["wall_seconds"].is_number())
+    run.wall_seconds = summary["wall_seconds"].get<double>();
+  if (!summary.contains("overrides")) return;
+  const nlohmann::json& overrides = summary["overrides"];
+  const bool texts =
+      overrides.is_array() && std::all_of(overrides.begin(), overrides.end(),
+                                          [](const nlohmann::json& o) { return o.is_string(); });
+  if (!texts) refuse_summary(file, "overrides", "a list of texts (key=value)");
+  for (const nlohmann::json& o : overrides) run.overrides.push_back(o.get<std::string>());
+}
+
 }  // namespace
 
 RunFiles read_run_files(const std::filesystem::path& folder) {
@@ -38,7 +95,7 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   run.timeseries = folder / "timeseries.csv";
   if (!std::filesystem::is_regular_file(run.timeseries))
     throw InputError("cannot read " + run.timeseries.string());
-  run.summary = read_json(folder / "summary.json");
+  read_summary(folder / "summary.json", run);
   if (std::filesystem::exists(folder / "model.csv")) run.model = folder / "model.csv";
   run.has_partitions = std::filesystem::exists(folder / "partitions.csv");
   return run;
@@ -68,22 +125,11 @@ void check_holds_every_row(const RunFiles& run) {
 }
 
 std::string run_title(const RunFiles& run) {
-  std::string title = run.world.name;
-  const auto overrides = run.summary.find("overrides");
-  if (overrides == run.summary.end() || !overrides->is_array() || overrides->empty()) return title;
   std::string changed;
-  for (const auto& assignment : *overrides) {
-    changed += (changed.empty() ? "" : ", ") + assignment.get<std::string>();
+  for (const std::string& assignment : run.overrides) {
+    changed += (changed.empty() ? "" : ", ") + assignment;
   }
-  return title + " (" + changed + ")";
-}
-
-std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run) {
-  std::vector<std::vector<int>> sizes;
-  for (const auto& replicate : run.summary.at("replicates")) {
-    sizes.push_back(replicate.at("final").at("aggregate_sizes").get<std::vector<int>>());
-  }
-  return sizes;
+  return changed.empty() ? run.world.name : run.world.name + " (" + changed + ")";
 }
 
 }  // namespace swarmagg

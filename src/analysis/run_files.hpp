@@ -3,8 +3,9 @@
 // user can open, the same whether the run has just finished or ran long ago: the resolved world,
 // timeseries.csv, summary.json and, when present, model.csv and partitions.csv.
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "config/world_spec.hpp"
 
@@ -16,13 +17,17 @@ struct RunFiles {
   std::filesystem::path folder;
   WorldSpec world;
   std::filesystem::path timeseries;
-  nlohmann::json summary;
+  // What the plots read of summary.json, checked against the world when the folder is read.
+  std::vector<std::vector<int>> final_sizes;   // each replicate's final aggregate sizes
+  std::vector<std::string> overrides;          // "key=value", as the run was given them
+  double wall_seconds = 0.0;                   // the run's wall time (0 when not recorded)
   std::optional<std::filesystem::path> model;  // model.csv, absent with --no-model
   bool has_partitions = false;                 // partitions.csv (Soysal worlds)
 };
 
 // Throws InputError naming the folder when it holds no complete run (world.resolved.yaml
-// is written last, timeseries.csv before it) or a file is unreadable.
+// is written last, timeseries.csv before it), or naming the file and the key when a file is
+// unreadable or summary.json does not fit the world (edited or damaged since).
 RunFiles read_run_files(const std::filesystem::path& folder);
 
 // Whether `timeseries` holds every row of every replicate of `spec` and ends with a whole line:
@@ -35,8 +40,5 @@ void check_holds_every_row(const RunFiles& run);
 // The world's name for plot titles, followed by the overrides the run was given, if any:
 // "full-0.0025 (robots.count=80)".
 std::string run_title(const RunFiles& run);
-
-// Each replicate's final aggregate sizes from summary.json, in replicate order.
-std::vector<std::vector<int>> final_aggregate_sizes(const RunFiles& run);
 
 }  // namespace swarmagg

@@ -44,6 +44,11 @@ int render_command(const RenderCommandOptions& options) {
   const std::vector<WorldOverride> overrides =
       options.size ? render_size_overrides(*options.size, "--size") : std::vector<WorldOverride>{};
   const WorldSpec spec = load_world_text_with(reader.world_text(), file.string(), overrides);
+  if (reader.agents() != spec.robots.count) {
+    throw InputError(file.string() + ": attribute 'agents' is " + std::to_string(reader.agents()) +
+                     ", but its world has robots.count " + std::to_string(spec.robots.count) +
+                     " (the file is damaged)");
+  }
   const std::int64_t every = options.every.value_or(reader.every());
   if (every <= 0 || every % reader.every() != 0) {
     throw InputError("--every " + std::to_string(every) + ": expected a positive multiple of " +

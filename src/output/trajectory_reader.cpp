@@ -11,6 +11,16 @@ namespace {
 
 namespace layout = trajectory_layout;
 
+// The datasets of a replicate: one value per stored row, or one per row and agent.
+constexpr const char* kRowDatasets[] = {"step", "time"};
+constexpr const char* kAgentDatasets[] = {"x", "y", "heading", "state", "aggregate"};
+
+std::string shape_text(const std::vector<std::int64_t>& shape) {
+  std::string text;
+  for (const std::int64_t n : shape) text += (text.empty() ? "" : " x ") + std::to_string(n);
+  return "[" + text + "]";
+}
+
 }  // namespace
 
 TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : path_(path) {
@@ -31,15 +41,52 @@ TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : path_(pa
                      ": not a swarmagg trajectory file (expected attribute format '" +
                      layout::kFormat + "')");
   }
+  for (const auto& [name, value] : {std::pair{"every", every_}, std::pair{"agents", agents_},
+                                    std::pair{"replicates", std::int64_t{replicates_}}}) {
+    if (value < 1) {
+      throw InputError(path.string() + ": attribute '" + name + "' is " + std::to_string(value) +
+                       ": expected a positive whole number (the file is damaged)");
+    }
+  }
+}
+
+// Every dataset of the replicate has one row per stored step, and those of the agents one
+// column per agent: a damaged file would otherwise be read past its buffers.
+void TrajectoryReader::check_shapes(const h5::Handle& group, int replicate) const {
+  const std::string where = path_.string() + ": " + layout::group_name(replicate) + "/";
+  std::int64_t rows = -1;
+  auto check = [&](const char* name, bool per_agent) {
+    if (!h5::has_child(group, name))
+      throw InputError(where + name + ": missing (the file is damaged)");
+    const std::vector<std::int64_t> shape = h5::dataset_shape(h5::open_dataset(group, name));
+    if (rows < 0 && !shape.empty()) rows = shape[0];
+    const std::vector<std::int64_t> expected =
+        per_agent ? std::vector<std::int64_t>{rows, agents_} : std::vector<std::int64_t>{rows};
+    if (shape != expected) {
+      throw InputError(where + name + ": shape " + shape_text(shape) + ", expected " +
+                       shape_text(expected) + " (stored rows" +
+                       (per_agent ? " x the file's " + std::to_string(agents_) + " agents" : "") +
+                       "; the file is damaged)");
+    }
+  };
+  for (const char* name : kRowDatasets) check(name, false);
+  for (const char* name : kAgentDatasets) check(name, true);
+  checked_replicate_ = replicate;
 }
 
 h5::Handle TrajectoryReader::replicate_group(int replicate) const {
   const std::string name = layout::group_name(replicate);
-  if (replicate < 0 || replicate >= replicates_ || !h5::has_child(file_, name)) {
+  if (replicate < 0 || replicate >= replicates_) {
     throw InputError(path_.string() + ": no replicate " + std::to_string(replicate) +
                      " (the file holds replicates 0.." + std::to_string(replicates_ - 1) + ")");
   }
-  return h5::open_group(file_, name);
+  if (!h5::has_child(file_, name)) {
+    throw InputError(path_.string() + ": no group " + name + ", though the file says it holds " +
+                     std::to_string(replicates_) + " replicates (the file is damaged)");
+  }
+  h5::Handle group = h5::open_group(file_, name);
+  if (checked_replicate_ != replicate) check_shapes(group, replicate);
+  return group;
 }
 
 std::vector<std::int64_t> TrajectoryReader::steps(int replicate) const {

@@ -39,7 +39,9 @@ class TrajectoryReader {
   void read(int replicate, std::int64_t row, TrajectoryRow& out) const;
 
  private:
+  // The replicate's group, its datasets' shapes checked (InputError naming what is wrong).
   h5::Handle replicate_group(int replicate) const;
+  void check_shapes(const h5::Handle& group, int replicate) const;
 
   std::filesystem::path path_;
   h5::Handle file_;
@@ -47,6 +49,7 @@ class TrajectoryReader {
   std::int64_t every_ = 0;
   std::int64_t agents_ = 0;
   int replicates_ = 0;
+  mutable int checked_replicate_ = -1;  // whose shapes check_shapes found right
   // Scratch buffers of read(): the columns as stored.
   mutable std::vector<double> x_, y_;
   mutable std::vector<std::uint8_t> state_;

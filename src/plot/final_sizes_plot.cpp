@@ -19,7 +19,7 @@ constexpr double kDrawnAggregates = 0.01;
 }  // namespace
 
 void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
-  const std::vector<std::vector<int>> sizes = final_aggregate_sizes(run);
+  const std::vector<std::vector<int>>& sizes = run.final_sizes;
   std::vector<ModelCurve> model;
   if (run.model) model = model_curves_by_suffix(*run.model, kAggregatesOfSize);
   int largest = 2;

@@ -7,6 +7,7 @@
 
 #include "analysis/csv_table.hpp"
 #include "analysis/csv_text.hpp"
+#include "config/world_keys.hpp"
 #include "core/errors.hpp"
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
@@ -145,6 +146,14 @@ PlotOutcome draw_sweep_plots(const std::filesystem::path& sweep_folder,
   const std::size_t parameters = table.column("observable");
   const std::vector<std::string> keys(
       table.header.begin(), table.header.begin() + static_cast<std::ptrdiff_t>(parameters));
+  // Each key names a plot's files: only world keys, so that no name leaves the plots folder.
+  for (const std::string& key : keys) {
+    if (find_world_key(key) == nullptr) {
+      throw InputError(summary.string() + ": column '" + key +
+                       "' before 'observable' is not a world key (a merged sweep's parameter "
+                       "columns are the keys it swept): the file was edited; merge again");
+    }
+  }
   const std::vector<PointNoa> points = read_final_noa(table, parameters);
   if (points.empty()) throw InputError(summary.string() + ": has no rows for the observable noa");
   if (const std::string reason = plots_unavailable_reason(); !reason.empty()) {

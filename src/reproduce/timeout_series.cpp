@@ -96,7 +96,7 @@ TimeoutPoint run_timeout_point(const ReproduceOptions& options, const TimeoutRun
   point.comparison = compare_partitions(folder);
   point.rates = read_rates_csv(folder / "rates.csv");
   point.trend = second_half_trend(read_step_series(folder / "timeseries.csv", "noa"));
-  point.simulation_seconds = read_run_files(folder).summary.value("wall_seconds", 0.0);
+  point.simulation_seconds = read_run_files(folder).wall_seconds;
   point.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return point;
 }

@@ -2,9 +2,11 @@
 // in the same bytes whatever order the replicates ran in; without commit() nothing is left;
 // misuse is refused.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -195,6 +197,76 @@ TEST(TrajectoryFile, RowsWiderThanAChunkRoundTrip) {
   ASSERT_EQ(row.positions.size(), static_cast<std::size_t>(agents));
   EXPECT_EQ(row.positions.back(), want.positions.back());
   EXPECT_EQ(row.aggregate[65600], want.aggregate[65600]);
+  fs::remove_all(dir);
+}
+
+// Damage that only a hand-edited or broken file has: each is refused naming the file and
+// what is wrong, where a dataset narrower than the agents was read past its end (a crash,
+// or garbage positions drawn) and a missing group was reported as a replicate out of range.
+TEST(TrajectoryFile, ReaderRefusesDamagedFilesNamingWhatIsWrong) {
+  const fs::path dir = fresh_dir("damaged");
+  const WorldSpec spec = small_world(5, 2, 2.0, 4);  // 20 steps: rows at 0, 4, ..., 20
+  auto write = [&](const fs::path& file) {
+    TrajectoryWriter writer(spec, "name: damaged\n", file);
+    for (int r = 0; r < 2; ++r) write_replicate(writer, spec, r);
+    writer.commit();
+  };
+  auto error_of = [](const fs::path& file, int replicate) {
+    try {
+      const TrajectoryReader reader(file);
+      TrajectoryRow row;
+      reader.read(replicate, 0, row);
+      return std::string("no error");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  auto damage = [](const fs::path& file, const std::function<void(hid_t)>& edit) {
+    const hid_t h5 = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(h5, 0);
+    edit(h5);
+    H5Fclose(h5);
+  };
+  auto replace_dataset = [](hid_t h5, const char* path, hid_t type, std::vector<hsize_t> shape) {
+    H5Ldelete(h5, path, H5P_DEFAULT);
+    const hid_t space = H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr);
+    H5Dclose(H5Dcreate2(h5, path, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    H5Sclose(space);
+  };
+  auto set_attribute = [](hid_t h5, const char* name, std::int64_t value) {
+    const hid_t attribute = H5Aopen(h5, name, H5P_DEFAULT);
+    H5Awrite(attribute, H5T_NATIVE_INT64, &value);
+    H5Aclose(attribute);
+  };
+  const fs::path file = dir / "t.h5";
+  write(file);
+  EXPECT_EQ(error_of(file, 1), "no error");
+  const std::string name = file.string();
+
+  damage(file, [&](hid_t h5) { replace_dataset(h5, "replicate_1/y", H5T_NATIVE_DOUBLE, {6, 1}); });
+  EXPECT_EQ(error_of(file, 1), name +
+                                   ": replicate_1/y: shape [6 x 1], expected [6 x 5] (stored "
+                                   "rows x the file's 5 agents; the file is damaged)");
+  EXPECT_EQ(error_of(file, 0), "no error");
+  write(file);
+  damage(file, [&](hid_t h5) { replace_dataset(h5, "replicate_0/x", H5T_NATIVE_DOUBLE, {3, 5}); });
+  EXPECT_EQ(error_of(file, 0), name +
+                                   ": replicate_0/x: shape [3 x 5], expected [6 x 5] (stored "
+                                   "rows x the file's 5 agents; the file is damaged)");
+  write(file);
+  damage(file, [&](hid_t h5) { H5Ldelete(h5, "replicate_0/state", H5P_DEFAULT); });
+  EXPECT_EQ(error_of(file, 0), name + ": replicate_0/state: missing (the file is damaged)");
+  write(file);
+  damage(file, [&](hid_t h5) { H5Ldelete(h5, "replicate_0", H5P_DEFAULT); });
+  EXPECT_EQ(error_of(file, 0), name +
+                                   ": no group replicate_0, though the file says it holds 2 "
+                                   "replicates (the file is damaged)");
+  write(file);
+  damage(file, [&](hid_t h5) { set_attribute(h5, "every", 0); });
+  EXPECT_EQ(error_of(file, 0),
+            name +
+                ": attribute 'every' is 0: expected a positive whole number (the file is "
+                "damaged)");
   fs::remove_all(dir);
 }
 

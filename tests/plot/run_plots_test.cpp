@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "analysis/csv_table.hpp"
@@ -196,6 +198,28 @@ TEST_F(RunPlotsTest, ASweepSummaryGivesFinalNoaAgainstEachParameterWithIntervals
   EXPECT_NEAR(by_count.number(0, 3), 4.0 + 3.18245, 1e-4);
 }
 
+// A parameter column names its plot's files: an edited "../../x" column wrote files outside
+// the plots folder. Only world keys are taken.
+TEST_F(RunPlotsTest, ASweepSummaryColumnThatIsNoWorldKeyIsRefused) {
+  const auto sweep = root_ / "sweep-edited" / "deep";
+  std::filesystem::create_directories(sweep);
+  std::ofstream(sweep / "sweep_summary.csv")
+      << "../../../../escaped,observable,replicates,mean,sd,min,q25,median,q75,max\n"
+         "30,noa,4,4,2,1,3,4,5,7\n60,noa,4,9,2,7,8,9,10,11\n";
+  try {
+    draw_sweep_plots(sweep, sweep, kSize);
+    ADD_FAILURE() << "a column that is no world key was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("column '../../../../escaped' before 'observable' is not a "
+                                   "world key"),
+        std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(root_ / "sweep-edited" / "escaped.csv"));
+  EXPECT_FALSE(std::filesystem::exists(sweep / "plots"));
+}
+
 // A damaged timeseries.csv or model.csv (read row by row while each figure is written) stops
 // the plots as bad input naming the file and line, as it did when they were read up front.
 TEST_F(RunPlotsTest, ADamagedTimeseriesOrModelCsvIsBadInputNamingItsLine) {
@@ -218,6 +242,46 @@ TEST_F(RunPlotsTest, ADamagedTimeseriesOrModelCsvIsBadInputNamingItsLine) {
       EXPECT_NE(std::string(e.what()).find((copy / damaged).string() + ":"), std::string::npos)
           << e.what();
       EXPECT_NE(std::string(e.what()).find("fields as the header has"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+// summary.json edited or damaged: what the plots read of it (each replicate's final sizes, the
+// overrides) is checked against the world, and refused naming the file and the key. A size
+// out of range was an index past the end of the sizes plot's counts (a crash); a damaged
+// structure was a JSON library's message that named no file.
+TEST_F(RunPlotsTest, ADamagedSummaryIsBadInputNamingItsKey) {
+  const std::string sizes = "replicates[1].final.aggregate_sizes";
+  const std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> damages = {
+      {[](nlohmann::json& j) { j["replicates"][1]["final"]["aggregate_sizes"] = {-5}; }, sizes},
+      {[](nlohmann::json& j) { j["replicates"][1]["final"]["aggregate_sizes"] = {2147483647}; },
+       sizes},
+      {[](nlohmann::json& j) { j["replicates"][1]["final"]["aggregate_sizes"] = {31}; }, sizes},
+      {[](nlohmann::json& j) {
+         j["replicates"][1]["final"]["aggregate_sizes"] = std::vector<int>(16, 2);
+       },
+       sizes},
+      {[](nlohmann::json& j) { j["replicates"][1]["final"]["aggregate_sizes"] = {2.5}; }, sizes},
+      {[](nlohmann::json& j) { j["replicates"][1]["final"].erase("aggregate_sizes"); }, sizes},
+      {[](nlohmann::json& j) { j["replicates"].erase(2); }, "replicates: expected a list of 3"},
+      {[](nlohmann::json& j) { j = nlohmann::json::object(); }, "replicates: expected a list of 3"},
+      {[](nlohmann::json& j) { j["overrides"] = {1}; }, "overrides: expected a list of texts"},
+  };
+  int case_number = 0;
+  for (const auto& [damage, key] : damages) {
+    const std::filesystem::path copy = root_ / ("damaged-summary-" + std::to_string(++case_number));
+    std::filesystem::copy(bayindir_, copy, std::filesystem::copy_options::recursive);
+    nlohmann::json summary;
+    std::ifstream(copy / "summary.json") >> summary;
+    damage(summary);
+    std::ofstream(copy / "summary.json", std::ios::trunc) << summary.dump();
+    try {
+      draw_run_plots(copy, copy, kSize);
+      ADD_FAILURE() << "case " << case_number << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find((copy / "summary.json").string() + ": " + key),
+                std::string::npos)
           << e.what();
     }
   }
