@@ -213,13 +213,18 @@ std::span<const AgentId> LeaveEpisodes::former_members(const OpenAttempt& attemp
   return {former_.data() + set.first, set.count};
 }
 
+// Held by a former member that is still waiting: one that has waited without a break since
+// the attempt started (as a return needs). One that searched in between (its pair fell apart)
+// and waits again, in another aggregate, holds nobody: counted, the pairs of a world that
+// resumes searching escaped 49 times in 60 attempts where none can be held.
 bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
                             std::span<const AgentState> state) const {
   const std::span<const AgentId> former = former_members(attempt);
   for (const Neighbour& nb : neighbours.of(attempt.agent)) {
     if (nb.distance > episodes_.escape_radius) break;  // nearest first
-    if (state[nb.id] == AgentState::Wait && std::binary_search(former.begin(), former.end(), nb.id))
-      return false;
+    const bool kept_waiting =
+        state[nb.id] == AgentState::Wait && waiting_since_[nb.id] <= attempt.start;
+    if (kept_waiting && std::binary_search(former.begin(), former.end(), nb.id)) return false;
   }
   return true;
 }

@@ -6,9 +6,10 @@
 // (the rim rule of docs/models.md, observers/aggregate_geometry.hpp). The LEAVE phase ends
 // when the agent stops leaving (its timeout, LEAVE -> GO); the attempt is an escape when at that
 // moment the agent perceives, within the escape radius, no member of the aggregate it left that is
-// still waiting. The escape radius is the distance at which the controller would steer back: the
-// approach radius for a controller that approaches (Soysal), else the detection radius. A waiting
-// agent alone (isolated_wait: stay) has no aggregate to leave: no attempt.
+// still waiting (has waited without a break since the attempt started). The escape radius is the
+// distance at which the controller would steer back: the approach radius for a controller that
+// approaches (Soysal), else the detection radius. A waiting agent alone (isolated_wait: stay) has
+// no aggregate to leave: no attempt.
 //
 // After its LEAVE phase the attempt stays open as an excursion until the agent is next seen
 // in an aggregate, or until the return window has passed. It is a return when that aggregate

@@ -93,6 +93,24 @@ TEST(LeaveEpisodes, FormerMembersThatStoppedWaitingDoNotCount) {
   EXPECT_EQ(s.episodes.tally().escapes.rim, 1);
 }
 
+// Nor one that stopped waiting and waits again: the partner searched again when the pair fell
+// apart, then stopped beside a third agent, next to the leaver when its LEAVE ends. It is
+// waiting, but not still: the leaver escaped (counted held, a world's pairs escaped 49 times in
+// 60 attempts though none could be held). One that kept waiting holds it (the first test).
+TEST(LeaveEpisodes, AFormerMemberThatWaitsAgainDoesNotHold) {
+  Stepper s;
+  const AgentId a = s.scene.add(20.0, 20.0);
+  const AgentId b = s.scene.add(22.0, 20.0);
+  const AgentId c = s.scene.add(24.0, 20.0, AgentState::Go);  // searching, not a member
+  s.step([&](auto& state) { state[a] = AgentState::Leave; });
+  s.step([&](auto& state) { state[b] = AgentState::Go; });               // alone: resumes
+  s.step([&](auto& state) { state[b] = state[c] = AgentState::Wait; });  // pairs with c
+  s.step([&](auto& state) { state[a] = AgentState::Go; });  // timeout, 2 from waiting b
+  EXPECT_EQ(s.scene.swarm.state[b], AgentState::Wait);
+  EXPECT_EQ(s.episodes.tally().attempts.total(), 1);
+  EXPECT_EQ(s.episodes.tally().escapes.rim, 1);
+}
+
 // A lone waiting agent (isolated_wait: stay) has no aggregate to leave.
 TEST(LeaveEpisodes, ALoneWaitingAgentMakesNoAttempt) {
   Stepper s;

@@ -151,24 +151,28 @@ std::uint64_t outputs_and_leaves_hash(const RunResult& result) {
 // full-0.0025 were recorded again when a step's move below the positions' resolution (10^-12
 // of the arena's side) came to be dropped: rounded, it had made a packed member creep by an
 // ulp a step into a body it touched, keeping its aggregate awake for ever (a full reproduce
-// moved within noise, CHANGELOG).
+// moved within noise, CHANGELOG). soysal-5-constant, soysal-10, soysal-5-inverse, full-0.0025
+// (torus) and creation-dissipation were recorded again when an escape came to need a former
+// member that kept waiting to hold the leaver (one that waits again after searching holds
+// nobody): only their escapes moved, a few more attempts counting as escapes (the first test's
+// hashes, of everything else the runs write, stayed).
 std::vector<GoldenWorld> golden_compacted_paper_worlds() {
   return {
       {"worlds/paper/soysal-5-constant.yaml",
        {"run.duration=4000", "controller.p0=0.001"},
-       0x016538f448b2bd77ull},
+       0x14e0e7ca270f1810ull},
       {"worlds/paper/soysal-10-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0005"},
-       0xb6117eba5744e1f5ull},
+       0x020a33057d3314adull},
       {"worlds/paper/soysal-20-constant.yaml",
        {"run.duration=3000", "controller.p0=0.0002"},
        0xab752dfb4481bd14ull},
       {"worlds/paper/soysal-5-inverse.yaml",
        {"run.duration=3000", "controller.p0=0.002"},
-       0xabdf80cc51345780ull},
-      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0x6162b79fb5b1c879ull},
+       0xa03534b064c4ac4aull},
+      {"worlds/paper/full-0.0025.yaml", {"run.duration=500"}, 0x3f74a582bdaaabfeull},
       {"worlds/paper/creation-growing-80.yaml", {"run.duration=500"}, 0x1de6ad25b984705eull},
-      {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0x126ab49b294ff323ull},
+      {"worlds/paper/creation-dissipation-0.001.yaml", {"run.duration=400"}, 0xcc06099cb513c927ull},
       {"worlds/paper/full-0.0025.yaml",
        {"run.duration=300", "arena.topology=walls"},
        0x1f51781adb16f5e6ull},
