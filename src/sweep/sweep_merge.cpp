@@ -17,6 +17,7 @@
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
 #include "run/interrupt.hpp"
+#include "run/recorded_steps.hpp"
 #include "run/run_folder.hpp"
 #include "sweep/sweep_manifest.hpp"
 #include "sweep/sweep_status.hpp"
@@ -89,9 +90,10 @@ class MergedCsv {
         kinds_(std::move(kinds)) {}
 
   // Appends the file's rows; returns its last row's numbers (NaN for text cells; none when
-  // it has no rows).
+  // it has no rows). With `recorded`, the file is a timeseries of that world's one replicate:
+  // each row must be the next state it records (replicate 0, step 0, K, 2K, ... and the last).
   std::vector<double> append(const std::filesystem::path& file, const std::string& prefix,
-                             int replicate) {
+                             int replicate, const WorldSpec* recorded = nullptr) {
     throw_if_interrupted();
     CsvReader reader(file);
     if (joined(reader.header(), 0) != file_header_) {
@@ -100,13 +102,22 @@ class MergedCsv {
     open();
     const std::string row_prefix = prefix + std::to_string(replicate) + ",";
     std::vector<double> numbers;
+    std::int64_t rows = 0;
     while (reader.next()) {
       numbers = checked_numbers(reader, file);
+      if (recorded) check_recorded_row(numbers, rows++, *recorded, file, reader.line());
       pending_ += row_prefix + joined(reader.cells(), 1) + "\n";
       if (pending_.size() >= kPieceBytes) {
         flush();
         throw_if_interrupted();  // Ctrl-C, or Slurm's SIGTERM, removes the temporaries
       }
+    }
+    if (recorded && rows != recorded_rows(*recorded)) {
+      throw InputError(file.string() + ": holds " + std::to_string(rows) +
+                       (rows == 1 ? " row" : " rows") + " but the run records " +
+                       std::to_string(recorded_rows(*recorded)) + " states (" +
+                       std::to_string(recorded->steps()) + " steps, every " +
+                       std::to_string(recorded->run.record_every) + "): cut short; " + redo(file));
     }
     return numbers;
   }
@@ -122,6 +133,28 @@ class MergedCsv {
 
  private:
   static constexpr std::size_t kPieceBytes = 1 << 20;
+
+  static std::string redo(const std::filesystem::path& file) {
+    return "remove " + file.parent_path().string() + " and run the sweep again to redo it";
+  }
+
+  // Row `row` of a sweep run's timeseries: replicate 0 at the row-th state the run records.
+  static void check_recorded_row(const std::vector<double>& numbers, std::int64_t row,
+                                 const WorldSpec& world, const std::filesystem::path& file,
+                                 std::int64_t line) {
+    const std::string at = file.string() + ":" + std::to_string(line) + ": ";
+    if (row >= recorded_rows(world)) {
+      throw InputError(at + "a row after the run's last recorded state (step " +
+                       std::to_string(world.steps()) + "): a row repeated or added; " + redo(file));
+    }
+    const std::int64_t step = std::min(row * world.run.record_every, world.steps());
+    if (numbers[0] == 0.0 && numbers[1] == static_cast<double>(step)) return;
+    throw InputError(at + "expected replicate 0 at step " + std::to_string(step) +
+                     " (the run records every " + std::to_string(world.run.record_every) +
+                     " steps and its last, " + std::to_string(world.steps()) + "), got replicate " +
+                     csv_number(numbers[0]) + " at step " + csv_number(numbers[1]) +
+                     ": a row missing, repeated or edited; " + redo(file));
+  }
 
   void open() {
     if (writer_) return;
@@ -195,20 +228,6 @@ std::vector<std::filesystem::path> run_locations(
       " runs are not complete in any folder given, e.g. run " + std::to_string(first.index) + " (" +
       describe_point(first.point) + ", replicate " + std::to_string(first.replicate) +
       "); run the missing shards (or resume the sweep) first");
-}
-
-// A run's timeseries ends with its last step: one cut short at a line's end reads as a
-// complete file whose last row is an earlier state.
-void check_reaches_the_end(const std::vector<double>& last_row, const WorldSpec& world,
-                           const std::filesystem::path& file) {
-  if (last_row.empty()) throw InputError(file.string() + ": holds no rows");
-  const double last_step = last_row[1];
-  if (last_step != static_cast<double>(world.steps())) {
-    throw InputError(file.string() + ": ends at step " + csv_number(last_step) +
-                     " but the run has " + std::to_string(world.steps()) +
-                     " steps (cut short?); remove " + file.parent_path().string() +
-                     " and run the sweep again to redo it");
-  }
 }
 
 // The observables of a run's last timeseries row (after replicate, step and time).
@@ -318,8 +337,7 @@ MergeReport merge_sweep(const std::vector<std::filesystem::path>& folders,
     if (run.replicate == 0) finals.push_back({point_values(run.point), {}});
     const std::string prefix = csv_prefix(finals.back().values);
     const auto file = locations[i] / "timeseries.csv";
-    const std::vector<double> last = timeseries.append(file, prefix, run.replicate);
-    check_reaches_the_end(last, run.world, file);
+    const std::vector<double> last = timeseries.append(file, prefix, run.replicate, &run.world);
     finals.back().replicates.push_back(final_observables(last));
     if (std::filesystem::exists(locations[i] / "partitions.csv")) {
       partitions.append(locations[i] / "partitions.csv", prefix, run.replicate);

@@ -175,7 +175,21 @@ TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
   std::ofstream(file, std::ios::binary) << good.substr(0, line3);
   EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
               ::testing::ThrowsMessage<InputError>(
-                  AllOf(HasSubstr(file.string() + ": ends at step"), HasSubstr("cut short?"))));
+                  AllOf(HasSubstr(file.string() + ": holds 1 row but the run records 21 states"),
+                        HasSubstr("cut short"))));
+  // A row in the middle missing, or the last repeated: each row must be the next state the run
+  // records (they were merged as they stood; plot refused them).
+  const std::size_t line4 = good.find('\n', line3) + 1;
+  std::ofstream(file, std::ios::binary) << good.substr(0, line3) << good.substr(line4);
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(
+                  AllOf(HasSubstr(file.string() + ":3: expected replicate 0 at step 50"),
+                        HasSubstr("got replicate 0 at step 100"))));
+  const std::string last = good.substr(good.rfind('\n', good.size() - 2) + 1);
+  std::ofstream(file, std::ios::binary) << good << last;
+  EXPECT_THAT([&] { merge_sweep({dir_ / "full"}, dir_ / "m"); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr(file.string() + ":23: a row after the run's last recorded state")));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
 }
 
