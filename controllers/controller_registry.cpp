@@ -64,13 +64,13 @@ const std::vector<ControllerCatalogEntry>& controller_catalog() {
   return entries;
 }
 
-namespace {
-
-// The model.* keys each family of models reads (models/predictions.cpp and what it calls):
-// the Bayindir equations and the encounter rate take kappa and the creation variant, the
-// Soysal partition chain the leaving variant and its periphery; only the Bayindir equations
-// have a stochastic version.
-bool model_reads(ModelFamily model, const std::string& path) {
+// Each family of models reads these model.* keys (models/predictions.cpp and what it calls):
+// the Bayindir equations take kappa and the creation variant and have a stochastic version,
+// the encounter rate the same but no start (it counts encounters from any state), the Soysal
+// partition chain the leaving variant and its periphery.
+bool model_reads(const WorldSpec& spec, const std::string& path) {
+  static const std::vector<std::string> encounters = {"model.kappa", "model.creation",
+                                                      "model.stochastic_replicates"};
   static const std::vector<std::string> bayindir = {
       "model.kappa", "model.creation", "model.stochastic_replicates", "model.initial_state"};
   static const std::vector<std::string> soysal = {"model.leaving", "model.periphery_cap",
@@ -78,10 +78,11 @@ bool model_reads(ModelFamily model, const std::string& path) {
   const auto holds = [&](const std::vector<std::string>& keys) {
     return std::find(keys.begin(), keys.end(), path) != keys.end();
   };
-  switch (model) {
+  switch (controller_rules(spec).model) {
     case ModelFamily::None:
       return false;
     case ModelFamily::Encounters:
+      return holds(encounters);
     case ModelFamily::Bayindir:
       return holds(bayindir);
     case ModelFamily::Soysal:
@@ -90,10 +91,7 @@ bool model_reads(ModelFamily model, const std::string& path) {
   return true;
 }
 
-}  // namespace
-
 bool controller_reads(const WorldSpec& spec, const WorldKey& key) {
-  if (key.path.starts_with("model.")) return model_reads(controller_rules(spec).model, key.path);
   if (!key.path.starts_with("controller.") || key.path == "controller.type") return true;
   if (!key.controller.empty()) return key.controller == spec.controller.type;
   const std::vector<std::string>& shared = catalog_entry(spec.controller.type).shared_keys;

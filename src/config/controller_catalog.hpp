@@ -34,10 +34,14 @@ struct ControllerCatalogEntry {
   std::vector<std::string> shared_keys;
 };
 
-// Whether `spec`'s resolved world holds `key`: any key outside controller.* and model.*,
-// controller.type, the controller.* keys its controller reads and the model.* keys the
-// model of its controller's worlds reads (none when there is no model).
+// Whether `spec`'s resolved world holds `key`: any key outside controller.*, controller.type,
+// and the controller.* keys its controller reads.
 bool controller_reads(const WorldSpec& spec, const WorldKey& key);
+// Whether the macroscopic model of `spec`'s controller (its rules' model family) reads the
+// model.* key `path` (false for every key when it has none). The resolved world writes every
+// model key all the same: a sweep over controller types or `--set controller.type` on a
+// resolved world gives the others' models what the file said.
+bool model_reads(const WorldSpec& spec, const std::string& path);
 
 // Every registered controller, in registration order (defined by the controllers library).
 const std::vector<ControllerCatalogEntry>& controller_catalog();

@@ -182,21 +182,23 @@ bool reads(const ControllerCatalogEntry& entry, const std::string& path) {
          std::find(shared.begin(), shared.end(), path) != shared.end();
 }
 
-// A model.* key that the model of `type`'s worlds does not read (each controller names its
-// model family in its rules; a default world of the type asks them).
-bool unread_model_key(const std::string& type, const std::string& path) {
-  const WorldKey* key = find_world_key(path);
-  if (!path.starts_with("model.") || key == nullptr) return false;
-  WorldSpec world;
-  world.controller.type = type;
-  return !controller_reads(world, *key);
+// A model.* key that the model of `world` does not read.
+bool unread_model_key(const WorldSpec& world, const std::string& path) {
+  return path.starts_with("model.") && find_world_key(path) != nullptr && !model_reads(world, path);
 }
 
-// Whether `type`'s worlds have a macroscopic model (one that reads some model.* key).
-bool has_model(const std::string& type) {
+// A world of `type` as far as the key table goes (a sweep asks about types before worlds).
+WorldSpec world_of_type(const std::string& type) {
+  WorldSpec world;
+  world.controller.type = type;
+  return world;
+}
+
+// Whether `world` has a macroscopic model (one that reads some model.* key).
+bool has_model(const WorldSpec& world) {
   const std::vector<std::string> paths = world_key_paths();
   return std::any_of(paths.begin(), paths.end(), [&](const std::string& path) {
-    return path.starts_with("model.") && !unread_model_key(type, path);
+    return path.starts_with("model.") && model_reads(world, path);
   });
 }
 
@@ -209,7 +211,8 @@ bool unread_controller_key(const ControllerCatalogEntry& controller, const std::
 // A key `controller`'s worlds ignore: one of another controller's, or one its model does not
 // read.
 bool unread_key(const ControllerCatalogEntry& controller, const std::string& path) {
-  return unread_controller_key(controller, path) || unread_model_key(controller.type, path);
+  return unread_controller_key(controller, path) ||
+         unread_model_key(world_of_type(controller.type), path);
 }
 
 // " (read by controller type 'a', 'b')", or nothing when no type reads `path`.
@@ -337,13 +340,14 @@ void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride
                                    "type that does"
                                  : "; remove it or set controller.type too";
   for (const WorldOverride& override : overrides) {
-    if (override.any_controller || !unread_key(controller, override.key)) continue;
+    const bool unread =
+        unread_controller_key(controller, override.key) || unread_model_key(spec, override.key);
+    if (override.any_controller || !unread) continue;
     const std::string type = "controller type '" + spec.controller.type + "' (" + spec.source + ")";
-    const std::string ignored = !override.key.starts_with("model.")
-                                    ? "the world's " + type + " does not read this key"
-                                : has_model(spec.controller.type)
-                                    ? "the model of the world's " + type + " does not read this key"
-                                    : "the world's " + type + " has no model";
+    const std::string ignored =
+        !override.key.starts_with("model.") ? "the world's " + type + " does not read this key"
+        : has_model(spec) ? "the model of the world's " + type + " does not read this key"
+                          : "the world's " + type + " has no model";
     throw InputError(override.origin + ": " + override.key + ": " + ignored +
                      ", so the run would ignore it" + readers_of(override.key) + remedy);
   }

@@ -26,11 +26,12 @@ void check_world(const WorldSpec& spec);
 // Refuses (InputError) an override of a controller.* key that the world's controller type does
 // not read, or of a model.* key its model does not read: the run would ignore it, while
 // summary.json and the plots list it as a change (a sweep would plot a parameter that changed
-// nothing). A world file may hold model keys its model ignores (resolved worlds of earlier
-// versions wrote them all); they are dropped when the world is written back.
-// Overrides marked any_controller pass (a sweep over controller types gives a key one type
-// reads to every point), and `reproduce`, which applies one override to worlds of several
-// controllers, does not call this.
+// nothing). A world file may hold model keys its model ignores: the resolved world writes every
+// model key, so that `--set controller.type` on it, or a sweep over controller types, gives
+// each model what the file said. Overrides marked any_controller pass (a sweep over controller
+// types gives a key one type reads to every point; a sweep's recorded points were checked when
+// it began), and `reproduce`, which applies one override to worlds of several controllers,
+// does not call this.
 void check_overrides_read(const WorldSpec& spec, const std::vector<WorldOverride>& overrides);
 // Whether controller type `type` reads `path` (false for a controller.* key it ignores or a
 // model.* key its model ignores; true for any other key).

@@ -216,7 +216,7 @@ std::span<const AgentId> LeaveEpisodes::former_members(const OpenAttempt& attemp
 // Held by a former member that is still waiting: one that has waited without a break since
 // the attempt started (as a return needs). One that searched in between (its pair fell apart)
 // and waits again, in another aggregate, holds nobody: counted, the pairs of a world that
-// resumes searching escaped 49 times in 60 attempts where none can be held.
+// resumes searching escaped 49 times in 60 attempts where almost none can be held.
 bool LeaveEpisodes::escaped(const OpenAttempt& attempt, const NeighbourLists& neighbours,
                             std::span<const AgentState> state) const {
   const std::span<const AgentId> former = former_members(attempt);

@@ -59,7 +59,7 @@ void TrajectoryReader::check_shapes(const h5::Handle& group, int replicate) cons
     if (!h5::has_child(group, name))
       throw InputError(where + name + ": missing (the file is damaged)");
     const std::vector<std::int64_t> shape = h5::dataset_shape(h5::open_dataset(group, name));
-    if (rows < 0 && !shape.empty()) rows = shape[0];
+    if (rows < 0) rows = shape.size() == 1 ? shape[0] : 0;  // `step` gives the stored rows
     const std::vector<std::int64_t> expected =
         per_agent ? std::vector<std::int64_t>{rows, agents_} : std::vector<std::int64_t>{rows};
     if (shape != expected) {

@@ -103,6 +103,7 @@ SweepPlan read_manifest(const std::filesystem::path& folder) {
     refuse(path, "the manifest", "an object of name, seed, replicates, parameters", manifest);
   SweepPlan plan;
   plan.source = path.string();
+  plan.recorded = true;
   plan.name = text_field(path, manifest, "name");
   plan.seed = through_key(path, manifest, "seed", "run.seed").run.seed;
   plan.replicates = through_key(path, manifest, "replicates", "run.replicates").run.replicates;

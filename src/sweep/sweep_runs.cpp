@@ -33,9 +33,10 @@ WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
   std::vector<WorldOverride> overrides = parse_overrides(point_overrides(point));
   for (WorldOverride& o : overrides) {
     o.origin = "parameters";  // messages name the sweep file's section, not --set
-    o.any_controller = std::any_of(types.begin(), types.end(), [&](const std::string& type) {
-      return controller_type_reads(type, o.key);
-    });
+    o.any_controller =
+        plan.recorded || std::any_of(types.begin(), types.end(), [&](const std::string& type) {
+          return controller_type_reads(type, o.key);
+        });
   }
   return load_world_text_with(plan.base_world,
                               plan.source + " (point " + describe_point(point) + ")", overrides);

@@ -267,8 +267,7 @@ TEST(WorldLoaderErrors, ControllerKeysTheControllerDoesNotReadAreRefused) {
 // Each family of models reads some model.* keys (kappa and the creation variant the Bayindir
 // equations and the encounter rate, the leaving variant the Soysal chain): --set or a sweep
 // point giving one the world's model ignores would be listed as a change that changed nothing.
-// A file may hold them (resolved worlds of earlier versions wrote every model key); the
-// resolved world drops them.
+// A file may hold them, and the resolved world writes them all.
 TEST(WorldLoaderErrors, ModelKeysTheModelDoesNotReadAreRefusedFromOverrides) {
   const std::string soysal = "controller: {type: soysal}\n";
   EXPECT_THAT(error_of(soysal, {"model.kappa=maxwell"}),
@@ -290,15 +289,19 @@ TEST(WorldLoaderErrors, ModelKeysTheModelDoesNotReadAreRefusedFromOverrides) {
   // Overrides that set the type act on the type they set.
   EXPECT_EQ(error_of(soysal, {"controller.type=bayindir", "model.kappa=maxwell"}), "no error");
 
-  const WorldSpec world =
-      load_world_text("controller: {type: soysal}\nmodel: {kappa: maxwell, leaving: original}\n",
-                      "w.yaml");
-  const std::string resolved = world_to_yaml(world);
-  EXPECT_THAT(resolved, HasSubstr("leaving: original"));
-  EXPECT_THAT(resolved, Not(HasSubstr("kappa")));
-  EXPECT_THAT(resolved, Not(HasSubstr("stochastic_replicates")));
-  EXPECT_THAT(world_to_yaml(load_world_text("controller: {type: cockroach}\n", "w.yaml")),
-              Not(HasSubstr("model:")));
+  EXPECT_THAT(error_of("controller: {type: collision}\n", {"model.initial_state=all_searching"}),
+              HasSubstr("model.initial_state: the model of the world's controller type "
+                        "'collision'"));
+
+  // The resolved world keeps every model key: switched to Bayindir, a resolved Soysal world
+  // gives its model what the file said, as the file itself does.
+  const std::string soysal_file = "controller: {type: soysal}\nmodel: {kappa: paper}\n";
+  const std::string resolved = world_to_yaml(load_world_text(soysal_file, "w.yaml"));
+  EXPECT_THAT(resolved, HasSubstr("kappa: paper"));
+  for (const std::string& text : {soysal_file, resolved}) {
+    EXPECT_EQ(load_world_text(text, "w.yaml", {"controller.type=bayindir"}).model.kappa,
+              Kappa::Paper);
+  }
 }
 
 // A key given no value is named where it stands, not where the next token starts.

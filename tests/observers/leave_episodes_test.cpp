@@ -96,7 +96,7 @@ TEST(LeaveEpisodes, FormerMembersThatStoppedWaitingDoNotCount) {
 // Nor one that stopped waiting and waits again: the partner searched again when the pair fell
 // apart, then stopped beside a third agent, next to the leaver when its LEAVE ends. It is
 // waiting, but not still: the leaver escaped (counted held, a world's pairs escaped 49 times in
-// 60 attempts though none could be held). One that kept waiting holds it (the first test).
+// 60 attempts though almost none could be held). One that kept waiting holds it (the first test).
 TEST(LeaveEpisodes, AFormerMemberThatWaitsAgainDoesNotHold) {
   Stepper s;
   const AgentId a = s.scene.add(20.0, 20.0);

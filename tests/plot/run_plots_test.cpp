@@ -285,6 +285,16 @@ TEST_F(RunPlotsTest, ADamagedSummaryIsBadInputNamingItsKey) {
           << e.what();
     }
   }
+  // A replicate that ends with no aggregate, and one whose aggregates hold every agent, are
+  // runs as they come.
+  const std::filesystem::path edge = root_ / "summary-edges";
+  std::filesystem::copy(bayindir_, edge, std::filesystem::copy_options::recursive);
+  nlohmann::json summary;
+  std::ifstream(edge / "summary.json") >> summary;
+  summary["replicates"][0]["final"]["aggregate_sizes"] = nlohmann::json::array();
+  summary["replicates"][1]["final"]["aggregate_sizes"] = {30};
+  std::ofstream(edge / "summary.json", std::ios::trunc) << summary.dump();
+  EXPECT_NO_THROW(draw_run_plots(edge, edge, kSize));
 }
 
 TEST_F(RunPlotsTest, ARunWithoutItsTimeseriesIsBadInput) {

@@ -54,6 +54,8 @@ TEST_F(SweepManifestTest, ADamagedManifestIsRefusedNamingTheField) {
   EXPECT_EQ(plan.replicates, 2);
   ASSERT_EQ(plan.parameters.size(), 1u);
   EXPECT_EQ(plan.parameters[0].values, (std::vector<std::string>{"10", "20"}));
+  EXPECT_EQ(error_with("seed", "18446744073709551615"), "no error");
+  EXPECT_EQ(read_manifest(dir_).seed, 18446744073709551615u);
   const std::string file = (dir_ / "sweep.json").string() + ": ";
   // A negative count was a vector's length error, a huge one "out of memory", a fraction cut.
   for (const char* replicates : {"-1", "0", "2.7", "99999999999", "\"2\""}) {

@@ -193,6 +193,22 @@ TEST_F(SweepMergeTest, RefusesAShardFileWithADamagedRow) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m"));
 }
 
+// Every row a run records, when its last step is off the record grid (205 steps, every 7: steps
+// 0, 7, ..., 203 and 205) or the grid is coarser than the run (its first and last only).
+TEST_F(SweepMergeTest, RunsWhoseLastStepIsOffTheRecordGridMerge) {
+  for (const char* record_every : {"7", "500"}) {
+    const std::string out = std::string("grid-") + record_every;
+    run(std::string("base: worlds/tiny.yaml\nparameters:\n  run.record_every: [") + record_every +
+            "]\n  run.duration: [20.5]\nreplicates: 2\n",
+        out);
+    const MergeReport merged = merge_sweep({dir_ / out}, dir_ / (out + "-merged"));
+    EXPECT_EQ(merged.runs, 2) << record_every;
+    const std::string text = read_file_text(dir_ / (out + "-merged") / "sweep_timeseries.csv");
+    const auto lines = std::count(text.begin(), text.end(), '\n');
+    EXPECT_EQ(lines, 1 + 2 * (record_every == std::string("7") ? 31 : 2)) << record_every;
+  }
+}
+
 // The merged rows are written while the shard files are read: a damaged file found late
 // discards what was written and leaves the earlier merge whole, with no temporary beside it.
 TEST_F(SweepMergeTest, ARefusedMergeLeavesTheEarlierMergedFilesAsTheyWere) {

@@ -63,16 +63,45 @@ TEST_F(SweepTest, APointSettingAKeyItsControllerDoesNotReadIsRefused) {
                  "none.yaml"));
   EXPECT_THROW(expand_sweep(none), InputError);
   // Model keys too: a Soysal sweep over kappa would plot a parameter that changed nothing.
-  const SweepPlan kappa = load_sweep(
-      sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n"
-                 "  model.kappa: [kinetic, maxwell]\n",
-                 "kappa.yaml"));
+  const SweepPlan kappa =
+      load_sweep(sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n"
+                            "  model.kappa: [kinetic, maxwell]\n",
+                            "kappa.yaml"));
   EXPECT_THROW(expand_sweep(kappa), InputError);
   const SweepPlan models = load_sweep(
       sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [bayindir, soysal]\n"
                  "  model.kappa: [maxwell]\n",
                  "models.yaml"));
   EXPECT_EQ(expand_sweep(models).size(), 2u * 5u);
+}
+
+// A base world's model keys reach every point of a sweep over controller types, whichever
+// type the base file names: a Soysal base holding kappa: paper gives it to its Bayindir points
+// (the sweep keeps the base as a resolved world, which writes every model key).
+TEST_F(SweepTest, ASweepOverControllerTypesKeepsTheBaseWorldsModelKeys) {
+  testing::write_file_text(dir_ / "worlds" / "soysal.yaml",
+                           "arena: {width: 60, height: 60}\nrobots: {count: 5}\n"
+                           "controller: {type: soysal}\nrun: {duration: 100, replicates: 2}\n"
+                           "model: {kappa: paper, stochastic_replicates: 0}\n");
+  const SweepPlan plan = load_sweep(
+      sweep_file("base: worlds/soysal.yaml\nparameters:\n  controller.type: [soysal, bayindir]\n"));
+  for (const SweepRun& run : expand_sweep(plan)) {
+    EXPECT_EQ(run.world.model.kappa, Kappa::Paper) << run.world.controller.type;
+    EXPECT_EQ(run.world.model.stochastic_replicates, 0) << run.world.controller.type;
+  }
+}
+
+// A sweep read back from its folder (merge, --list, resume) is not refused for keys its points'
+// models ignore: its points were checked when it began, and a version that did not check
+// model keys may have begun it (a Soysal sweep over model.kappa).
+TEST_F(SweepTest, ARecordedSweepIsNotRefusedForKeysItsModelsIgnore) {
+  SweepPlan plan =
+      load_sweep(sweep_file("base: worlds/tiny.yaml\nparameters:\n  controller.type: [soysal]\n"
+                            "  robots.count: [5]\n"));
+  plan.parameters.push_back({"model.kappa", {"kinetic", "maxwell"}});
+  EXPECT_THROW(expand_sweep(plan), InputError);
+  plan.recorded = true;
+  EXPECT_EQ(expand_sweep(plan).size(), 2u * 5u);
 }
 
 TEST_F(SweepTest, EachRunIsOneReplicateWithItsOwnSeed) {
