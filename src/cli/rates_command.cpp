@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress_option.hpp"
 #include "cli/world_options.hpp"
+#include "core/counted.hpp"
 #include "models/predictions.hpp"
 #include "output/output_check.hpp"
 #include "rates/rate_outputs.hpp"
@@ -52,9 +53,9 @@ int rates_command(const RatesCommandOptions& options) {
   for (const std::string& line : rate_summary_lines(rows)) std::cout << line << "\n";
   // The ratios to the models' rates compare with models that assume what this world may not.
   for (const std::string& caveat : world_caveats(spec)) std::cerr << "note: " << caveat << "\n";
-  std::cout << spec.name << ": rates of " << spec.run.replicates << " replicates x " << spec.steps()
-            << " steps in " << run.result.wall_seconds << " s; outputs in " << out.string()
-            << "/\n";
+  std::cout << spec.name << ": rates of " << counted(spec.run.replicates, "replicate") << " x "
+            << spec.steps() << " steps in " << run.result.wall_seconds << " s; outputs in "
+            << out.string() << "/\n";
   return 0;
 }
 

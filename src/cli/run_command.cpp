@@ -12,6 +12,7 @@
 #include "cli/world_options.hpp"
 #include "config/world_override.hpp"
 #include "controllers/controller_registry.hpp"
+#include "core/counted.hpp"
 #include "core/errors.hpp"
 #include "models/measured_rates.hpp"
 #include "models/predictions.hpp"
@@ -80,11 +81,13 @@ void print_summary(const WorldSpec& spec, const RunResult& result,
                    const std::filesystem::path& out) {
   double noa = 0.0;
   for (const ReplicateOutcome& r : result.replicates) noa += r.final_row.noa;
-  std::cout << spec.name << ": " << spec.run.replicates << " replicates x " << spec.steps()
-            << " steps in " << result.wall_seconds << " s on " << result.threads
-            << (result.step_threads > 1 ? " x " + std::to_string(result.step_threads)
-                                        : std::string())
-            << " threads; mean final NOA " << noa / spec.run.replicates << "\n"
+  const std::string threads = result.step_threads > 1
+                                  ? std::to_string(result.threads) + " x " +
+                                        std::to_string(result.step_threads) + " threads"
+                                  : counted(result.threads, "thread");
+  std::cout << spec.name << ": " << counted(spec.run.replicates, "replicate") << " x "
+            << spec.steps() << " steps in " << result.wall_seconds << " s on " << threads
+            << "; mean final NOA " << noa / spec.run.replicates << "\n"
             << "outputs in " << out.string() << "/\n";
 }
 

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/merge_removals.hpp"
 #include "cli/progress_option.hpp"
+#include "core/counted.hpp"
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
@@ -33,9 +34,10 @@ struct SweepCommandOptions {
 void print_report(const SweepPlan& plan, const SweepOptions& options, const SweepReport& report) {
   std::cout << "sweep " << plan.name;
   if (!options.shard.whole()) std::cout << " (shard " << options.shard.text() << ")";
-  std::cout << ": " << report.selected << " runs, " << report.already_complete
+  std::cout << ": " << counted(report.selected, "run") << ", " << report.already_complete
             << " already complete, ran " << report.ran << " in " << report.wall_seconds << " s on "
-            << report.threads << " threads\noutputs in " << options.out.string() << "/\n";
+            << counted(report.threads, "thread") << "\noutputs in " << options.out.string()
+            << "/\n";
 }
 
 int sweep_command(const SweepCommandOptions& command) {

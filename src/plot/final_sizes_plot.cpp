@@ -3,6 +3,7 @@
 
 #include "analysis/csv_text.hpp"
 #include "analysis/model_table.hpp"
+#include "core/counted.hpp"
 #include "models/model_series.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
@@ -53,11 +54,10 @@ void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
 
   const std::string data = gnuplot_quote(files.csv_name(""));
   const double end_time = run.world.run.duration;
-  std::string script =
-      png_preamble(files.size, files.png_name(),
-                   run_title(run) + ": aggregate sizes at the end (t = " + csv_number(end_time) +
-                       " tu), mean of " + std::to_string(sizes.size()) + " replicate" +
-                       (sizes.size() == 1 ? "" : "s"));
+  std::string script = png_preamble(
+      files.size, files.png_name(),
+      run_title(run) + ": aggregate sizes at the end (t = " + csv_number(end_time) +
+          " tu), mean of " + counted(static_cast<long long>(sizes.size()), "replicate"));
   script += std::string(kKeyAbovePlot) +
             "set xlabel 'aggregate size (agents)'\nset ylabel 'aggregates of that size'\n"
             "set yrange [0:*]\nset xrange [1.5:" +

@@ -2,6 +2,7 @@
 #include "analysis/csv_text.hpp"
 #include "analysis/model_table.hpp"
 #include "analysis/step_series.hpp"
+#include "core/counted.hpp"
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/drawn_points.hpp"
@@ -53,8 +54,8 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
               "'replicates' : '')";
   }
   script += ", \\\n  " + data + " skip 1 using 1:2 with lines lw 2.5 lc 'black' title " +
-            gnuplot_quote("simulation mean (" + std::to_string(replicates) + " replicate" +
-                          (replicates == 1 ? "" : "s") + ")");
+            gnuplot_quote("simulation mean (" +
+                          counted(static_cast<long long>(replicates), "replicate") + ")");
   if (run.model) {
     script +=
         model_curve_lines(model_curves(*run.model, "noa", drawn_steps(run.world)), files, "model");

@@ -4,6 +4,7 @@
 #include "analysis/csv_text.hpp"
 #include "analysis/step_series.hpp"
 #include "controllers/controller_registry.hpp"
+#include "core/counted.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/drawn_points.hpp"
 #include "plot/gnuplot.hpp"
@@ -49,10 +50,9 @@ void draw_states_over_time(const RunFiles& run, const FigureFiles& files) {
 
   const std::size_t replicates = series.front().values.front().size();
   const std::string data = gnuplot_quote(files.csv_name(""));
-  std::string script =
-      png_preamble(files.size, files.png_name(),
-                   run_title(run) + ": agents per state, mean of " + std::to_string(replicates) +
-                       " replicate" + (replicates == 1 ? "" : "s"));
+  std::string script = png_preamble(files.size, files.png_name(),
+                                    run_title(run) + ": agents per state, mean of " +
+                                        counted(static_cast<long long>(replicates), "replicate"));
   script += std::string(kKeyAbovePlot) +
             "set xlabel 'time (tu)'\nset ylabel 'agents'\n"
             "set yrange [0:" +

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "config/world_loader.hpp"
@@ -222,10 +223,16 @@ TEST(RunFolder, WritesEveryOutputAndAResolvedWorldThatLoadsBack) {
   spec.run.replicates = 2;
   const testing::ScratchDir scratch("run-folder-test");
   const auto& out = scratch.path();
-  write_run_folder(spec, run_with_threads(spec, 2), out);
+  const RunResult result = run_with_threads(spec, 2);
+  write_run_folder(spec, result, out);
   for (const char* file : {"timeseries.csv", "summary.json", "world.resolved.yaml"}) {
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   }
+  // How it ran: replicates side by side, and threads within each replicate's step.
+  nlohmann::json summary;
+  std::ifstream(out / "summary.json") >> summary;
+  EXPECT_EQ(summary["threads"], result.threads);
+  EXPECT_EQ(summary["step_threads"], result.step_threads);
   const WorldSpec again = load_world((out / "world.resolved.yaml").string());
   EXPECT_EQ(again.run.seed, spec.run.seed);
   EXPECT_EQ(again.robots.count, spec.robots.count);
