@@ -8,17 +8,16 @@ namespace swarmagg::python::detail {
 bool wait_or_interrupt(const std::future<void>& done, std::atomic<int>& stop) {
   using namespace std::chrono_literals;
   while (true) {
-    {
-      pybind11::gil_scoped_release no_gil;
-      if (done.wait_for(50ms) == std::future_status::ready) return true;
-    }
+    PyThreadState* thread = PyEval_SaveThread();
+    const bool ready = done.wait_for(50ms) == std::future_status::ready;
+    PyEval_RestoreThread(thread);  // not in a destructor: see the header
+    if (ready) return true;
     if (PyErr_CheckSignals() != 0) break;
   }
   stop.store(SIGINT);
-  {
-    pybind11::gil_scoped_release no_gil;
-    done.wait();
-  }
+  PyThreadState* thread = PyEval_SaveThread();
+  done.wait();
+  PyEval_RestoreThread(thread);
   return false;
 }
 

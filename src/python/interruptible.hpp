@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 
 #include <atomic>
+#include <csignal>
 #include <future>
 #include <thread>
 #include <utility>
@@ -21,8 +22,28 @@ namespace swarmagg::python {
 namespace detail {
 // Waits for `done` without the GIL; false when a Python signal handler raised meanwhile
 // (the work was then asked to stop through `stop` and has finished, and the Python error is
-// set).
+// set). In a daemon thread when the interpreter shuts down, taking the GIL back ends the
+// thread (pthread_exit: an unwind that no frame may stop, and that a noexcept frame, such
+// as a destructor's, turns into std::terminate): the GIL is taken back outside any destructor.
 bool wait_or_interrupt(const std::future<void>& done, std::atomic<int>& stop);
+
+// Asks the worker to stop and joins it on the way out, whatever way that is (the unwind of a
+// thread that Python ends at shutdown included: a joinable std::thread destroyed terminates).
+class StopAndJoin {
+ public:
+  StopAndJoin(std::thread& worker, std::atomic<int>& stop) : worker_(worker), stop_(stop) {}
+  ~StopAndJoin() {
+    if (!worker_.joinable()) return;
+    stop_.store(SIGINT);
+    worker_.join();
+  }
+  StopAndJoin(const StopAndJoin&) = delete;
+  StopAndJoin& operator=(const StopAndJoin&) = delete;
+
+ private:
+  std::thread& worker_;
+  std::atomic<int>& stop_;
+};
 }  // namespace detail
 
 template <typename Work>
@@ -38,6 +59,7 @@ auto call_interruptibly(Work work) -> decltype(work()) {
     task();
     finished.set_value();
   });
+  const detail::StopAndJoin joined_on_exit(worker, stop);
   const bool completed = detail::wait_or_interrupt(done, stop);
   worker.join();
   if (!completed) throw pybind11::error_already_set();

@@ -98,3 +98,24 @@ def test_ctrl_c_stops_only_the_call_it_interrupted(demo):
     """)
     assert ended.returncode == 0, ended.stderr
     assert ended.stdout.splitlines() == ["interrupted while the other ran", "150001"]
+
+
+def test_an_interpreter_exits_cleanly_while_a_daemon_thread_is_in_a_long_call(demo):
+    # Python ends a daemon thread that takes the GIL back during its shutdown (pthread_exit);
+    # a long call's wait took it back in a destructor, which turned that into std::terminate
+    # (exit 134, "terminate called without an active exception").
+    script = f"""
+        import threading, time
+        import swarmagg as sa
+        world = sa.load_world({str(demo)!r}, set={FOREVER!r})
+        for _ in range(2):
+            threading.Thread(target=lambda: sa.run(world, replicates=1, threads=1),
+                             daemon=True).start()
+        time.sleep(1.0)
+        print("main exits")
+    """
+    done = subprocess.run([sys.executable, "-c", textwrap.dedent(script)], capture_output=True,
+                          text=True, env=os.environ.copy(), timeout=PATIENCE)
+    assert done.returncode == 0, done.stderr
+    assert "terminate" not in done.stderr
+    assert done.stdout.strip() == "main exits"

@@ -1,5 +1,9 @@
 """Simulation: zero-copy read-only views that follow the steps, on both engines."""
 
+import subprocess
+import sys
+import textwrap
+
 import numpy as np
 import pytest
 
@@ -97,3 +101,25 @@ def test_a_step_that_failed_fails_again_and_the_state_stays_as_it_failed(demo):
             sim.step(1)
         assert str(again.value) == str(failed.value)
     assert (sim.step_count, sim.state_hash()) == (stopped_at, state)
+
+
+def test_a_worker_forked_after_a_frame_draws_frames_too(demo):
+    # llvmpipe's drawing threads, started by the parent's first frame, are not in a forked
+    # child: its first frame waited for them for ever (multiprocessing forks on Linux).
+    script = f"""
+        import multiprocessing as mp
+        import numpy as np
+        import swarmagg as sa
+        world = sa.load_world({str(demo)!r}, set={{"robots.count": 10}})
+        def frame(_):
+            return sa.Simulation(world, seed=2).frame(size=(64, 64))
+        if __name__ == "__main__":
+            mine = frame(0)
+            with mp.get_context("fork").Pool(1) as pool:
+                theirs = pool.map_async(frame, [0]).get(timeout=60)[0]
+            print("same" if np.array_equal(mine, theirs) else "differ")
+    """
+    done = subprocess.run([sys.executable, "-c", textwrap.dedent(script)], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "same"
