@@ -2,7 +2,9 @@
 // its folder, then merged), without plots and without the GIL. The tidy merged files are
 // read by python/swarmagg/.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,14 +22,25 @@ namespace py = pybind11;
 namespace swarmagg::python {
 namespace {
 
-py::dict sweep(const std::string& path, std::optional<std::string> out, int threads, bool force) {
+// A path as Python names it: the file system's encoding, undecodable bytes as surrogates
+// (os.fsdecode), so that any path the system allows comes back as the path given.
+py::str python_path(const std::filesystem::path& path) {
+  const std::string& bytes = path.native();
+  return py::reinterpret_steal<py::str>(PyUnicode_DecodeFSDefaultAndSize(
+      bytes.data(), static_cast<Py_ssize_t>(bytes.size())));
+}
+
+// Paths as filesystem paths (str, bytes or os.PathLike, any bytes the system allows), not
+// UTF-8 text.
+py::dict sweep(const std::filesystem::path& path, std::optional<std::filesystem::path> out,
+               int threads, bool force) {
   if (threads < 0 || threads > 1024)  // as run.threads and the CLI's sweep --threads
     throw InputError("threads: expected 0 (all cores) to 1024, got " + std::to_string(threads));
   // An empty path would be the working folder, holding the runs before anything refused it.
   if (out && out->empty()) throw InputError("out: expected a path, got ''");
-  const SweepPlan plan = reading_file([&] { return load_sweep(path); });
+  const SweepPlan plan = reading_file([&] { return load_sweep(path.string()); });
   SweepOptions options;
-  options.out = out ? std::filesystem::path(*out) : std::filesystem::path("runs") / plan.name;
+  options.out = out ? *out : std::filesystem::path("runs") / plan.name;
   check_output_folder(options.out, out ? "out" : "the sweep folder");
   options.threads = threads;
   options.replace_outdated = force;
@@ -37,11 +50,11 @@ py::dict sweep(const std::string& path, std::optional<std::string> out, int thre
     merged = merge_sweep({options.out}, options.out);
     return ran;
   });
-  std::vector<std::string> removed;
-  for (const std::filesystem::path& file : merged.removed) removed.push_back(file.string());
+  py::list removed;
+  for (const std::filesystem::path& file : merged.removed) removed.append(python_path(file));
   py::dict result;
   result["name"] = plan.name;
-  result["out"] = options.out.string();
+  result["out"] = python_path(options.out);
   result["runs"] = report.selected;
   result["already_complete"] = report.already_complete;
   result["ran"] = report.ran;

@@ -1,5 +1,7 @@
 """sweep(): the CLI's sweep, merged, as tidy frames."""
 
+import os
+
 import pandas as pd
 import pytest
 
@@ -81,3 +83,18 @@ def test_an_out_that_is_a_file_is_refused_by_name(demo, tmp_path):
     with pytest.raises(ValueError, match="out .*afile: is a file, not a folder"):
         sa.sweep(path, out=tmp_path / "afile")
     assert (tmp_path / "afile").read_text() == "mine\n"
+
+
+def test_paths_that_are_not_utf8_are_paths_too(demo, tmp_path):
+    # Taken as UTF-8 text, such a sweep file was refused as an argument of the wrong type, and
+    # such an `out` failed after every run and the merge were written.
+    folder = tmp_path / os.fsdecode(b"sweeps-\xe9")
+    folder.mkdir()
+    path = write_sweep(folder, demo)
+    out = os.fsencode(tmp_path) + b"/out-\xff"
+    done = sa.sweep(path, out=out, threads=1)
+    assert done.report["out"] == os.fsdecode(out)
+    assert done.out == tmp_path / os.fsdecode(b"out-\xff")
+    assert len(done.results()) > 0
+    again = sa.sweep(os.fsencode(path), out=os.fsdecode(out), threads=1)
+    assert again.report["ran"] == 0
