@@ -26,8 +26,8 @@ namespace {
 // (os.fsdecode), so that any path the system allows comes back as the path given.
 py::str python_path(const std::filesystem::path& path) {
   const std::string& bytes = path.native();
-  return py::reinterpret_steal<py::str>(PyUnicode_DecodeFSDefaultAndSize(
-      bytes.data(), static_cast<Py_ssize_t>(bytes.size())));
+  return py::reinterpret_steal<py::str>(
+      PyUnicode_DecodeFSDefaultAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size())));
 }
 
 // Paths as filesystem paths (str, bytes or os.PathLike, any bytes the system allows), not
