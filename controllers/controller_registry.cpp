@@ -65,12 +65,10 @@ const std::vector<ControllerCatalogEntry>& controller_catalog() {
 }
 
 // Each family of models reads these model.* keys (models/predictions.cpp and what it calls):
-// the Bayindir equations take kappa and the creation variant and have a stochastic version,
-// the encounter rate the same but no start (it counts encounters from any state), the Soysal
-// partition chain the leaving variant and its periphery.
+// the Bayindir equations and the encounter rate take kappa and the creation variant and have
+// a stochastic version, the Soysal partition chain the leaving variant and its periphery; all
+// read where they start (the encounter rate only in that `measured` needs a run's rates).
 bool model_reads(const WorldSpec& spec, const std::string& path) {
-  static const std::vector<std::string> encounters = {"model.kappa", "model.creation",
-                                                      "model.stochastic_replicates"};
   static const std::vector<std::string> bayindir = {
       "model.kappa", "model.creation", "model.stochastic_replicates", "model.initial_state"};
   static const std::vector<std::string> soysal = {"model.leaving", "model.periphery_cap",
@@ -82,7 +80,6 @@ bool model_reads(const WorldSpec& spec, const std::string& path) {
     case ModelFamily::None:
       return false;
     case ModelFamily::Encounters:
-      return holds(encounters);
     case ModelFamily::Bayindir:
       return holds(bayindir);
     case ModelFamily::Soysal:

@@ -10,7 +10,16 @@ and stop soon after Ctrl-C with KeyboardInterrupt. The reference is docs/python.
     r.timeseries()          # pandas DataFrame, the rows of timeseries.csv
 """
 
-from ._core import World, WorldError, Simulation, load_world, __version__
+import os
+
+# llvmpipe (Mesa) draws a frame on threads it starts at a process's first frame, which a forked
+# process (multiprocessing's fork) does not have: a worker forked after its parent drew a frame
+# waited for them for ever. Single-threaded it draws the same pixels. Set before the first
+# frame, in os.environ so that Python and the processes it starts see what Mesa sees; a number
+# the user chose (LP_NUM_THREADS) stays.
+os.environ.setdefault("LP_NUM_THREADS", "0")
+
+from ._core import World, WorldError, Simulation, load_world, __version__  # noqa: E402
 from ._run import Rates, Run, rates, run
 from ._state import State
 from ._sweep import Sweep, sweep

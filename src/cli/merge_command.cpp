@@ -3,6 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/merge_removals.hpp"
+#include "core/counted.hpp"
 #include "output/output_check.hpp"
 #include "run/interrupt.hpp"
 #include "sweep/sweep_merge.hpp"
@@ -23,8 +24,8 @@ int merge_command(const MergeCommandOptions& command) {
   install_interrupt_handlers();
   const MergeReport report = merge_sweep(folders, command.out, command.force);
   if (!command.quiet) {
-    std::cout << "merged " << report.runs << " runs (" << report.points
-              << " parameter points) into " << command.out << "/:";
+    std::cout << "merged " << counted(report.runs, "run") << " ("
+              << counted(report.points, "parameter point") << ") into " << command.out << "/:";
     for (const std::filesystem::path& file : report.files)
       std::cout << " " << file.filename().string();
     std::cout << "\n";

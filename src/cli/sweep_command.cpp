@@ -74,7 +74,8 @@ int sweep_command(const SweepCommandOptions& command) {
   command.progress.phase(command.quiet, plan.name, "merging the runs");
   const MergeReport merged = merge_sweep({options.out}, options.out);
   if (!command.quiet) {
-    std::cout << "merged " << merged.runs << " runs into " << options.out.string() << "/\n"
+    std::cout << "merged " << counted(merged.runs, "run") << " into " << options.out.string()
+              << "/\n"
               << merge_removals_text(merged, options.out.string(), sweep_plots);
   }
   if (!sweep_plots) return 0;

@@ -538,8 +538,8 @@ std::vector<WorldKey> build_keys() {
                               {"placement_second_order", InitialState::PlacementSecondOrder},
                               {"all_searching", InitialState::AllSearching},
                               {"measured", InitialState::Measured}}),
-      "bayindir and soysal models: where predictions start: the mean first decision of sampled "
-      "placements, its "
+      "bayindir, soysal and collision models, where predictions start: the mean first decision "
+      "of sampled placements, its "
       "second-order formula (sparse placements only), all agents searching, or the state a run "
       "measured"));
   keys.push_back(described(

@@ -53,7 +53,9 @@ int resolve_threads(const WorldSpec& spec, int requested) {
 ThreadPlan plan_threads(const WorldSpec& spec, int requested) {
   const int threads = resolve_threads(spec, requested);
   const int at_once = std::clamp(threads, 1, spec.run.replicates);
-  return {at_once, std::max(1, threads / at_once)};
+  // Box2D steps a world on one thread (Engine::set_threads does nothing there).
+  const bool splits_steps = spec.engine.type == EngineType::Kinematic;
+  return {at_once, splits_steps ? std::max(1, threads / at_once) : 1};
 }
 
 ReplicateOutcome run_replicate(const WorldSpec& spec, int index, ReplicateObserver* observer,

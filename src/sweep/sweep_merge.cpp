@@ -10,6 +10,7 @@
 #include "analysis/csv_reader.hpp"
 #include "analysis/csv_text.hpp"
 #include "config/world_keys.hpp"
+#include "core/counted.hpp"
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/made_folders.hpp"
@@ -113,10 +114,9 @@ class MergedCsv {
       }
     }
     if (recorded && rows != recorded_rows(*recorded)) {
-      throw InputError(file.string() + ": holds " + std::to_string(rows) +
-                       (rows == 1 ? " row" : " rows") + " but the run records " +
-                       std::to_string(recorded_rows(*recorded)) + " states (" +
-                       std::to_string(recorded->steps()) + " steps, every " +
+      throw InputError(file.string() + ": holds " + counted(rows, "row") + " but the run records " +
+                       counted(recorded_rows(*recorded), "state") + " (" +
+                       counted(recorded->steps(), "step") + ", every " +
                        std::to_string(recorded->run.record_every) + "): cut short; " + redo(file));
     }
     return numbers;

@@ -24,8 +24,9 @@ struct SweepPlan {
   // world is this text with the point's parameters and the run's seed applied.
   std::string base_world;
   std::string source;  // where the plan came from, for messages
-  // Read back from a sweep's folder (sweep.json): its points were checked against what their
-  // controllers and models read when the sweep began, by the version that began it.
+  // Read back from a sweep's folder (sweep.json, as `merge` reads it): its points were checked
+  // against what their controllers and models read when the sweep began, by the version that
+  // began it.
   bool recorded = false;
 };
 

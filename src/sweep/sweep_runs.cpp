@@ -32,7 +32,8 @@ WorldSpec point_world(const SweepPlan& plan, const SweepPoint& point) {
     if (p.key == "controller.type") types = p.values;
   std::vector<WorldOverride> overrides = parse_overrides(point_overrides(point));
   for (WorldOverride& o : overrides) {
-    o.origin = "parameters";  // messages name the sweep file's section, not --set
+    // Messages name the sweep file's section, not --set (and a manifest, which names no line).
+    o.origin = plan.recorded ? plan.source + ": parameters" : "parameters";
     o.any_controller =
         plan.recorded || std::any_of(types.begin(), types.end(), [&](const std::string& type) {
           return controller_type_reads(type, o.key);

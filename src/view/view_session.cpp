@@ -5,6 +5,7 @@
 #include <ostream>
 #include <utility>
 
+#include "core/counted.hpp"
 #include "core/errors.hpp"
 #include "models/predictions.hpp"
 #include "run/placement_sample.hpp"
@@ -120,8 +121,9 @@ std::int64_t ViewSession::advance_frame(double frame_seconds, double budget_seco
     ++taken;
     if (control_.took(replicate_->steps_done())) {
       const double noa = replicate_->aggregates().count();
-      out_ << spec_->name << ": 1 replicates x " << replicate_->steps_done() << " steps in "
-           << wall_seconds_ << " s on 1 threads; mean final NOA " << noa << std::endl;
+      out_ << spec_->name << ": " << counted(1, "replicate") << " x " << replicate_->steps_done()
+           << " steps in " << wall_seconds_ << " s on " << counted(1, "thread")
+           << "; mean final NOA " << noa << std::endl;
       break;
     }
     if (control_.pace() == Pace::Fastest && (taken & 15) == 0 &&

@@ -289,9 +289,9 @@ TEST(WorldLoaderErrors, ModelKeysTheModelDoesNotReadAreRefusedFromOverrides) {
   // Overrides that set the type act on the type they set.
   EXPECT_EQ(error_of(soysal, {"controller.type=bayindir", "model.kappa=maxwell"}), "no error");
 
-  EXPECT_THAT(error_of("controller: {type: collision}\n", {"model.initial_state=all_searching"}),
-              HasSubstr("model.initial_state: the model of the world's controller type "
-                        "'collision'"));
+  // `measured` needs a run's rates even where the encounter rate starts from nothing.
+  EXPECT_EQ(error_of("controller: {type: collision}\n", {"model.initial_state=all_searching"}),
+            "no error");
 
   // The resolved world keeps every model key: switched to Bayindir, a resolved Soysal world
   // gives its model what the file said, as the file itself does.

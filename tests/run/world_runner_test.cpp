@@ -67,6 +67,10 @@ TEST(WorldRunner, ThreadsBeyondTheReplicatesGoIntoTheSteps) {
   EXPECT_EQ(plan_threads(spec, 3).step_threads, 1);
   spec.run.threads = 2;
   EXPECT_EQ(plan_threads(spec, 0).replicates_at_once, 2) << "0 falls back to run.threads";
+  // Box2D steps a world on one thread: summary.json and the run's line say so.
+  spec.engine.type = EngineType::Box2D;
+  spec.run.replicates = 1;
+  EXPECT_EQ(plan_threads(spec, 4).step_threads, 1);
 }
 
 // One large replicate: `--threads` splits its steps, and the output stays the same.

@@ -91,7 +91,7 @@ TEST_F(SweepTest, ASweepOverControllerTypesKeepsTheBaseWorldsModelKeys) {
   }
 }
 
-// A sweep read back from its folder (merge, --list, resume) is not refused for keys its points'
+// A sweep read back from its folder (merge) is not refused for keys its points'
 // models ignore: its points were checked when it began, and a version that did not check
 // model keys may have begun it (a Soysal sweep over model.kappa).
 TEST_F(SweepTest, ARecordedSweepIsNotRefusedForKeysItsModelsIgnore) {

@@ -64,7 +64,7 @@ TEST(ViewSession, PlayingStopsAtTheDurationAndPrintsTheSummaryLine) {
   for (int frame = 0; frame < 5; ++frame) session.advance_frame(0.016, 1.0);
   EXPECT_EQ(session.replicate().steps_done(), 20);
   EXPECT_FALSE(session.control().playing());
-  EXPECT_EQ(out.str().rfind("demo: 1 replicates x 20 steps in ", 0), 0u) << out.str();
+  EXPECT_EQ(out.str().rfind("demo: 1 replicate x 20 steps in ", 0), 0u) << out.str();
   EXPECT_NE(out.str().find("mean final NOA"), std::string::npos);
 }
 
