@@ -15,15 +15,12 @@
 #include "config/world_writer.hpp"
 #include "config/yaml_document.hpp"
 #include "core/errors.hpp"
+#include "sweep/sweep_values.hpp"
 
 namespace swarmagg {
 namespace {
 
 const std::vector<std::string> kSweepKeys = {"name", "base", "parameters", "replicates", "seed"};
-
-// Characters a canonical value may hold: it becomes part of folder names and CSV fields.
-constexpr const char* kValueCharacters =
-    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789._+-";
 
 std::string where(const std::string& source, const YAML::Node& node) {
   const YAML::Mark mark = node.Mark();
@@ -58,11 +55,6 @@ void read_through_key(WorldSpec& world, const std::string& path, const YAML::Nod
   } catch (const YAML::Exception&) {
     throw InputError(at + ": " + label + ": expected " + key.expected + ", got " + shown(node));
   }
-}
-
-bool swept_by_sweep(const std::string& path) {
-  return path == "name" || path == "run.seed" || path == "run.replicates" ||
-         path.rfind("render.", 0) == 0;
 }
 
 class SweepReader {
@@ -201,7 +193,7 @@ class SweepReader {
     read_through_key(world, parameter.key, value, at, label);
     const YAML::Node written = find_world_key(parameter.key)->write(world);
     const std::string text = written.IsScalar() ? written.Scalar() : "";
-    if (text.empty() || text.find_first_not_of(kValueCharacters) != std::string::npos) {
+    if (!is_sweep_value_text(text)) {
       throw InputError(at + ": " + label + ": sweep values must be numbers or names " +
                        "(letters, digits, '.', '_', '+', '-'), got " + shown(value));
     }

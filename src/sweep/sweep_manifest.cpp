@@ -10,6 +10,7 @@
 #include "config/world_keys.hpp"
 #include "config/world_spec.hpp"
 #include "core/errors.hpp"
+#include "sweep/sweep_values.hpp"
 
 namespace swarmagg {
 
@@ -64,7 +65,8 @@ std::vector<SweepParameter> parameters_of(const std::filesystem::path& path,
                                           const nlohmann::json& manifest) {
   const nlohmann::json list =
       manifest.contains("parameters") ? manifest["parameters"] : nlohmann::json();
-  const std::string expected = "a list of {key, values}: a world key and one or more texts";
+  const std::string expected =
+      "a list of {key, values}: a world key the sweep does not set itself and one or more texts";
   if (!list.is_array() || list.empty()) refuse(path, "parameters", expected, list);
   std::vector<SweepParameter> parameters;
   for (const nlohmann::json& p : list) {
@@ -73,9 +75,15 @@ std::vector<SweepParameter> parameters_of(const std::filesystem::path& path,
                        std::all_of(p["values"].begin(), p["values"].end(),
                                    [](const nlohmann::json& v) { return v.is_string(); });
     if (!texts || !p.contains("key") || !p["key"].is_string() ||
-        find_world_key(p["key"].get<std::string>()) == nullptr)
+        find_world_key(p["key"].get<std::string>()) == nullptr ||
+        swept_by_sweep(p["key"].get<std::string>()))
       refuse(path, "parameters", expected, p);
     const std::string key = p["key"].get<std::string>();
+    // A value is part of a run's folder name: as the sweep file's, a number or a name.
+    for (const nlohmann::json& value : p["values"]) {
+      if (!is_sweep_value_text(value.get<std::string>()))
+        refuse(path, "parameters", "values of letters, digits, '.', '_', '+' and '-'", value);
+    }
     const bool repeated = std::any_of(parameters.begin(), parameters.end(),
                                       [&](const SweepParameter& q) { return q.key == key; });
     if (repeated) refuse(path, "parameters", "each key once", p);

@@ -71,6 +71,12 @@ TEST_F(SweepManifestTest, ADamagedManifestIsRefusedNamingTheField) {
               HasSubstr(file + "parameters: expected a list of {key, values}"));
   EXPECT_THAT(error_with("parameters", R"([{"key": "robots.count", "values": []}])"),
               HasSubstr(file + "parameters: expected"));
+  // Values name the runs' folders: one that climbs out of the sweep's folder is refused, and
+  // so is a key the sweep sets itself.
+  EXPECT_THAT(error_with("parameters", R"([{"key": "robots.count", "values": ["../.."]}])"),
+              HasSubstr(file + "parameters: expected values of letters, digits"));
+  EXPECT_THAT(error_with("parameters", R"([{"key": "run.replicates", "values": ["2"]}])"),
+              HasSubstr(file + "parameters: expected a list of {key, values}"));
   EXPECT_THAT(error_with("parameters", R"([{"key": "robots.count", "values": ["1"]},
                                           {"key": "robots.count", "values": ["2"]}])"),
               HasSubstr(file + "parameters: expected each key once"));
