@@ -142,14 +142,15 @@ class MergedCsv {
   static void check_recorded_row(const std::vector<double>& numbers, std::int64_t row,
                                  const WorldSpec& world, const std::filesystem::path& file,
                                  std::int64_t line) {
-    const std::string at = file.string() + ":" + std::to_string(line) + ": ";
+    // The file and line are named only when a row is refused: every row of a sweep passes here.
+    const auto at = [&] { return file.string() + ":" + std::to_string(line) + ": "; };
     if (row >= recorded_rows(world)) {
-      throw InputError(at + "a row after the run's last recorded state (step " +
+      throw InputError(at() + "a row after the run's last recorded state (step " +
                        std::to_string(world.steps()) + "): a row repeated or added; " + redo(file));
     }
     const std::int64_t step = std::min(row * world.run.record_every, world.steps());
     if (numbers[0] == 0.0 && numbers[1] == static_cast<double>(step)) return;
-    throw InputError(at + "expected replicate 0 at step " + std::to_string(step) +
+    throw InputError(at() + "expected replicate 0 at step " + std::to_string(step) +
                      " (the run records every " + std::to_string(world.run.record_every) +
                      " steps and its last, " + std::to_string(world.steps()) + "), got replicate " +
                      csv_number(numbers[0]) + " at step " + csv_number(numbers[1]) +
