@@ -46,6 +46,14 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
   return message + " (swarmagg --help lists the commands)";
 }
 
+// CLI11's own refusals ("world is required") as the others read: prefixed with the command
+// that refused, and pointing at that command's help rather than the program's.
+std::string parse_failure_message(const CLI::App* app, const CLI::Error& error) {
+  std::string command = "swarmagg";
+  for (const CLI::App* sub : app->get_subcommands()) command += " " + sub->get_name();
+  return command + ": " + error.what() + " (" + command + " --help lists the options)\n";
+}
+
 // An empty path would silently mean the default (`--out ""`: the default folder) or nothing
 // at all (`--video ""`: no video): refused, as a missing value is.
 void refuse_empty_paths(CLI::App& app) {
@@ -91,6 +99,7 @@ int main(int argc, char** argv) {
   CLI::App app{"swarmagg: self-organized aggregation in 2D robot swarms", "swarmagg"};
   app.require_subcommand(1);
   app.set_version_flag("--version", SWARMAGG_VERSION);
+  app.failure_message(parse_failure_message);  // before the commands, which inherit it
   Action action;
   // One line per subcommand (keep this list in the order of `swarmagg --help`).
   add_run_command(app, action);

@@ -1,8 +1,12 @@
 // noa.png: see run_plot.hpp.
+#include <algorithm>
+#include <cmath>
+
 #include "analysis/csv_text.hpp"
 #include "analysis/model_table.hpp"
 #include "analysis/step_series.hpp"
 #include "core/counted.hpp"
+#include "core/errors.hpp"
 #include "models/sample_statistics.hpp"
 #include "output/atomic_file.hpp"
 #include "plot/drawn_points.hpp"
@@ -31,6 +35,18 @@ std::string simulation_csv(const StepSeries& noa, bool with_replicates) {
   return text;
 }
 
+// A model.csv cut short (damaged, or edited since) would draw its curves part of the way, or
+// one point, as if the model stopped there.
+void check_model_reaches(const std::vector<ModelCurve>& curves, const std::filesystem::path& file,
+                         double last_time) {
+  for (const ModelCurve& curve : curves) {
+    if (std::abs(curve.x.back() - last_time) <= 1e-9 * std::max(1.0, std::abs(last_time))) continue;
+    throw InputError(file.string() + ": the model's " + curve.variant + " curve ends at time " +
+                     csv_number(curve.x.back()) + ", the run at time " + csv_number(last_time) +
+                     ": cut short or edited since; run the world again");
+  }
+}
+
 }  // namespace
 
 void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
@@ -57,8 +73,9 @@ void draw_noa_over_time(const RunFiles& run, const FigureFiles& files) {
             gnuplot_quote("simulation mean (" +
                           counted(static_cast<long long>(replicates), "replicate") + ")");
   if (run.model) {
-    script +=
-        model_curve_lines(model_curves(*run.model, "noa", drawn_steps(run.world)), files, "model");
+    const std::vector<ModelCurve> curves = model_curves(*run.model, "noa", drawn_steps(run.world));
+    check_model_reaches(curves, *run.model, noa.times.back());
+    script += model_curve_lines(curves, files, "model");
   }
   script += "\n";
   run_gnuplot(files.script(), script);

@@ -156,7 +156,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"run /nonexistent.yaml", "/nonexistent.yaml"},
       {"validate worlds/examples/demo.yaml --set robots.radius=-2", "robots.radius"},
-      {"run", "world is required"},
+      {"run", "swarmagg run: world is required (swarmagg run --help lists the options)"},
+      {"run worlds/examples/demo.yaml --bogus",
+       "swarmagg run: The following argument was not expected: --bogus"},
       {"rnu worlds/examples/demo.yaml", "unknown command 'rnu'; did you mean 'run'?"},
       {"frobnicate", "unknown command 'frobnicate'"},
       {"run worlds/examples/demo.yaml --out ''", "--out: expected a path, got ''"},
@@ -563,6 +565,14 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
   }
   EXPECT_GE(files, 6);  // a script and at least one CSV per plot
   EXPECT_EQ(swarmagg("plot " + temp_dir("plot-nothing").string()).exit_code, 2);
+  // A model cut short at a line's end reads as whole: its curves would stop there.
+  const std::string model = file_text(run / "model.csv");
+  std::ofstream(run / "model.csv", std::ios::trunc)
+      << model.substr(0, model.find('\n', model.find(",original,100,")) + 1);
+  const Outcome model_cut = swarmagg("plot " + run.string() + " --out " + redrawn.string());
+  EXPECT_EQ(model_cut.exit_code, 2) << model_cut.output;
+  EXPECT_THAT(model_cut.output, HasSubstr("model.csv: the model's original curve ends at time "));
+  std::ofstream(run / "model.csv", std::ios::trunc) << model;
   // A timeseries cut short at a line's end reads as whole: it would be drawn as the run.
   const std::string whole = file_text(run / "timeseries.csv");
   std::ofstream(run / "timeseries.csv", std::ios::trunc)
