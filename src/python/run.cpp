@@ -142,13 +142,7 @@ RunOutput run(const World& world, std::optional<py::object> replicates,
   }
   MeasuredRun result =
       call_interruptibly([&] { return run_world_measuring(*ran.spec, RunOptions{}, rates); });
-  // Named as the CLI's summary.json names --engine, --replicates and --seed (not --threads).
-  World named = ran;
-  if (engine) named.changes.push_back("engine.type=" + *engine);
-  if (replicates)
-    named.changes.push_back("run.replicates=" + yaml_index(*replicates, "replicates").Scalar());
-  if (seed) named.changes.push_back("run.seed=" + yaml_index(*seed, "seed").Scalar());
-  return RunOutput(std::move(named), std::move(result));
+  return RunOutput(ran, std::move(result));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -139,14 +140,33 @@ World world_from_state(const WorldState& state) {
           changes};
 }
 
+// A world run again with another value of a key it changed (a seed, say) names the value the
+// run used, once, where the first change stood: as the CLI would for the world file given
+// every change at once.
+void record_change(std::vector<std::string>& changes, const std::string& key,
+                   const std::string& value) {
+  const std::string prefix = key + "=";
+  const auto earlier = std::find_if(changes.begin(), changes.end(),
+                                    [&](const std::string& c) { return c.starts_with(prefix); });
+  if (earlier == changes.end()) {
+    changes.push_back(prefix + value);
+  } else {
+    *earlier = prefix + value;
+  }
+}
+
 }  // namespace
 
 World with_overrides(const World& world, const std::vector<WorldOverride>& overrides) {
   if (overrides.empty()) return world;
   auto spec = std::make_shared<WorldSpec>(*world.spec);
-  for (const WorldOverride& o : overrides) apply_override(*spec, o);
+  std::vector<std::string> changes = world.changes;
+  for (const WorldOverride& o : overrides) {
+    apply_override(*spec, o);
+    if (o.key != "run.threads") record_change(changes, o.key, o.value.Scalar());
+  }
   check_world(*spec);
-  return {std::move(spec), world.changes};
+  return {std::move(spec), std::move(changes)};
 }
 
 void bind_world(py::module_& module) {

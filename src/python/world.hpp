@@ -45,7 +45,8 @@ inline void add_argument(std::vector<WorldOverride>& overrides, const char* key,
 }
 
 // `world` with `overrides` applied and checked again; InputError (ValueError) when a value
-// does not fit its key. The world's `changes` are kept: the caller names its own arguments.
+// does not fit its key. Its `changes` gain the overrides, as summary.json names the CLI's
+// --engine, --replicates and --seed (not --threads); a key changed before names its new value.
 World with_overrides(const World& world, const std::vector<WorldOverride>& overrides);
 
 }  // namespace swarmagg::python

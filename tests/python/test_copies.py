@@ -173,3 +173,21 @@ def test_the_python_only_values_copy_and_pickle(tmp_path):
     assert pickle.loads(pickle.dumps(sa.State.WAIT)) is sa.State.WAIT
     error = pickle.loads(pickle.dumps(sa.WorldError("w.yaml:3: robots.count")))
     assert isinstance(error, sa.WorldError) and str(error) == "w.yaml:3: robots.count"
+
+
+def test_a_world_run_again_names_every_change_once_with_the_value_used(world):
+    """A run's or a simulation's world run again is the world file with every change so far,
+    a key changed twice naming its last value, as summary.json names the CLI's --set,
+    --engine, --seed and --replicates."""
+    first = sa.run(world, replicates=2, seed=5, engine="box2d", threads=1)
+    assert first.summary()["overrides"] == ["run.duration=1", "robots.count=12",
+                                            "engine.type=box2d", "run.replicates=2", "run.seed=5"]
+    again = sa.run(first.world, replicates=3, threads=1).summary()["overrides"]
+    assert again == ["run.duration=1", "robots.count=12", "engine.type=box2d",
+                     "run.replicates=3", "run.seed=5"]
+    simulated = sa.Simulation(world, seed=9, engine="box2d").world
+    assert sa.run(simulated, replicates=1).summary()["overrides"] == [
+        "run.duration=1", "robots.count=12", "engine.type=box2d", "run.seed=9",
+        "run.replicates=1"]
+    # And the summary is the one of the run it names: the same command line's.
+    assert sa.run(simulated, replicates=1).summary()["seed"] == 9
