@@ -13,6 +13,7 @@
 #include "bench/lib/machine_info.hpp"
 #include "bench/lib/render_timing.hpp"
 #include "cli/commands.hpp"
+#include "cli/paper_worlds.hpp"
 #include "config/world_loader.hpp"
 
 namespace swarmagg::cli {
@@ -21,7 +22,7 @@ namespace {
 struct BenchOptions {
   bool json = false;
   bool quick = false;
-  std::string worlds = "worlds/paper";
+  std::string worlds;              // empty: paper_worlds_folder's default
   std::vector<std::string> cases;  // empty: all
 };
 
@@ -99,8 +100,9 @@ nlohmann::json box2d_series(bool quick, bool verbose) {
 // Each world is loaded before any is timed, so that a missing one fails at once.
 nlohmann::json soysal_series(const BenchOptions& options, bool verbose) {
   std::vector<WorldSpec> worlds;
+  const std::string folder = paper_worlds_folder(options.worlds);
   for (const std::string& name : kSoysalWorlds) {
-    worlds.push_back(load_world(options.worlds + "/" + name + ".yaml"));
+    worlds.push_back(load_world(folder + "/" + name + ".yaml"));
   }
   nlohmann::json series = nlohmann::json::array();
   for (std::size_t k = 0; k < worlds.size(); ++k) {
@@ -211,7 +213,7 @@ void add_bench_command(CLI::App& app, Action& action) {
   command->add_flag("--json", options->json, "Print one JSON object (for scripts)");
   command->add_flag("--quick", options->quick, "Fewer steps per size (same sizes)");
   command->add_option("--worlds", options->worlds,
-                      "Folder of the paper worlds (default worlds/paper)");
+                      "Folder of the paper worlds (" + paper_worlds_default_help() + ")");
   command
       ->add_option("--case", options->cases,
                    "Only these cases (repeatable): soysal, ghost, bayindir, bare, box2d, render")

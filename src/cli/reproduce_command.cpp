@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/paper_worlds.hpp"
 #include "cli/progress_option.hpp"
 #include "core/errors.hpp"
 #include "output/output_check.hpp"
@@ -14,19 +15,15 @@ namespace {
 struct ReproduceCommandOptions {
   ReproduceOptions reproduce;
   std::string out = "reproduce";
-  std::string worlds = "worlds/paper";
+  std::string worlds;  // empty: paper_worlds_folder's default
   bool quiet = false;
   ProgressOption progress;
 };
 
 int reproduce_command(ReproduceCommandOptions options) {
   options.reproduce.out = options.out;
-  options.reproduce.worlds = options.worlds;
+  options.reproduce.worlds = paper_worlds_folder(options.worlds);
   options.reproduce.progress = options.progress.shown(options.quiet);
-  if (!std::filesystem::is_directory(options.reproduce.worlds)) {
-    throw InputError("no paper worlds in " + options.worlds +
-                     " (run from the repository root or give --worlds)");
-  }
   check_output_folder(options.reproduce.out, "--out");
   install_interrupt_handlers();
   std::ostream null_stream(nullptr);
@@ -69,7 +66,7 @@ void add_reproduce_command(CLI::App& app, Action& action) {
                    "--quick divides it by 25)")
       ->check(CLI::PositiveNumber);
   command->add_option("--worlds", options->worlds,
-                      "Folder of the paper worlds (default worlds/paper)");
+                      "Folder of the paper worlds (" + paper_worlds_default_help() + ")");
   // Checked before the runs, not by gnuplot after them: at least a pixel, at most what a
   // cairo surface holds.
   command->add_option("--plot-width", r.plot_size.width, "Plot width in pixels (default 900)")

@@ -194,6 +194,8 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
        "--render-size and --set render.height both set render.height"},
       {"run worlds/examples/demo.yaml --trajectories 5 --set run.trajectories=10",
        "--trajectories and --set run.trajectories both set run.trajectories"},
+      {"reproduce --quick --worlds /nonexistent-worlds",
+       "--worlds: /nonexistent-worlds: no such folder (expected the paper's worlds)"},
       // A reproduction of no world would be an empty report that reads as a success.
       {"reproduce --quick --only no-such-world --out " + temp_dir("reproduce-none").string(),
        "--only: no paper world's name contains 'no-such-world'"},

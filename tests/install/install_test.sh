@@ -41,6 +41,10 @@ swarmagg run "$share/worlds/examples/demo.yaml" --replicates 1 --set run.duratio
 [[ -f run/world.resolved.yaml ]] || fail "the installed binary wrote no run"
 listed=$(swarmagg sweep "$share/examples/sweeps/p-leave-vs-count.yaml" --list)
 [[ $listed == *pending* ]] || fail "the installed sweep does not load"
+# From a folder with no worlds/paper, reproduce finds the installed paper worlds.
+swarmagg reproduce --quick --only creation-50 --quiet --out reproduced ||
+  fail "the installed reproduce does not find the installed paper worlds"
+[[ -f reproduced/REPORT.md ]] || fail "the installed reproduce wrote no report"
 if [[ -n $python ]]; then
   package=$tmp/prefix/$python_dir/swarmagg
   [[ -f $package/__init__.py ]] || fail "the Python package is not in $python_dir"
