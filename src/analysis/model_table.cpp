@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "analysis/csv_reader.hpp"
+#include "core/errors.hpp"
 
 namespace swarmagg {
 namespace {
@@ -35,7 +36,7 @@ std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
 }
 
 std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& model_csv,
-                                               const std::string& prefix) {
+                                               const std::string& prefix, int largest) {
   CsvReader model(model_csv);
   const std::size_t variant = model.column("variant"), name = model.column("quantity"),
                     value = model.column("value");
@@ -47,6 +48,13 @@ std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& mode
     if (!size || !std::isfinite(*size))
       throw_not_a_number(model_csv.string() + ":" + std::to_string(model.line()), "quantity",
                          quantity);
+    // A size no run of the world can have (edited, damaged) would also size what draws it.
+    if (*size != std::floor(*size) || *size < 2 || *size > largest) {
+      throw InputError(model_csv.string() + ":" + std::to_string(model.line()) +
+                       ": quantity: expected " + prefix + "<m> with m a whole number from 2 to " +
+                       std::to_string(largest) + ", got '" + quantity +
+                       "': the file was edited or damaged since; run the world again");
+    }
     ModelCurve& curve = curve_of(curves, model.cell(variant));
     curve.x.push_back(*size);
     curve.y.push_back(model.number(value));

@@ -21,8 +21,9 @@ struct ModelCurve {
 std::vector<ModelCurve> model_curves(const std::filesystem::path& model_csv,
                                      const std::string& quantity, const StepFilter& keep = {});
 
-// Every "<prefix><number>" quantity (at any one step), x the number, one curve per variant.
+// Every "<prefix><m>" quantity (at any one step), x the number m, one curve per variant;
+// InputError for an m that is not a whole number from 2 to `largest`.
 std::vector<ModelCurve> model_curves_by_suffix(const std::filesystem::path& model_csv,
-                                               const std::string& prefix);
+                                               const std::string& prefix, int largest);
 
 }  // namespace swarmagg

@@ -22,7 +22,8 @@ constexpr double kDrawnAggregates = 0.01;
 void draw_final_sizes(const RunFiles& run, const FigureFiles& files) {
   const std::vector<std::vector<int>>& sizes = run.final_sizes;
   std::vector<ModelCurve> model;
-  if (run.model) model = model_curves_by_suffix(*run.model, kAggregatesOfSize);
+  if (run.model)
+    model = model_curves_by_suffix(*run.model, kAggregatesOfSize, run.world.robots.count);
   int largest = 2;
   for (const auto& replicate : sizes) {
     for (const int m : replicate) largest = std::max(largest, m);

@@ -12,13 +12,18 @@ bool gnuplot_available() {
   return !find_gnuplot().empty();
 }
 
+// Single quotes: gnuplot runs the text between backquotes as a shell command anywhere on a
+// line but inside single-quoted strings, and a world's name, a --set value or a model.csv
+// cell reaches the titles. A line break would end the command, so control characters become
+// spaces.
 std::string gnuplot_quote(const std::string& text) {
-  std::string quoted = "\"";
+  std::string quoted = "'";
   for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
+    if (c == '\'') quoted += '\'';
+    const bool control = static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    quoted += control ? ' ' : c;
   }
-  return quoted + "\"";
+  return quoted + "'";
 }
 
 void run_gnuplot(const std::filesystem::path& script_path, const std::string& script) {

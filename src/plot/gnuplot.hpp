@@ -17,7 +17,7 @@ bool gnuplot_available();
 // is written and queued instead, and the batch draws it (plot/gnuplot_batch.hpp).
 void run_gnuplot(const std::filesystem::path& script_path, const std::string& script);
 
-// Quotes text for a gnuplot string literal ("...").
+// Quotes text for a gnuplot string literal ('...'), never substituted or run.
 std::string gnuplot_quote(const std::string& text);
 
 }  // namespace swarmagg

@@ -171,7 +171,7 @@ TEST(ModelTable, CurvesOfAQuantityOrAPrefixPerVariantInFileOrder) {
   ASSERT_EQ(later.size(), 2u);
   EXPECT_THAT(later[0].x, ElementsAre(1.0));
   EXPECT_THAT(later[1].y, ElementsAre(3.0));
-  const std::vector<ModelCurve> sizes = model_curves_by_suffix(file, "aggregates:");
+  const std::vector<ModelCurve> sizes = model_curves_by_suffix(file, "aggregates:", 3);
   ASSERT_EQ(sizes.size(), 1u);
   EXPECT_THAT(sizes[0].x, ElementsAre(2.0, 3.0));
   EXPECT_THAT(sizes[0].y, ElementsAre(1.5, 0.25));
@@ -183,9 +183,25 @@ TEST(ModelTable, ASizeSuffixThatIsNoNumberNamesItsLine) {
                             "model,variant,step,time,quantity,value\n"
                             "bayindir,original,10,,aggregates:2,1.5\n"
                             "bayindir,original,10,,aggregates:two,0.25\n");
-  EXPECT_THAT([&] { model_curves_by_suffix(file, "aggregates:"); },
+  EXPECT_THAT([&] { model_curves_by_suffix(file, "aggregates:", 10); },
               ::testing::ThrowsMessage<InputError>(
                   AllOf(HasSubstr(file.string() + ":3"), HasSubstr("'aggregates:two'"))));
+}
+
+// A size no run of the world can have would size what draws it: a billion, say.
+TEST(ModelTable, ASizeSuffixBeyondTheWorldsAgentsIsRefused) {
+  const testing::ScratchDir dir("csv-table");
+  for (const char* size : {"11", "1", "2.5", "1000000000"}) {
+    const auto file = written(dir, std::string("model,variant,step,time,quantity,value\n"
+                                               "bayindir,original,10,,aggregates:2,1.5\n"
+                                               "bayindir,original,10,,aggregates:") +
+                                       size + ",0.25\n");
+    EXPECT_THAT([&] { model_curves_by_suffix(file, "aggregates:", 10); },
+                ::testing::ThrowsMessage<InputError>(AllOf(
+                    HasSubstr(file.string() + ":3"),
+                    HasSubstr("expected aggregates:<m> with m a whole number from 2 to 10"))))
+        << size;
+  }
 }
 
 }  // namespace

@@ -597,4 +597,23 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
   std::filesystem::remove_all(redrawn);
 }
 
+// A run folder's texts reach the plots' titles: gnuplot runs text between backquotes, and a
+// line break would start a command of its own. Plotting a folder someone else made must not
+// run anything.
+TEST(Cli, PlotTitlesNeverRunTheTextTheyShow) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  const auto run = temp_dir("plot-quoted");
+  ASSERT_EQ(swarmagg(kTinyRun + std::string("--no-plots --out ") + run.string()).exit_code, 0);
+  const auto ran = run / "ran-a-command";
+  nlohmann::json summary = nlohmann::json::parse(file_text(run / "summary.json"));
+  summary["overrides"] = {"x=`touch " + ran.string() + "`", "y=1\n!touch " + ran.string() + "\n",
+                          "z='quoted'"};
+  std::ofstream(run / "summary.json", std::ios::trunc) << summary.dump();
+  const Outcome plotted = swarmagg("plot " + run.string());
+  EXPECT_EQ(plotted.exit_code, 0) << plotted.output;
+  EXPECT_FALSE(std::filesystem::exists(ran));
+  EXPECT_THAT(file_text(run / "plots" / "noa.gp"), HasSubstr("z=''quoted''"));
+  std::filesystem::remove_all(run);
+}
+
 }  // namespace
