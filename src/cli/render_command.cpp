@@ -36,6 +36,19 @@ struct RenderCommandOptions {
   bool quiet = false;
 };
 
+// The stored rows are the world's: one every run.trajectories steps, from step 0 to its last.
+void check_stored_rows(const TrajectoryReader& reader, const WorldSpec& spec,
+                       const std::filesystem::path& file, std::int64_t rows) {
+  const std::int64_t expected = trajectory_layout::stored_rows(spec.steps(), reader.every());
+  if (reader.every() == spec.run.trajectories && rows == expected) return;
+  throw InputError(
+      file.string() + ": " + std::to_string(rows) + " rows every " +
+      std::to_string(reader.every()) + " steps, but its world stores " +
+      std::to_string(trajectory_layout::stored_rows(spec.steps(), spec.run.trajectories)) +
+      " every run.trajectories = " + std::to_string(spec.run.trajectories) +
+      " steps (the file is damaged)");
+}
+
 int render_command(const RenderCommandOptions& options) {
   if (options.fps && options.video.empty()) throw InputError("--fps needs --video FILE");
   const std::filesystem::path file =
@@ -57,6 +70,7 @@ int render_command(const RenderCommandOptions& options) {
   }
   const int replicate = options.replicate.value_or(spec.render.replicate);
   const std::vector<std::int64_t> steps = reader.steps(replicate);
+  check_stored_rows(reader, spec, file, static_cast<std::int64_t>(steps.size()));
   const std::filesystem::path folder = options.out.empty()
                                            ? std::filesystem::path(options.run_dir) / "frames"
                                            : std::filesystem::path(options.out);

@@ -23,6 +23,19 @@ std::string shape_text(const std::vector<std::int64_t>& shape) {
 
 }  // namespace
 
+// HDF5's own failures (a damaged chunk, a dataset that will not open) name neither the file
+// nor what was read; bad input, not a fault of swarmagg's.
+template <typename Read>
+auto TrajectoryReader::reading(const std::string& what, Read read) const {
+  try {
+    return read();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(path_.string() + ": " + what + ": " + e.what() + " (the file is damaged)");
+  }
+}
+
 TrajectoryReader::TrajectoryReader(const std::filesystem::path& path) : path_(path) {
   if (!std::filesystem::is_regular_file(path)) {
     throw InputError(path.string() +
@@ -91,23 +104,38 @@ h5::Handle TrajectoryReader::replicate_group(int replicate) const {
 
 std::vector<std::int64_t> TrajectoryReader::steps(int replicate) const {
   std::lock_guard lock(h5::hdf5_lock());
-  const h5::Handle group = replicate_group(replicate);
-  const h5::Handle steps = h5::open_dataset(group, "step");
-  std::vector<std::int64_t> values;
-  h5::read_rows(steps, 0, h5::dataset_shape(steps)[0], values);
+  const std::string name = layout::group_name(replicate) + "/step";
+  std::vector<std::int64_t> values = reading(name, [&] {
+    const h5::Handle group = replicate_group(replicate);
+    const h5::Handle steps = h5::open_dataset(group, "step");
+    std::vector<std::int64_t> read;
+    h5::read_rows(steps, 0, h5::dataset_shape(steps)[0], read);
+    return read;
+  });
+  // Rows are stored every `every` steps from step 0: a step off that grid would be drawn (or
+  // skipped) as another.
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (values[i] == static_cast<std::int64_t>(i) * every_) continue;
+    throw InputError(path_.string() + ": " + name + ": row " + std::to_string(i) + " is step " +
+                     std::to_string(values[i]) + ", expected " +
+                     std::to_string(static_cast<std::int64_t>(i) * every_) +
+                     " (rows every 'every' steps from 0; the file is damaged)");
+  }
   return values;
 }
 
 void TrajectoryReader::read(int replicate, std::int64_t row, TrajectoryRow& out) const {
   std::lock_guard lock(h5::hdf5_lock());
-  const h5::Handle group = replicate_group(replicate);
-  h5::read_rows(h5::open_dataset(group, "step"), row, 1, step_);
-  h5::read_rows(h5::open_dataset(group, "time"), row, 1, time_);
-  h5::read_rows(h5::open_dataset(group, "x"), row, 1, x_);
-  h5::read_rows(h5::open_dataset(group, "y"), row, 1, y_);
-  h5::read_rows(h5::open_dataset(group, "heading"), row, 1, out.heading);
-  h5::read_rows(h5::open_dataset(group, "state"), row, 1, state_);
-  h5::read_rows(h5::open_dataset(group, "aggregate"), row, 1, out.aggregate);
+  reading(layout::group_name(replicate) + " row " + std::to_string(row), [&] {
+    const h5::Handle group = replicate_group(replicate);
+    h5::read_rows(h5::open_dataset(group, "step"), row, 1, step_);
+    h5::read_rows(h5::open_dataset(group, "time"), row, 1, time_);
+    h5::read_rows(h5::open_dataset(group, "x"), row, 1, x_);
+    h5::read_rows(h5::open_dataset(group, "y"), row, 1, y_);
+    h5::read_rows(h5::open_dataset(group, "heading"), row, 1, out.heading);
+    h5::read_rows(h5::open_dataset(group, "state"), row, 1, state_);
+    h5::read_rows(h5::open_dataset(group, "aggregate"), row, 1, out.aggregate);
+  });
   out.step = step_[0];
   out.time = time_[0];
   out.positions.resize(x_.size());
@@ -119,6 +147,16 @@ void TrajectoryReader::read(int replicate, std::int64_t row, TrajectoryRow& out)
                        " out of range at row " + std::to_string(row));
     }
     out.states[i] = static_cast<AgentState>(state_[i]);
+  }
+  // Aggregates have two members or more: ids run from 0 below N / 2 (-1: in none). Another id
+  // would size what draws the aggregates.
+  const auto aggregates = static_cast<std::int32_t>(agents_ / 2);
+  for (const std::int32_t id : out.aggregate) {
+    if (id >= -1 && id < aggregates) continue;
+    throw InputError(path_.string() + ": aggregate id " + std::to_string(id) +
+                     " out of range at row " + std::to_string(row) + " (expected -1 to " +
+                     std::to_string(aggregates - 1) + " for " + std::to_string(agents_) +
+                     " agents; the file is damaged)");
   }
   const auto largest = std::max_element(out.aggregate.begin(), out.aggregate.end());
   out.noa = largest == out.aggregate.end() ? 0 : std::max(0, *largest + 1);

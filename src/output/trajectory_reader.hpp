@@ -42,6 +42,9 @@ class TrajectoryReader {
   // The replicate's group, its datasets' shapes checked (InputError naming what is wrong).
   h5::Handle replicate_group(int replicate) const;
   void check_shapes(const h5::Handle& group, int replicate) const;
+  // read(), HDF5's failures turned into InputError naming the file and `what`.
+  template <typename Read>
+  auto reading(const std::string& what, Read read) const;
 
   std::filesystem::path path_;
   h5::Handle file_;

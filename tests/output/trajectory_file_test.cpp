@@ -1,6 +1,7 @@
 // trajectories.h5 written by TrajectoryWriter reads back exactly through TrajectoryReader,
 // in the same bytes whatever order the replicates ran in; without commit() nothing is left;
 // misuse is refused.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -267,6 +268,25 @@ TEST(TrajectoryFile, ReaderRefusesDamagedFilesNamingWhatIsWrong) {
             name +
                 ": attribute 'every' is 0: expected a positive whole number (the file is "
                 "damaged)");
+  // An aggregate id no run of 5 agents has (at most 2 aggregates) would size what draws them.
+  write(file);
+  damage(file, [&](hid_t h5) {
+    std::vector<std::int32_t> ids(6 * 5, -1);
+    ids[3] = 1000000000;
+    const hid_t dataset = H5Dopen2(h5, "replicate_0/aggregate", H5P_DEFAULT);
+    H5Dwrite(dataset, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data());
+    H5Dclose(dataset);
+  });
+  EXPECT_EQ(error_of(file, 0), name +
+                                   ": aggregate id 1000000000 out of range at row 0 (expected -1 "
+                                   "to 1 for 5 agents; the file is damaged)");
+  // Rows every 3 steps, says the attribute; the steps stored are every 4.
+  write(file);
+  damage(file, [&](hid_t h5) { set_attribute(h5, "every", 3); });
+  EXPECT_THAT([&] { (void)TrajectoryReader(file).steps(0); },
+              ::testing::ThrowsMessage<InputError>(
+                  name + ": replicate_0/step: row 1 is step 4, expected 3 (rows every 'every' "
+                         "steps from 0; the file is damaged)"));
   fs::remove_all(dir);
 }
 
