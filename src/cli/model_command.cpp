@@ -64,12 +64,23 @@ std::string measured_start_note(const MeasuredTerms& terms, const std::string& r
   return text.str();
 }
 
+// Errors of an earlier model must not stay beside this one; a summary that cannot be
+// rewritten has none to keep.
+void remove_stale_model_errors(const std::filesystem::path& out) {
+  try {
+    remove_model_errors(out);
+  } catch (const std::exception& e) {
+    std::cerr << "warning: " << e.what() << "\n";
+  }
+}
+
 // In a run's folder, summary.json's model errors describe the model beside the run: the one
 // just written, not an earlier model's (which may list a variant this one has not), nor none
 // (a run stopped before its model, or run with --no-model). A model of another run (its
 // length, recorded steps or replicates differ: the errors and noise floors would compare
-// unlike things) leaves none. Returns what was done, for the user; a damaged summary is a
-// warning, since the model itself was written.
+// unlike things) leaves none, and says so even under --quiet (errors left out). Returns what
+// was done otherwise, for the user; a damaged run is a warning, since the model itself was
+// written, and the earlier errors go with it when they can.
 std::optional<std::string> update_run_model_errors(const std::filesystem::path& out,
                                                    const WorldSpec& spec) {
   if (!holds_complete_run(out)) return std::nullopt;
@@ -83,13 +94,15 @@ std::optional<std::string> update_run_model_errors(const std::filesystem::path& 
     }
     remove_model_errors(out);
     const WorldSpec run = load_world_text(resolved, (out / "world.resolved.yaml").string());
-    return "the run in " + out.string() + "/ is another run (" + differences_text(differences) +
-           "): its summary.json keeps no model_errors; `" +
-           rates_and_model_commands(out, run.model.initial_state == InitialState::Measured) +
-           "` gives them";
+    std::cerr << "note: the run in " << out.string() << "/ is another run ("
+              << differences_text(differences) << "): its summary.json keeps no model_errors; `"
+              << rates_and_model_commands(out, run.model.initial_state == InitialState::Measured)
+              << "` gives them\n";
+    return std::nullopt;
   } catch (const InputError& e) {
     std::cerr << "warning: the model is written, but not its errors in the run's summary.json: "
               << e.what() << "\n";
+    remove_stale_model_errors(out);
     return std::nullopt;
   }
 }

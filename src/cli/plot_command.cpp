@@ -24,8 +24,9 @@ struct PlotCommandOptions {
 void refuse_anothers_plots(const std::filesystem::path& folder, const std::filesystem::path& out) {
   std::error_code error;
   if (std::filesystem::equivalent(folder, out, error)) return;
-  for (const auto& [marker, what] : {std::pair{"world.resolved.yaml", "a run"},
-                                     std::pair{kSweepSummaryFile, "a merged sweep"}}) {
+  for (const auto& [marker, what] :
+       {std::pair{"world.resolved.yaml", "a run"}, std::pair{kSweepSummaryFile, "a merged sweep"},
+        std::pair{"compare.json", "a comparison"}, std::pair{"sweep.json", "a sweep"}}) {
     if (!std::filesystem::exists(out / marker, error)) continue;
     throw InputError("--out " + out.string() + "/ holds " + what + " (" + marker +
                      "): its plots would be replaced by those of " + folder.string() +

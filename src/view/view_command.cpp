@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -137,6 +138,9 @@ bool parse_view_command(std::string_view line, const std::string& where, ViewCom
 }
 
 std::vector<ViewCommand> read_view_script(const std::string& path) {
+  // A folder opens as a stream that reads nothing: it would be an empty script.
+  if (std::filesystem::is_directory(path))
+    throw InputError(path + ": is a folder; expected a script of view commands");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot read the script");
   std::vector<ViewCommand> commands;
@@ -149,6 +153,7 @@ std::vector<ViewCommand> read_view_script(const std::string& path) {
       commands.push_back(std::move(command));
     }
   }
+  if (in.bad()) throw InputError(path + ": cannot read the script");
   return commands;
 }
 

@@ -37,6 +37,13 @@ std::filesystem::path temp_dir(const std::string& name) {
   return dir;
 }
 
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 TEST(Cli, HelpWorksForEverySubcommand) {
   EXPECT_EQ(swarmagg("--help").exit_code, 0);
   for (const char* sub : {"run", "validate"}) {
@@ -374,6 +381,22 @@ TEST(Cli, ModelIntoARunFolderUpdatesItsModelErrors) {
   ASSERT_EQ(other.exit_code, 0) << other.output;
   EXPECT_THAT(other.output, HasSubstr("is another run (run.replicates: 2 there, 4 here)"));
   EXPECT_THAT(variants(), ::testing::IsEmpty());
+  // --quiet keeps the notes on outputs left out.
+  const Outcome quiet = swarmagg(
+      "model worlds/examples/demo.yaml --set run.duration=30 --quiet "
+      "--out " +
+      out.string());
+  EXPECT_THAT(quiet.output, HasSubstr("note: the run in " + out.string() + "/ is another run"));
+  // Errors the model cannot be compared with (the run's time series cut short) do not leave
+  // the earlier model's errors in their place.
+  ASSERT_EQ(swarmagg("model " + world + "--out " + out.string()).exit_code, 0);
+  ASSERT_THAT(variants(), ::testing::Not(::testing::IsEmpty()));
+  const std::string series = file_text(out / "timeseries.csv");
+  std::ofstream(out / "timeseries.csv", std::ios::trunc) << series.substr(0, series.size() / 2);
+  const Outcome cut = swarmagg("model " + world + "--set model.kappa=paper --out " + out.string());
+  EXPECT_EQ(cut.exit_code, 0) << cut.output;
+  EXPECT_THAT(cut.output, HasSubstr("warning: the model is written, but not its errors"));
+  EXPECT_THAT(variants(), ::testing::IsEmpty());
   std::filesystem::remove_all(out);
 }
 
@@ -471,13 +494,6 @@ TEST(Cli, RenderDirKeepsQuotesAndBackslashes) {
   EXPECT_EQ(swarmagg::load_world((out / "world.resolved.yaml").string()).render.dir,
             frames.string());
   std::filesystem::remove_all(out);
-}
-
-std::string file_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 int occurrences(const std::string& text, const std::string& part) {

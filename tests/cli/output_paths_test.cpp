@@ -158,6 +158,13 @@ TEST_F(OutputPaths, PlotRefusesToReplaceAnotherRunsPlotsUnlessForced) {
                  "holds a run (world.resolved.yaml)");
   EXPECT_EQ(swarmagg::testing::read_all(dir_ / "b" / "noa.png"), "b's own plot\n");
   EXPECT_FALSE(fs::exists(dir_ / "b" / "plots"));
+  // A comparison's folder has a noa.png of its own, drawn from both engines.
+  fs::create_directories(dir_ / "compared");
+  std::ofstream(dir_ / "compared" / "compare.json") << "{}\n";
+  std::ofstream(dir_ / "compared" / "noa.png") << "both engines\n";
+  expect_refused(swarmagg(plot + "--out " + (dir_ / "compared").string()), "--out",
+                 "holds a comparison (compare.json)");
+  EXPECT_EQ(swarmagg::testing::read_all(dir_ / "compared" / "noa.png"), "both engines\n");
   if (swarmagg::gnuplot_available()) {
     EXPECT_EQ(swarmagg(plot + "--out " + (dir_ / "a").string()).exit_code, 0);  // its own
     EXPECT_EQ(swarmagg(plot + "--out " + (dir_ / "b").string() + " --force").exit_code, 0);

@@ -88,6 +88,14 @@ TEST(ViewCommand, ReadsAScriptFileLineByLine) {
     EXPECT_NE(std::string(e.what()).find("s.txt:2"), std::string::npos) << e.what();
   }
   EXPECT_THROW(read_view_script((dir / "missing.txt").string()), InputError);
+  // A folder reads as nothing: it would run as an empty script.
+  try {
+    read_view_script(dir.string());
+    FAIL() << "a folder must throw";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              dir.string() + ": is a folder; expected a script of view commands");
+  }
 }
 
 }  // namespace
