@@ -5,6 +5,7 @@
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot_batch.hpp"
 #include "plot/gnuplot_process.hpp"
+#include "plot/staged_script.hpp"
 
 namespace swarmagg {
 
@@ -29,16 +30,18 @@ std::string gnuplot_quote(const std::string& text) {
 void run_gnuplot(const std::filesystem::path& script_path, const std::string& script) {
   write_file_atomic(script_path, script);
   if (GnuplotBatch* batch = GnuplotBatch::open_on_this_thread()) {
-    batch->queue(script_path);
+    batch->queue(StagedScript(script_path, script));
     return;
   }
   if (find_gnuplot().empty()) throw std::runtime_error(gnuplot_missing_message(script_path));
+  StagedScript staged(script_path, script);
   const GnuplotExit exit = run_gnuplot_process(
-      script_path.filename(),
+      staged.to_run().filename(),
       script_path.parent_path().empty() ? std::filesystem::path(".") : script_path.parent_path());
   if (!exit.succeeded) {
     throw std::runtime_error("gnuplot failed on " + script_path.string() + ":\n" + exit.messages);
   }
+  staged.commit();
 }
 
 }  // namespace swarmagg

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <system_error>
 
 #include "output/temporary_directory.hpp"
 #include "plot/gnuplot.hpp"
@@ -16,10 +17,10 @@ thread_local GnuplotBatch* open_batch = nullptr;
 
 // Loads each script from its own folder, closes its PNG and forgets its settings, as if
 // gnuplot had been started afresh for it.
-std::string batch_commands(const std::vector<std::filesystem::path>& scripts) {
+std::string batch_commands(const std::vector<StagedScript>& scripts) {
   std::string commands;
-  for (const std::filesystem::path& script : scripts) {
-    const auto absolute = std::filesystem::absolute(script);
+  for (const StagedScript& script : scripts) {
+    const auto absolute = std::filesystem::absolute(script.to_run());
     commands += "cd " + gnuplot_quote(absolute.parent_path().string()) + "\n";
     commands += "load " + gnuplot_quote(absolute.filename().string()) + "\n";
     commands += "unset output\nreset session\n";
@@ -57,6 +58,15 @@ std::filesystem::path folder_of(const std::filesystem::path& script) {
   return script.parent_path().empty() ? std::filesystem::path(".") : script.parent_path();
 }
 
+// A drawn script's PNGs replace the earlier ones; one that cannot be written is its failure.
+void commit(StagedScript& script, std::vector<GnuplotFailure>& failures) {
+  try {
+    script.commit();
+  } catch (const std::system_error& e) {
+    failures.push_back({script.script(), e.what()});
+  }
+}
+
 }  // namespace
 
 GnuplotBatch::GnuplotBatch() : hidden_(open_batch) {
@@ -71,24 +81,32 @@ GnuplotBatch* GnuplotBatch::open_on_this_thread() {
   return open_batch;
 }
 
-void GnuplotBatch::queue(const std::filesystem::path& script) {
-  scripts_.push_back(script);
+void GnuplotBatch::queue(StagedScript script) {
+  scripts_.push_back(std::move(script));
 }
 
 std::vector<GnuplotFailure> GnuplotBatch::draw() {
-  const std::vector<std::filesystem::path> scripts = std::move(scripts_);
+  std::vector<StagedScript> scripts = std::move(scripts_);
   scripts_.clear();
   if (scripts.empty()) return {};
-  if (find_gnuplot().empty()) throw std::runtime_error(gnuplot_missing_message(scripts.front()));
+  if (find_gnuplot().empty())
+    throw std::runtime_error(gnuplot_missing_message(scripts.front().script()));
+  std::vector<GnuplotFailure> failures;
   {
     const CommandFile commands(batch_commands(scripts));
-    if (run_gnuplot_process(commands.path(), folder_of(scripts.front())).succeeded) return {};
+    if (run_gnuplot_process(commands.path(), folder_of(scripts.front().to_run())).succeeded) {
+      for (StagedScript& script : scripts) commit(script, failures);
+      return failures;
+    }
   }
-  std::vector<GnuplotFailure> failures;
-  for (const std::filesystem::path& script : scripts) {
-    const GnuplotExit exit = run_gnuplot_process(script.filename(), folder_of(script));
-    if (!exit.succeeded) {
-      failures.push_back({script, "gnuplot failed on " + script.string() + ":\n" + exit.messages});
+  for (StagedScript& script : scripts) {
+    const GnuplotExit exit =
+        run_gnuplot_process(script.to_run().filename(), folder_of(script.to_run()));
+    if (exit.succeeded) {
+      commit(script, failures);
+    } else {
+      failures.push_back({script.script(),
+                          "gnuplot failed on " + script.script().string() + ":\n" + exit.messages});
     }
   }
   return failures;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "plot/staged_script.hpp"
+
 namespace swarmagg {
 
 struct GnuplotFailure {
@@ -23,7 +25,7 @@ class GnuplotBatch {
   GnuplotBatch& operator=(const GnuplotBatch&) = delete;
 
   static GnuplotBatch* open_on_this_thread();
-  void queue(const std::filesystem::path& script);
+  void queue(StagedScript script);
 
   // Draws the queued scripts and empties the queue. When the shared process fails, each
   // script is drawn on its own, so every failure names its script and the others are drawn.
@@ -33,7 +35,7 @@ class GnuplotBatch {
   void draw_or_throw();
 
  private:
-  std::vector<std::filesystem::path> scripts_;
+  std::vector<StagedScript> scripts_;
   GnuplotBatch* hidden_;
 };
 

@@ -86,6 +86,32 @@ TEST(GnuplotBatch, AFailingScriptIsNamedAndTheOthersAreDrawn) {
       std::runtime_error);
 }
 
+// gnuplot empties a PNG when its script names it: a script that then fails would leave an
+// empty plot where a good one was. The plot is the earlier one or the new one, whole, and
+// nothing hidden stays beside it.
+TEST(GnuplotBatch, AFailedScriptLeavesTheEarlierPlotWhole) {
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const auto folder = fresh_folder("atomic");
+  write_data(folder);
+  run_gnuplot(folder / "first.gp", first_script());
+  const std::string earlier = bytes_of(folder / "first.png");
+  ASSERT_TRUE(png_size(folder / "first.png").has_value());
+  const std::string failing = png_preamble(PlotSize{100, 100}, "first.png", "failing") +
+                              "plot 'no-such-file.csv' using 1:2\n";
+  EXPECT_THROW(run_gnuplot(folder / "failing.gp", failing), std::runtime_error);
+  EXPECT_EQ(bytes_of(folder / "first.png"), earlier);
+  {
+    GnuplotBatch batch;
+    run_gnuplot(folder / "failing.gp", failing);
+    EXPECT_EQ(batch.draw().size(), 1u);
+  }
+  EXPECT_EQ(bytes_of(folder / "first.png"), earlier);
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+  // The script the user keeps names the PNG itself, to be run again by hand.
+  EXPECT_NE(bytes_of(folder / "failing.gp").find("set output 'first.png'"), std::string::npos);
+}
+
 TEST(GnuplotBatch, ABatchClosedUndrawnLeavesTheScriptsAndDrawsNothing) {
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
   const auto folder = fresh_folder("undrawn");

@@ -129,7 +129,7 @@ TEST_F(ReproduceTest, EveryFigureIsAPngOfTheRequestedSizeWithItsScriptBesideItsC
     const std::string script = read_text(plots / (r.figure.id + ".gp"));
     const auto csv = script.find(r.figure.id + "-");
     ASSERT_NE(csv, std::string::npos) << script;
-    const std::string csv_name = script.substr(csv, script.find('"', csv) - csv);
+    const std::string csv_name = script.substr(csv, script.find('\'', csv) - csv);
     EXPECT_TRUE(std::filesystem::exists(plots / csv_name)) << csv_name;
   }
 }
