@@ -134,11 +134,15 @@ RunOutput run(const World& world, std::optional<py::object> replicates,
   add_argument(overrides, "run.threads", threads, "threads");
   const World ran = with_overrides(world, overrides);
   // Results stay in memory: a world asking for files would otherwise be ignored in silence.
+  // Named at the caller's line (swarmagg.run or swarmagg.rates calls this one), so that each
+  // call site warns, as Python's filters expect.
   if (ran.spec->run.trajectories > 0 || ran.spec->render.every > 0) {
     py::module_::import("warnings")
         .attr("warn")(
-            "run() stores no trajectories and draws no frames (run.trajectories, render.every): "
-            "`swarmagg run` writes them, and a Simulation shows every step's state");
+            "run() and rates() store no trajectories and draw no frames "
+            "(run.trajectories, render.every): `swarmagg run` writes them, and a "
+            "Simulation shows every step's state",
+            py::none(), 2);
   }
   MeasuredRun result =
       call_interruptibly([&] { return run_world_measuring(*ran.spec, RunOptions{}, rates); });

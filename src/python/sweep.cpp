@@ -13,6 +13,8 @@
 #include "python/bindings.hpp"
 #include "python/errors.hpp"
 #include "python/interruptible.hpp"
+#include "python/python_text.hpp"
+#include "python/world.hpp"
 #include "sweep/sweep_loader.hpp"
 #include "sweep/sweep_merge.hpp"
 #include "sweep/sweep_runner.hpp"
@@ -22,27 +24,22 @@ namespace py = pybind11;
 namespace swarmagg::python {
 namespace {
 
-// A path as Python names it: the file system's encoding, undecodable bytes as surrogates
-// (os.fsdecode), so that any path the system allows comes back as the path given.
-py::str python_path(const std::filesystem::path& path) {
-  const std::string& bytes = path.native();
-  return py::reinterpret_steal<py::str>(
-      PyUnicode_DecodeFSDefaultAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size())));
-}
-
 // Paths as filesystem paths (str, bytes or os.PathLike, any bytes the system allows), not
 // UTF-8 text.
 py::dict sweep(const std::filesystem::path& path, std::optional<std::filesystem::path> out,
-               int threads, bool force) {
+               const py::object& threads_given, bool force) {
+  // An integer as run()'s threads is (a bool is a TypeError), checked for range here.
+  const YAML::Node threads_node = yaml_index(threads_given, "threads");
+  const auto threads = threads_node.as<long long>(-1);
   if (threads < 0 || threads > 1024)  // as run.threads and the CLI's sweep --threads
-    throw InputError("threads: expected 0 (all cores) to 1024, got " + std::to_string(threads));
+    throw InputError("threads: expected 0 (all cores) to 1024, got " + threads_node.Scalar());
   // An empty path would be the working folder, holding the runs before anything refused it.
   if (out && out->empty()) throw InputError("out: expected a path, got ''");
   const SweepPlan plan = reading_file([&] { return load_sweep(path.string()); });
   SweepOptions options;
   options.out = out ? *out : std::filesystem::path("runs") / plan.name;
   check_output_folder(options.out, out ? "out" : "the sweep folder");
-  options.threads = threads;
+  options.threads = static_cast<int>(threads);
   options.replace_outdated = force;
   MergeReport merged;
   const SweepReport report = call_interruptibly([&] {
@@ -68,8 +65,9 @@ py::dict sweep(const std::filesystem::path& path, std::optional<std::filesystem:
 }  // namespace
 
 void bind_sweep(py::module_& module) {
-  module.def("sweep", &sweep, py::arg("path"), py::arg("out") = py::none(), py::arg("threads") = 0,
-             py::arg("force") = false, "Runs and merges a sweep (see swarmagg.sweep).");
+  module.def("sweep", &sweep, py::arg("path"), py::arg("out") = py::none(),
+             py::arg("threads") = py::int_(0), py::arg("force") = false,
+             "Runs and merges a sweep (see swarmagg.sweep).");
 }
 
 }  // namespace swarmagg::python

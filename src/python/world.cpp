@@ -12,6 +12,7 @@
 #include "config/world_writer.hpp"
 #include "python/bindings.hpp"
 #include "python/errors.hpp"
+#include "python/python_text.hpp"
 
 namespace py = pybind11;
 
@@ -59,6 +60,18 @@ bool is_numpy(py::handle value) {
   return py::hasattr(value, "dtype") && py::hasattr(value, "tolist");
 }
 
+// The Python value of a numpy scalar or array. numpy's long double is its own tolist(): it is
+// read as the float it rounds to; a long double complex has no value a world key takes.
+py::object python_value_of_numpy(py::handle value, const std::string& key) {
+  py::object plain = value.attr("tolist")();
+  if (!is_numpy(plain)) return plain;
+  const std::string kind = py::str(plain.attr("dtype").attr("kind"));
+  if (kind == "f") return py::float_(py::reinterpret_borrow<py::object>(plain));
+  if (kind != "c") return plain;  // an object array's element: followed, as far as the guard
+  throw py::type_error("set['" + key + "']: expected a bool, int, float, str, None or a list " +
+                       "of them, got numpy " + std::string(py::str(plain.attr("dtype"))));
+}
+
 // A Python value as the YAML value of a world key: bool, int, float, str, None and lists of
 // them (numpy scalars and arrays through .tolist()). A str is what a quoted scalar of a world file
 // would be; an int beyond 64 bits is refused here, naming the key.
@@ -71,13 +84,13 @@ YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
   if (py::isinstance<py::bool_>(value)) return YAML::Node(value.cast<bool>());
   if (py::isinstance<py::int_>(value)) return yaml_integer(value, "set['" + key + "']");
   if (py::isinstance<py::float_>(value)) return yaml_float(value.cast<double>());
-  if (py::isinstance<py::str>(value)) return YAML::Node(value.cast<std::string>());
+  if (py::isinstance<py::str>(value)) return YAML::Node(utf8_text(value, "set['" + key + "']"));
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     YAML::Node list(YAML::NodeType::Sequence);
     for (py::handle item : value) list.push_back(yaml_value(item, key, depth + 1));
     return list;
   }
-  if (is_numpy(value)) return yaml_value(value.attr("tolist")(), key, depth + 1);
+  if (is_numpy(value)) return yaml_value(python_value_of_numpy(value, key), key, depth + 1);
   throw py::type_error("set['" + key + "']: expected a bool, int, float, str, None or a list " +
                        "of them, got " +
                        py::str(py::type::of(value).attr("__name__")).cast<std::string>());
@@ -85,22 +98,24 @@ YAML::Node yaml_value(py::handle value, const std::string& key, int depth = 0) {
 
 // A `set` value as `--set` would have been written: booleans and None in YAML's words,
 // numbers and strings as Python prints them, lists in brackets.
-std::string value_text(py::handle value) {
-  if (is_numpy(value)) return value_text(value.attr("tolist")());
+std::string value_text(py::handle value, const std::string& key) {
+  if (is_numpy(value)) return value_text(python_value_of_numpy(value, key), key);
   if (value.is_none()) return "null";
   if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     std::string text = "[";
-    for (py::handle item : value) text += (text.size() > 1 ? ", " : "") + value_text(item);
+    for (py::handle item : value) text += (text.size() > 1 ? ", " : "") + value_text(item, key);
     return text + "]";
   }
-  return py::str(value).cast<std::string>();
+  return utf8_text(py::str(value), "set['" + key + "']");
 }
 
 std::vector<std::string> set_texts(const py::dict& set) {
   std::vector<std::string> texts;
-  for (const auto& [key, value] : set)
-    texts.push_back(py::str(key).cast<std::string>() + "=" + value_text(value));
+  for (const auto& [key, value] : set) {
+    const std::string path = utf8_text(key, "set");
+    texts.push_back(path + "=" + value_text(value, path));
+  }
   return texts;
 }
 
@@ -108,7 +123,7 @@ std::vector<WorldOverride> set_overrides(const py::dict& set) {
   std::vector<WorldOverride> overrides;
   for (const auto& [key, value] : set) {
     if (!py::isinstance<py::str>(key)) throw py::type_error("set: keys are world key paths (str)");
-    const std::string path = key.cast<std::string>();
+    const std::string path = utf8_text(key, "set: a key");
     overrides.emplace_back(path, yaml_value(value, path), "set");
   }
   return overrides;
@@ -127,7 +142,7 @@ std::string engine_name(const WorldSpec& spec) {
 
 // A world's pickle: its resolved YAML (to_yaml(), which loads back as the same world), the file
 // it came from and what `set` changed, so that a world reaches multiprocessing's workers.
-using WorldState = std::tuple<std::string, std::string, std::vector<std::string>>;
+using WorldState = std::tuple<std::string, std::filesystem::path, std::vector<std::string>>;
 
 WorldState world_state(const World& world) {
   return {world_to_yaml(*world.spec), world.spec->source, world.changes};
@@ -136,7 +151,7 @@ WorldState world_state(const World& world) {
 World world_from_state(const WorldState& state) {
   const auto& [yaml, source, changes] = state;
   return {std::make_shared<const WorldSpec>(
-              reading_file([&] { return load_world_text_with(yaml, source, {}); })),
+              reading_file([&] { return load_world_text_with(yaml, source.string(), {}); })),
           changes};
 }
 
@@ -156,6 +171,16 @@ void record_change(std::vector<std::string>& changes, const std::string& key,
 }
 
 }  // namespace
+
+std::string utf8_text(py::handle text, const std::string& what) {
+  Py_ssize_t size = 0;
+  const char* utf8 = PyUnicode_AsUTF8AndSize(text.ptr(), &size);
+  if (utf8 != nullptr) return {utf8, static_cast<std::size_t>(size)};
+  PyErr_Clear();
+  throw InputError(what + ": expected text that UTF-8 can hold, got " +
+                   std::string(py::str(py::repr(text))) +
+                   " (a name os.fsdecode made of bytes that are not UTF-8?)");
+}
 
 World with_overrides(const World& world, const std::vector<WorldOverride>& overrides) {
   if (overrides.empty()) return world;
@@ -180,7 +205,7 @@ void bind_world(py::module_& module) {
       .def_property_readonly(
           "name", [](const World& w) { return w.spec->name; }, "The world's name (str).")
       .def_property_readonly(
-          "source", [](const World& w) { return w.spec->source; },
+          "source", [](const World& w) { return python_path(w.spec->source); },
           "The file it was loaded from (str).")
       .def_property_readonly(
           "agents", [](const World& w) { return w.spec->robots.count; },

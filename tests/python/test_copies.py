@@ -3,7 +3,9 @@ never a crash (docs/python.md, "Copies and pickles"). What could crash runs in a
 interpreter, so that a crash fails its test and not the test run."""
 
 import copy
+import os
 import pickle
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -191,3 +193,14 @@ def test_a_world_run_again_names_every_change_once_with_the_value_used(world):
         "run.replicates=1"]
     # And the summary is the one of the run it names: the same command line's.
     assert sa.run(simulated, replicates=1).summary()["seed"] == 9
+
+
+def test_a_world_from_a_path_that_is_not_utf8_names_it_and_pickles(tmp_path):
+    folder = os.fsencode(tmp_path) + b"/d\xff"
+    os.makedirs(folder)
+    path = folder + b"/w.yaml"
+    shutil.copy(DEMO, path)
+    world = sa.load_world(path, set={"run.duration": 1})
+    assert world.source == os.fsdecode(path)
+    back = pickle.loads(pickle.dumps(world))
+    assert (back.source, back.to_yaml()) == (world.source, world.to_yaml())

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import swarmagg as sa
+from conftest import ROOT
 
 
 def test_a_bad_world_raises_world_error_naming_file_line_and_key(tmp_path):
@@ -104,9 +105,12 @@ def test_a_number_beyond_64_bits_is_a_value_error_naming_the_argument(demo):
 
 
 def test_a_run_of_a_world_asking_for_frames_or_trajectories_warns(demo):
+    """At the caller's line, so that each call site warns once under Python's filters."""
     world = sa.load_world(str(demo), set={"run.duration": 1, "run.trajectories": 5})
-    with pytest.warns(UserWarning, match="stores no trajectories and draws no frames"):
-        sa.run(world, replicates=1)
+    for call in (sa.run, sa.rates):
+        with pytest.warns(UserWarning, match="store no trajectories and draw no frames") as w:
+            call(world, replicates=1)
+        assert w[0].filename == __file__, w[0].filename
 
 
 def test_an_empty_set_key_suggests_nothing(demo):
@@ -206,3 +210,28 @@ def test_bytes_that_are_not_utf8_in_a_message_are_shown_escaped(tmp_path):
     path.write_bytes(b"name: caf\xe9\n")
     with pytest.raises(sa.WorldError, match=r"latin1\.yaml:1:7: name: .*caf\\xe9"):
         sa.load_world(path)
+
+
+def test_texts_that_utf8_cannot_hold_are_value_errors_naming_the_key(demo):
+    """os.fsdecode gives surrogates for bytes that are not UTF-8; no world key can hold them."""
+    undecodable = os.fsdecode(b"frames\xff")
+    with pytest.raises(sa.WorldError, match=r"set\['render.dir'\]: expected text that UTF-8"):
+        sa.load_world(str(demo), set={"render.dir": undecodable})
+    with pytest.raises(sa.WorldError, match="set: a key: expected text that UTF-8"):
+        sa.load_world(str(demo), set={"robots.c\udcffount": 5})
+
+
+def test_numpy_long_doubles_are_read_as_floats_and_complex_ones_refused(demo):
+    world = sa.load_world(str(demo), set={"controller.p_leave": np.longdouble(0.5)})
+    assert "p_leave: 0.5" in world.to_yaml()
+    with pytest.raises(TypeError, match="numpy complex"):
+        sa.load_world(str(demo), set={"controller.p_leave": np.clongdouble(0.5)})
+
+
+def test_sweep_threads_are_checked_as_run_threads_are(tmp_path):
+    with pytest.raises(TypeError, match="threads: expected an integer, got a bool"):
+        sa.sweep(ROOT / "examples" / "sweeps" / "p-leave-vs-count.yaml", tmp_path / "s",
+                 threads=True)
+    with pytest.raises(ValueError, match="threads: expected 0 .all cores. to 1024, got 1099511627776"):
+        sa.sweep(ROOT / "examples" / "sweeps" / "p-leave-vs-count.yaml", tmp_path / "s",
+                 threads=2**40)
