@@ -22,6 +22,7 @@ struct NoaTrend {
   bool stationary() const { return low <= kFlat && -kFlat <= high; }
 };
 
+// replicates == 0 (no trend) when the second half holds fewer than 2 recorded steps.
 NoaTrend second_half_trend(const StepSeries& noa);
 
 // value -> fraction of the recorded rows (all replicates pooled) that held it.

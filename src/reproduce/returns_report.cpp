@@ -39,6 +39,8 @@ std::string distribution_text(const std::map<int, double>& distribution) {
 }
 
 std::string trend_text(const NoaTrend& trend) {
+  // A second half of fewer than two recorded steps has no slope: neither stationary nor not.
+  if (trend.replicates == 0) return "not judged (fewer than 2 recorded steps in the second half)";
   return report_number(trend.change) + " [" + report_number(trend.low) + ", " +
          report_number(trend.high) + "] " +
          (!trend.stationary() ? "**trending**"
@@ -281,7 +283,9 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
     text += "- **" + w.name + "** (Fig " + r.figure.figures + "): ";
     if (returns.attempts == 0) {
       const ReturnSummary pairs = pooled_returns(r.rates, 2);
-      text += "only pairs left (" + returns_text(pairs) + " of their leavers came back). ";
+      text += pairs.attempts == 0
+                  ? "no agent tried to leave, so none came back. "
+                  : "only pairs left (" + returns_text(pairs) + " of their leavers came back). ";
     } else {
       text += returns_text(returns) +
               " LEAVE attempts from aggregates of 3 or more came back (mean time away " +

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/run_stationarity.hpp"
+#include "analysis/step_series.hpp"
+
 namespace swarmagg {
 namespace {
 
@@ -114,6 +117,25 @@ TEST(ReturnsReport, ARunWithEveryNoaFixedIsNotCalledStationary) {
   r.trend->frozen = 8;
   EXPECT_NE(soysal_distribution_section({r}).find("stationary, NOA constant in 8 of 10 replicates"),
             std::string::npos);
+  // A second half of fewer than 2 recorded steps has no slope: not judged, not stationary.
+  r.trend = second_half_trend(
+      StepSeries{.steps = {0, 10}, .times = {0.0, 1.0}, .values = {{0.0, 0.0}, {3.0, 4.0}}});
+  EXPECT_EQ(r.trend->replicates, 0);
+  const std::string table = soysal_distribution_section({r});
+  EXPECT_NE(table.find("not judged (fewer than 2 recorded steps in the second half)"),
+            std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("| stationary"), std::string::npos) << table;
+  EXPECT_EQ(table.find("] stationary"), std::string::npos) << table;
+}
+
+// A run in which nobody tried to leave has no leavers to come back: said so, not "0 / 0 (0)".
+TEST(ReturnsReport, ARunWithoutLeaveAttemptsSaysSo) {
+  FigureResult r = soysal_figure();
+  r.rates = {counted("join", 3, 100, 5.0)};
+  const std::string text = why_models_miss_section({r}, {});
+  EXPECT_NE(text.find("no agent tried to leave, so none came back"), std::string::npos) << text;
+  EXPECT_EQ(text.find("0 / 0"), std::string::npos) << text;
 }
 
 }  // namespace
