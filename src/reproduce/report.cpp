@@ -13,13 +13,26 @@
 namespace swarmagg {
 namespace {
 
-// The best of the paper's variants; the measured variant is judged in its own section.
+// The variant of lowest error (the measured variant is judged in its own section), and the
+// runner-up when the two differ by less than the larger of their noise floors: a difference
+// the simulation's own noise makes is no ranking.
 std::string best_of(const std::vector<VariantError>& errors) {
-  const VariantError* best = &errors.front();
+  const VariantError* best = nullptr;
+  const VariantError* second = nullptr;
   for (const VariantError& e : errors) {
-    if (e.error < best->error && e.variant != kMeasuredVariant) best = &e;
+    if (e.variant == kMeasuredVariant) continue;
+    if (!best || e.error < best->error) {
+      second = best;
+      best = &e;
+    } else if (!second || e.error < second->error) {
+      second = &e;
+    }
   }
-  return best->variant;
+  if (!best) return "-";
+  if (!second || !best->noise_floor || !second->noise_floor) return best->variant;
+  const double noise = std::max(*best->noise_floor, *second->noise_floor);
+  if (second->error - best->error >= noise) return best->variant;
+  return best->variant + " (within noise of " + second->variant + ")";
 }
 
 std::string most_likely(const Distribution& d) {

@@ -293,11 +293,11 @@ std::string why_models_miss_section(const std::vector<FigureResult>& results,
               report_number(100.0 * returning_share_of_joins(r.rates)) + " % of all joins. ";
     }
     const double spread = replicates_spread(r);
-    text += "Of the paper's variants, the one nearest its noise floor (" + best + ") is at " +
-            ratio_words(*errors, best, spread) + "; `returns` (q from the parameters) at " +
-            ratio_words(*errors, kReturnsVariant, spread) +
-            "; `measured` (measured q, new joins) at " +
-            ratio_words(*errors, kMeasuredVariant, spread) + ".";
+    text +=
+        "Of the variants without returns, the one nearest its noise floor (" + best + ") is at " +
+        ratio_words(*errors, best, spread) + "; `returns` (q from the parameters) at " +
+        ratio_words(*errors, kReturnsVariant, spread) + "; `measured` (measured q, new joins) at " +
+        ratio_words(*errors, kMeasuredVariant, spread) + ".";
     if (r.trend && !r.trend->stationary())
       text +=
           " The run was still trending over its second half, so no variant can be judged "

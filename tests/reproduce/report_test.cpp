@@ -83,3 +83,27 @@ TEST(Report, WhyTheModelsMissNamesNoMissAndNoNoise) {
 
 }  // namespace
 }  // namespace swarmagg
+
+namespace swarmagg {
+namespace {
+
+// The partition table's "better" column: a difference within the noise floor is no ranking.
+TEST(Report, ABetterVariantWithinTheNoiseFloorIsSaidToBe) {
+  FigureResult r;
+  r.figure = {.id = "fig25", .figures = "25", .title = "soysal", .worlds = {"soysal-5"}};
+  r.worlds.emplace_back();
+  r.worlds.back().name = "soysal-5";
+  PartitionComparison c;
+  c.models.resize(2);
+  c.errors = {{"original", 0.27, 0.22}, {"peripheral", 0.35, 0.21}, {"returns", 0.19, 0.22}};
+  r.partitions = c;
+  const std::string report = report_markdown({"quick", "kinematic", 1.0}, {r}, {});
+  EXPECT_NE(report.find("| returns (within noise of original) |"), std::string::npos) << report;
+  r.partitions->errors[0].error = 0.6;
+  r.partitions->errors[1].error = 0.5;
+  EXPECT_NE(report_markdown({"quick", "kinematic", 1.0}, {r}, {}).find("| returns |"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace swarmagg
