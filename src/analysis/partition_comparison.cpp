@@ -9,6 +9,7 @@
 #include "analysis/replicate_spread.hpp"
 #include "models/noise_floor.hpp"
 #include "models/return_probability.hpp"
+#include "models/soysal_model.hpp"
 
 namespace swarmagg {
 namespace {
@@ -90,10 +91,14 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
                     value = model.column("value");
   std::map<std::string, Trajectories> transient;
   std::map<std::string, Distribution> stationary;
+  std::map<std::string, Distribution> averaged;  // the model's own run averages
   while (model.next()) {
     if (model.cell(name) != "soysal") continue;
     const std::string& q = model.cell(quantity);
-    if (q.starts_with(kTransient)) {
+    if (q.starts_with(kRunAverageQuantity)) {
+      averaged[model.cell(variant)][q.substr(std::string(kRunAverageQuantity).size())] =
+          model.number(value);
+    } else if (q.starts_with(kTransient)) {
       transient[model.cell(variant)][q.substr(std::string(kTransient).size())].emplace_back(
           model.number(time), model.number(value));
     } else if (q.starts_with(kStationary)) {
@@ -110,7 +115,10 @@ PartitionComparison compare_partitions(const std::filesystem::path& run_folder) 
   const std::map<std::string, double> floors =
       read_noise_floors(run_folder / "model.csv", "soysal", kPartitionMetric);
   for (const std::string& v : variants) {
-    comparison.models.push_back(run_average(transient.at(v)));
+    // A model.csv written before the model averaged its run itself has only the report
+    // steps, which a large run.record_every spaces out.
+    comparison.models.push_back(averaged.contains(v) ? averaged.at(v)
+                                                     : run_average(transient.at(v)));
     comparison.stationary.push_back(stationary[v]);
     const auto floor = floors.find(v);
     comparison.errors.push_back(

@@ -33,4 +33,19 @@ std::vector<std::int64_t> sparse_grid(const WorldSpec& world, int points) {
   return grid;
 }
 
+std::vector<std::int64_t> integration_grid(const WorldSpec& world, int points) {
+  const std::int64_t last = world.steps();
+  std::vector<std::int64_t> grid{0};
+  if (last > 0) {
+    const double log_last = std::log(static_cast<double>(last));
+    for (int i = 0; i <= points; ++i) {
+      grid.push_back(std::llround(std::exp(log_last * i / points)));
+      grid.push_back(std::llround(static_cast<double>(last) * i / points));
+    }
+  }
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  return grid;
+}
+
 }  // namespace swarmagg

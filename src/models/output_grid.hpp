@@ -18,6 +18,11 @@ std::vector<std::int64_t> record_grid(const WorldSpec& world);
 // rounded to multiples of run.record_every, sorted, without duplicates.
 std::vector<std::int64_t> sparse_grid(const WorldSpec& world, int points);
 
+// 0, 1 and about `points` log-spaced and `points` evenly spaced whole steps up to
+// world.steps(), whatever run.record_every is: the steps over which a model's run average
+// is integrated, so that the average does not depend on how often the run records.
+std::vector<std::int64_t> integration_grid(const WorldSpec& world, int points);
+
 // Told how many more model steps a walk has taken, every kWalkProgressBatch steps and at its
 // end: the caller's progress line and its check for Ctrl-C (which throws out of the walk).
 using WalkProgress = std::function<void(std::int64_t steps)>;

@@ -114,8 +114,9 @@ std::vector<double> expected_sizes(const std::vector<Partition>& states,
   return by_size;
 }
 
-// The distribution averaged over the run, by the trapezoid rule over the report steps: what
-// the simulation's time fractions are compared with (analysis/partition_comparison.hpp).
+// The distribution averaged over the run, by the trapezoid rule over the steps of `grid`
+// (integration_grid's, fine at the start where the chain moves fastest): what the
+// simulation's time fractions are compared with (analysis/partition_comparison.hpp).
 Eigen::VectorXd run_average(const Eigen::MatrixXd& distributions,
                             const std::vector<std::int64_t>& grid) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(distributions.cols());
@@ -127,6 +128,28 @@ Eigen::VectorXd run_average(const Eigen::MatrixXd& distributions,
   const double span = static_cast<double>(grid.back() - grid.front());
   if (span > 0.0) return area / span;
   return distributions.row(distributions.rows() - 1).transpose();
+}
+
+// The chain's distribution at each step of `grid`, from `run`'s start: all free at step 0,
+// and from step run.start_step on the start distribution walked forward.
+Eigen::MatrixXd distributions_at(const PartitionChain& chain, const ChainRun& run,
+                                 const std::vector<std::int64_t>& grid,
+                                 const std::optional<Eigen::VectorXd>& stationary,
+                                 const WalkProgress& check) {
+  if (run.start_step == 0)
+    return transient_distributions(chain.generator, run.start, grid, stationary, check);
+  std::vector<std::int64_t> after_first(grid.size());
+  for (std::size_t j = 0; j < grid.size(); ++j)
+    after_first[j] = std::max<std::int64_t>(0, grid[j] - run.start_step);
+  Eigen::MatrixXd distributions =
+      transient_distributions(chain.generator, run.start, after_first, stationary, check);
+  for (std::size_t j = 0; j < grid.size(); ++j) {
+    if (grid[j] == 0) {
+      distributions.row(static_cast<Eigen::Index>(j)) =
+          Eigen::RowVectorXd::Unit(distributions.cols(), chain.all_free);
+    }
+  }
+  return distributions;
 }
 
 }  // namespace
@@ -165,31 +188,17 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
   const std::vector<std::int64_t> grid = sparse_grid(world, kPartitionReportPoints);
   std::optional<Eigen::VectorXd> stationary;
   if (chain.recurrent) stationary = stationary_distribution(chain.generator, check);
-  Eigen::MatrixXd distributions;
   ChainRun run{.start = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(chain.states.size()),
                                               chain.all_free),
                .start_step = 0,
                .steps = world.steps()};
-  if (start.empty() && !sampled) {
-    distributions =
-        transient_distributions(chain.generator, chain.all_free, grid, stationary, check);
-  } else {
+  if (!start.empty() || sampled) {
     // Step 0 is all free; from step 1 on the chain runs from the first decision's distribution.
-    std::vector<std::int64_t> after_first(grid.size());
-    for (std::size_t j = 0; j < grid.size(); ++j)
-      after_first[j] = std::max<std::int64_t>(0, grid[j] - 1);
     run.start = sampled ? sampled_first_decision_distribution(chain, *start_partitions)
                         : first_decision_distribution(chain, start);
     run.start_step = 1;
-    distributions =
-        transient_distributions(chain.generator, run.start, after_first, stationary, check);
-    for (std::size_t j = 0; j < grid.size(); ++j) {
-      if (grid[j] == 0) {
-        distributions.row(static_cast<Eigen::Index>(j)) =
-            Eigen::RowVectorXd::Unit(distributions.cols(), chain.all_free);
-      }
-    }
   }
+  const Eigen::MatrixXd distributions = distributions_at(chain, run, grid, stationary, check);
   for (std::size_t j = 0; j < grid.size(); ++j) {
     const Eigen::RowVectorXd distribution = distributions.row(static_cast<Eigen::Index>(j));
     prediction.series.push_back(expected_row(distribution, values, agents, grid[j]));
@@ -202,10 +211,16 @@ VariantPrediction soysal_prediction(const WorldSpec& world, const SoysalRates& r
       prediction.extra, grid.back(),
       expected_sizes(chain.states, distributions.row(distributions.rows() - 1), agents));
   if (stationary) add_stationary(chain, values, *stationary, prediction);
-  prediction.extra.push_back(
-      {std::string(kNoiseFloorQuantity) + kPartitionMetric, std::nullopt,
-       partition_noise_floor(chain, run, run_average(distributions, grid), world.run.replicates,
-                             world.run.seed, noise_floor_stream(variant))});
+  const std::vector<std::int64_t> fine = integration_grid(world, kPartitionAveragePoints);
+  const Eigen::VectorXd average =
+      run_average(distributions_at(chain, run, fine, stationary, check), fine);
+  for (std::size_t i = 0; i < chain.states.size(); ++i) {
+    prediction.extra.push_back({kRunAverageQuantity + partition_label(chain.states[i]),
+                                std::nullopt, average(static_cast<Eigen::Index>(i))});
+  }
+  prediction.extra.push_back({std::string(kNoiseFloorQuantity) + kPartitionMetric, std::nullopt,
+                              partition_noise_floor(chain, run, average, world.run.replicates,
+                                                    world.run.seed, noise_floor_stream(variant))});
   return prediction;
 }
 

@@ -19,6 +19,10 @@ namespace swarmagg {
 inline constexpr int kLargestPartitionChain = 6000;
 // About this many log-spaced and as many evenly spaced reporting steps.
 inline constexpr int kPartitionReportPoints = 50;
+// Steps (log-spaced and evenly spaced, each) over which the run-averaged distribution is
+// integrated, written to model.csv as "run_average:<partition>" rows without a step.
+inline constexpr int kPartitionAveragePoints = 400;
+inline constexpr const char* kRunAverageQuantity = "run_average:";
 
 // The first refusal of soysal_prediction, alone: InputError when N has more than
 // kLargestPartitionChain partitions.

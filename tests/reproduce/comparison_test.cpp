@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "analysis/partition_comparison.hpp"
@@ -32,6 +34,31 @@ TEST(PartitionComparison, TotalVariationIsHalfTheL1DistanceOverTheUnionOfPartiti
   const Distribution b{{"2+1", 0.25}, {"3", 0.75}};
   EXPECT_DOUBLE_EQ(total_variation(a, b), 0.5 * (0.25 + 0.5 + 0.75));
   EXPECT_DOUBLE_EQ(total_variation(a, a), 0.0);
+}
+
+// The model's own run average (model.csv's run_average rows) is what the simulation is
+// compared with; a model.csv without them (an earlier version's) is averaged over its report
+// steps by the trapezoid rule.
+TEST(PartitionComparison, TheModelsOwnRunAverageIsComparedWhenModelCsvHasIt) {
+  const auto folder = std::filesystem::temp_directory_path() /
+                      ("swarmagg-partitions-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "partitions.csv")
+      << "replicate,partition,time_fraction\n0,2,0.5\n0,1+1,0.5\n";
+  const std::string report_steps =
+      "model,variant,step,time,quantity,value\n"
+      "soysal,original,0,0,partition:1+1,1\nsoysal,original,0,0,partition:2,0\n"
+      "soysal,original,10,1,partition:1+1,0\nsoysal,original,10,1,partition:2,1\n"
+      "soysal,peripheral,0,0,partition:1+1,1\nsoysal,peripheral,10,1,partition:2,1\n";
+  std::ofstream(folder / "model.csv") << report_steps;
+  EXPECT_DOUBLE_EQ(compare_partitions(folder).models.front().at("2"), 0.5);
+  std::ofstream(folder / "model.csv") << report_steps
+                                      << "soysal,original,,,run_average:1+1,0.1\n"
+                                         "soysal,original,,,run_average:2,0.9\n";
+  const PartitionComparison c = compare_partitions(folder);
+  EXPECT_DOUBLE_EQ(c.models.front().at("2"), 0.9);
+  EXPECT_DOUBLE_EQ(c.errors.front().error, 0.4);
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
