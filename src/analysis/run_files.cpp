@@ -1,14 +1,21 @@
 #include "analysis/run_files.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/csv_reader.hpp"
+#include "analysis/csv_text.hpp"
 #include "config/world_loader.hpp"
 #include "core/errors.hpp"
+#include "models/output_grid.hpp"
+#include "output/timeseries_csv.hpp"
 #include "run/recorded_steps.hpp"
 
 namespace swarmagg {
@@ -101,27 +108,87 @@ RunFiles read_run_files(const std::filesystem::path& folder) {
   return run;
 }
 
-bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries) {
-  std::ifstream in(timeseries, std::ios::binary);
-  if (!in) return false;
-  std::int64_t lines = 0;
-  char last = '\n';
-  std::vector<char> block(std::size_t{1} << 16);  // a long run's file is gigabytes
-  while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
-    const auto read = static_cast<std::size_t>(in.gcount());
-    lines += std::count(block.data(), block.data() + read, '\n');
-    last = block[read - 1];
+namespace {
+
+// The timeseries.csv columns of counts: at most the world's agents (NOA at most half of them).
+constexpr std::size_t kFirstCount = 3, kFirstEvent = 9;
+
+// Why row `row` (replicate-major, as a run writes them) is not the run's, or "".
+std::string row_problem(const CsvReader& reader, const WorldSpec& spec,
+                        const std::vector<std::int64_t>& grid, std::int64_t row) {
+  const auto rows = static_cast<std::int64_t>(grid.size());
+  if (row >= spec.run.replicates * rows) return "a row after the last replicate's last state";
+  const std::int64_t replicate = row / rows, step = grid[static_cast<std::size_t>(row % rows)];
+  if (reader.number(0) != static_cast<double>(replicate) ||
+      reader.number(1) != static_cast<double>(step)) {
+    return "expected replicate " + std::to_string(replicate) + " at step " + std::to_string(step) +
+           " (every " + std::to_string(spec.run.record_every) +
+           " steps and the last), got replicate " + reader.cell(0) + " at step " + reader.cell(1);
   }
-  return last == '\n' && lines == 1 + spec.run.replicates * recorded_rows(spec);
+  if (!std::isfinite(reader.number(2)))
+    return "time: expected a number, got '" + reader.cell(2) + "'";
+  const double agents = spec.robots.count;
+  for (std::size_t column = kFirstCount; column < reader.header().size(); ++column) {
+    const double value = reader.number(column);
+    const double most = column >= kFirstEvent              ? std::numeric_limits<double>::max()
+                        : reader.header()[column] == "noa" ? std::floor(agents / 2)
+                                                           : agents;
+    if (std::isfinite(value) && value >= 0 && value <= most && value == std::floor(value)) continue;
+    return reader.header()[column] + ": expected a whole number " +
+           (column >= kFirstEvent ? std::string("of events, 0 or more")
+                                  : "from 0 to " + csv_number(most) + " (the world has " +
+                                        csv_number(agents) + " agents)") +
+           ", got '" + reader.cell(column) + "'";
+  }
+  return "";
+}
+
+bool ends_with_newline(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in.seekg(-1, std::ios::end)) return false;
+  return in.get() == '\n';
+}
+
+}  // namespace
+
+std::optional<std::string> timeseries_problem(const WorldSpec& spec,
+                                              const std::filesystem::path& timeseries) {
+  try {
+    CsvReader reader(timeseries);
+    std::string header;
+    for (const std::string& column : reader.header())
+      header += (header.empty() ? "" : ",") + column;
+    if (header != kTimeseriesHeader)
+      return "expected the header '" + std::string(kTimeseriesHeader) + "'";
+    const std::vector<std::int64_t> grid = record_grid(spec);
+    std::int64_t row = 0;
+    while (reader.next()) {
+      const std::string problem = row_problem(reader, spec, grid, row++);
+      if (!problem.empty()) return "line " + std::to_string(reader.line()) + ": " + problem;
+    }
+    if (row != spec.run.replicates * static_cast<std::int64_t>(grid.size()) ||
+        !ends_with_newline(timeseries)) {
+      return "does not hold exactly the run's rows (" + std::to_string(spec.run.replicates) +
+             " replicates of " + std::to_string(grid.size()) +
+             " rows each, the last ending its line)";
+    }
+    return std::nullopt;
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+}
+
+bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries) {
+  return !timeseries_problem(spec, timeseries);
 }
 
 void check_holds_every_row(const RunFiles& run) {
-  if (holds_every_row(run.world, run.timeseries)) return;
-  throw InputError(run.timeseries.string() + ": does not hold exactly the run's rows (" +
-                   std::to_string(run.world.run.replicates) + " replicates of " +
-                   std::to_string(recorded_rows(run.world)) +
-                   " rows each, the last ending its line): cut short or edited since; run the "
-                   "world again");
+  const std::optional<std::string> problem = timeseries_problem(run.world, run.timeseries);
+  if (!problem) return;
+  const std::string text = problem->starts_with(run.timeseries.string())
+                               ? *problem
+                               : run.timeseries.string() + ": " + *problem;
+  throw InputError(text + ": cut short or edited since; run the world again");
 }
 
 std::string run_title(const RunFiles& run) {

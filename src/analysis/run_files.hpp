@@ -30,8 +30,11 @@ struct RunFiles {
 // unreadable or summary.json does not fit the world (edited or damaged since).
 RunFiles read_run_files(const std::filesystem::path& folder);
 
-// Whether `timeseries` holds every row of every replicate of `spec` and ends with a whole line:
-// a file cut short, or edited by hand, describes another run than the folder's other files.
+// Why `timeseries` is not every row of every replicate of `spec` (in order, at the recorded
+// steps, counts that the world's agents can have, ending with a whole line), or nothing: a
+// file cut short, or edited by hand, describes another run than the folder's other files.
+std::optional<std::string> timeseries_problem(const WorldSpec& spec,
+                                              const std::filesystem::path& timeseries);
 bool holds_every_row(const WorldSpec& spec, const std::filesystem::path& timeseries);
 // Throws InputError naming the file unless it holds_every_row: for a stored run read back
 // (`plot`), not for the outputs a run has just written, which would only be read twice.

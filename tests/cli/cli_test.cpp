@@ -598,6 +598,33 @@ TEST(Cli, PlotRedrawsAStoredRunWithTheSameCsvsAndScripts) {
   const Outcome cut = swarmagg("plot " + run.string() + " --out " + redrawn.string());
   EXPECT_EQ(cut.exit_code, 2) << cut.output;
   EXPECT_THAT(cut.output, HasSubstr("timeseries.csv: does not hold exactly the run's rows"));
+  // Rows of as many lines that no run of the world writes: a count it cannot have, a step off
+  // its record grid. (kTinyRun: 20 agents, rows every 10 steps; line 3 is replicate 0, step 10.)
+  const auto with_line_3_cell = [&](std::size_t column, const std::string& value) {
+    std::string text = whole;
+    const auto begin = text.find('\n', text.find('\n') + 1) + 1;
+    const auto end = text.find('\n', begin);
+    std::vector<std::string> cells;
+    std::stringstream line(text.substr(begin, end - begin));
+    for (std::string cell; std::getline(line, cell, ',');) cells.push_back(cell);
+    cells.at(column) = value;
+    std::string edited;
+    for (const std::string& cell : cells) edited += (edited.empty() ? "" : ",") + cell;
+    text.replace(begin, end - begin, edited);
+    std::ofstream(run / "timeseries.csv", std::ios::trunc) << text;
+    return swarmagg("plot " + run.string() + " --out " + redrawn.string());
+  };
+  for (const auto& [column, value, said] :
+       {std::tuple{1, "11", "line 3: expected replicate 0 at step 10"},
+        std::tuple{3, "nan", "line 3: noa: expected a whole number from 0 to 10"},
+        std::tuple{3, "-999", "line 3: noa: expected a whole number from 0 to 10"},
+        std::tuple{3, "11", "line 3: noa: expected a whole number from 0 to 10"},
+        std::tuple{4, "2.5", "line 3: searching: expected a whole number from 0 to 20"},
+        std::tuple{10, "", "line 3: growths: expected a whole number of events"}}) {
+    const Outcome refused = with_line_3_cell(static_cast<std::size_t>(column), value);
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr(said)) << column << " = " << value;
+  }
   // A comparison's or an unmerged sweep's folder: what it is, and what to plot instead.
   for (const auto& [marker, said] : {std::pair{"compare.json", "a comparison's folder"},
                                      std::pair{"sweep.json", "a sweep's folder not merged yet"}}) {

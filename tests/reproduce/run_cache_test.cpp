@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
 
 #include "config/world_loader.hpp"
+#include "output/timeseries_csv.hpp"
 #include "run/run_folder.hpp"
 #include "testing/scratch_dir.hpp"
 
@@ -19,7 +21,15 @@ void write(const std::filesystem::path& file, const std::string& text) {
 
 // 2 replicates of 10 steps recorded every 4th step: steps 0, 4, 8 and 10, so 9 lines.
 const char* kCached = "name: cached\nrun: {duration: 1, replicates: 2, record_every: 4}\n";
-const char* kCachedRows = "h\n0\n4\n8\n10\n0\n4\n8\n10\n";
+
+// The rows of replicate r at `step`, `noa` aggregates and every other count 0.
+std::string row(int replicate, int step, const std::string& noa = "0") {
+  return std::to_string(replicate) + "," + std::to_string(step) + "," +
+         std::to_string(step / 10.0) + "," + noa + ",0,0,0,0,0,0,0,0,0,0\n";
+}
+const std::string kCachedRows = std::string(kTimeseriesHeader) + "\n" + row(0, 0) + row(0, 4) +
+                                row(0, 8) + row(0, 10) + row(1, 0) + row(1, 4) + row(1, 8) +
+                                row(1, 10);
 
 // A folder with every file run_is_reusable looks at, summary.json as given.
 void lay_out(const std::filesystem::path& folder, const WorldSpec& spec,
@@ -68,10 +78,17 @@ TEST(RunCache, DoesNotReuseAFolderMissingRowsOrPartitions) {
   testing::ScratchDir dir("run-cache-rows");
   lay_out(dir.path(), spec, R"({"model_errors": []})");
   ASSERT_TRUE(run_is_reusable(spec, dir.path()));
-  write(dir.path() / "timeseries.csv", "h\n0\n4\n8\n10\n0\n4\n");
+  write(dir.path() / "timeseries.csv", kCachedRows.substr(0, kCachedRows.rfind(row(1, 8))));
   EXPECT_FALSE(run_is_reusable(spec, dir.path()));
-  write(dir.path() / "timeseries.csv", std::string(kCachedRows) + "1");  // a line cut mid-way
+  write(dir.path() / "timeseries.csv", kCachedRows + "1");  // a line cut mid-way
   EXPECT_FALSE(run_is_reusable(spec, dir.path()));
+  // As many lines, one edited: a NOA no run of the world can have (REPORT.md's RMSE read it).
+  std::string edited = kCachedRows;
+  edited.replace(edited.find(row(1, 4)), row(1, 4).size(), row(1, 4, "999"));
+  write(dir.path() / "timeseries.csv", edited);
+  EXPECT_FALSE(run_is_reusable(spec, dir.path()));
+  write(dir.path() / "timeseries.csv", kCachedRows);
+  ASSERT_TRUE(run_is_reusable(spec, dir.path()));
   const WorldSpec soysal = load_world_text(
       std::string(kCached) + "robots: {count: 5}\ncontroller: {type: soysal}\n", "cached.yaml");
   lay_out(dir.path(), soysal, R"({"model_errors": []})");
