@@ -209,6 +209,31 @@ RatesAndModel write_rates_and_model(const WorldSpec& spec, const RunCommandOptio
   return written;
 }
 
+// The run writes these files and folders once it has simulated: a folder where a file goes
+// (or a file where a folder goes) would fail it after the run, which would be lost.
+void refuse_obstructed_outputs(const std::filesystem::path& out) {
+  std::error_code error;
+  for (const char* name :
+       {"world.resolved.yaml", "timeseries.csv", "summary.json", "partitions.csv", "model.csv",
+        "rates.csv", "rates.json", "trajectories.h5", "noa.png", "states.png", "sizes.png",
+        "partitions.png"}) {
+    if (std::filesystem::exists(out / name, error) &&
+        !std::filesystem::is_regular_file(out / name, error)) {
+      throw InputError(
+          (out / name).string() +
+          " is not a file, and the run writes one there: remove it, or pass --out DIR");
+    }
+  }
+  for (const char* name : {"model-timeseries", "plots"}) {
+    if (std::filesystem::exists(out / name, error) &&
+        !std::filesystem::is_directory(out / name, error)) {
+      throw InputError((out / name).string() +
+                       " is not a folder, and the run writes one there: remove it, or pass --out "
+                       "DIR");
+    }
+  }
+}
+
 // Every output path is checked before the first step: a long run must not be lost to a
 // folder it cannot write.
 void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
@@ -217,13 +242,7 @@ void check_outputs(const WorldSpec& spec, const RunCommandOptions& options,
   // process that is gone, not an earlier run to keep, so it does not make the folder refused.
   remove_stale_temporaries(out);
   if (!options.force) refuse_to_replace(out, "an earlier run?", "its run");
-  // The run ends by writing this file: a folder in its place would fail it after the run.
-  if (std::error_code error;
-      std::filesystem::exists(out / "world.resolved.yaml", error) &&
-      !std::filesystem::is_regular_file(out / "world.resolved.yaml", error)) {
-    throw InputError((out / "world.resolved.yaml").string() +
-                     " is not a file: remove it, or pass --out DIR");
-  }
+  refuse_obstructed_outputs(out);
   // A killed run's temporaries are garbage (they would only count against the disk the new
   // run needs): gone before it starts, from every folder a run writes into.
   if (options.force) {

@@ -59,6 +59,26 @@ TEST_F(OutputPaths, AFileAsOutIsRefusedBeforeTheFirstStep) {
   EXPECT_FALSE(fs::exists(frames / "frame_000000.png"));
 }
 
+// A folder where the run writes a file (or a file where it writes a folder) would fail the
+// run once simulated, with --force too: refused before the first step.
+TEST_F(OutputPaths, AnOutputPathTakenByAnotherKindIsRefusedBeforeTheFirstStep) {
+  for (const auto& [name, folder] :
+       {std::pair{"summary.json", true}, std::pair{"trajectories.h5", true},
+        std::pair{"model-timeseries", false}}) {
+    const fs::path out = dir_ / ("taken-" + std::string(name));
+    fs::create_directories(out);
+    if (folder) {
+      fs::create_directories(out / name);
+    } else {
+      std::ofstream(out / name) << "a file\n";
+    }
+    const Outcome o = swarmagg(kLongRun + "--force --out " + out.string());
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_THAT(o.output, HasSubstr((out / name).string() + " is not a " +
+                                    (folder ? "file" : "folder") + ", and the run writes one"));
+  }
+}
+
 TEST_F(OutputPaths, AFolderThatCannotBeCreatedIsRefusedBeforeTheFirstStep) {
   const Outcome below_a_file = swarmagg(kLongRun + "--out " + (dir_ / "afile" / "run").string());
   expect_refused(below_a_file, "--out", "is a file, so no folder can be made below it");
