@@ -21,7 +21,7 @@ inline constexpr int kLargestPartitionChain = 6000;
 inline constexpr int kPartitionReportPoints = 50;
 // Steps (log-spaced and evenly spaced, each) over which the run-averaged distribution is
 // integrated, written to model.csv as "run_average:<partition>" rows without a step.
-inline constexpr int kPartitionAveragePoints = 400;
+inline constexpr int kPartitionAveragePoints = 200;
 inline constexpr const char* kRunAverageQuantity = "run_average:";
 
 // The first refusal of soysal_prediction, alone: InputError when N has more than
