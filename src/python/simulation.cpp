@@ -35,7 +35,9 @@ namespace {
 // The PNG level frame recorders use, so a frame written here is the recorder's file.
 const int kFrameCompression = FrameRecorderOptions{}.compression_level;
 
-using Size = std::optional<std::pair<int, int>>;
+// (width, height) as Python passes it: integers read as whole_argument reads them, so that a
+// side beyond an int is the documented ValueError rather than pybind's "incompatible arguments".
+using Size = std::optional<std::pair<py::object, py::object>>;
 
 // A count or index as Python passes it: a bool or a float is a TypeError (True ran replicate
 // 1, or one step), a number outside [0, most] a ValueError naming the argument (pybind's own
@@ -117,12 +119,12 @@ class Simulation {
 
   std::string hash() const { return state_hash_text(state_hash(*replicate_)); }
 
-  void render_png(const std::filesystem::path& path, Size size) {
+  void render_png(const std::filesystem::path& path, const Size& size) {
     FrameRenderer& renderer = renderer_for(size);
     write_png(path, renderer.width(), renderer.height(), renderer.render(replicate_->snapshot()),
               kFrameCompression);
   }
-  py::array_t<std::uint8_t> frame(Size size) {
+  py::array_t<std::uint8_t> frame(const Size& size) {
     FrameRenderer& renderer = renderer_for(size);
     py::array_t<std::uint8_t> pixels({renderer.height(), renderer.width(), 4});
     renderer.render(
@@ -144,9 +146,12 @@ class Simulation {
   }
 
   // One renderer, kept while the size stays (its context and shaders cost a first frame).
-  FrameRenderer& renderer_for(Size size) {
-    const auto [width, height] =
-        size.value_or(std::pair{world_.spec->render.width, world_.spec->render.height});
+  FrameRenderer& renderer_for(const Size& size) {
+    constexpr std::int64_t kMostSide = std::numeric_limits<int>::max();
+    const int width = size ? static_cast<int>(whole_argument(size->first, "size", kMostSide))
+                           : world_.spec->render.width;
+    const int height = size ? static_cast<int>(whole_argument(size->second, "size", kMostSide))
+                            : world_.spec->render.height;
     if (!renderer_ || renderer_->width() != width || renderer_->height() != height)
       renderer_ = std::make_unique<FrameRenderer>(width, height);
     return *renderer_;

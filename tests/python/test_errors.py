@@ -235,3 +235,13 @@ def test_sweep_threads_are_checked_as_run_threads_are(tmp_path):
     with pytest.raises(ValueError, match="threads: expected 0 .all cores. to 1024, got 1099511627776"):
         sa.sweep(ROOT / "examples" / "sweeps" / "p-leave-vs-count.yaml", tmp_path / "s",
                  threads=2**40)
+
+
+def test_a_frame_size_beyond_an_int_is_a_value_error_naming_it(demo):
+    sim = sa.Simulation(sa.load_world(str(demo), set={"run.duration": 1}))
+    with pytest.raises(ValueError, match="size: expected a whole number"):
+        sim.frame((2**31, 64))
+    with pytest.raises(ValueError, match="each side must be between"):
+        sim.frame((100000, 64))
+    with pytest.raises(TypeError, match="size: expected an integer, got a bool"):
+        sim.frame((True, 64))
