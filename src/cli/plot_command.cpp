@@ -4,6 +4,7 @@
 #include "analysis/run_files.hpp"
 #include "cli/commands.hpp"
 #include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 #include "output/output_check.hpp"
 #include "plot/run_plots.hpp"
 #include "plot/sweep_plots.hpp"
@@ -60,6 +61,10 @@ int plot_command(const PlotCommandOptions& options) {
   if (!options.out.empty()) {
     check_output_folder(out, "--out");
     if (!options.force) refuse_anothers_plots(folder, out);
+  }
+  // A killed plot's hidden scripts and PNGs (plot/staged_script.hpp) are garbage.
+  for (const std::filesystem::path& drawn : {out, out / "plots"}) {
+    if (std::filesystem::is_directory(drawn)) remove_stale_temporaries(drawn);
   }
   const bool sweep = std::filesystem::exists(folder / kSweepSummaryFile);
   if (!sweep) {

@@ -39,7 +39,8 @@ void run_gnuplot(const std::filesystem::path& script_path, const std::string& sc
       staged.to_run().filename(),
       script_path.parent_path().empty() ? std::filesystem::path(".") : script_path.parent_path());
   if (!exit.succeeded) {
-    throw std::runtime_error("gnuplot failed on " + script_path.string() + ":\n" + exit.messages);
+    throw std::runtime_error("gnuplot failed on " + script_path.string() + ":\n" +
+                             staged.named_as_script(exit.messages));
   }
   staged.commit();
 }

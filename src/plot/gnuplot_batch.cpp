@@ -62,7 +62,7 @@ std::filesystem::path folder_of(const std::filesystem::path& script) {
 void commit(StagedScript& script, std::vector<GnuplotFailure>& failures) {
   try {
     script.commit();
-  } catch (const std::system_error& e) {
+  } catch (const std::runtime_error& e) {  // system_error too
     failures.push_back({script.script(), e.what()});
   }
 }
@@ -105,8 +105,8 @@ std::vector<GnuplotFailure> GnuplotBatch::draw() {
     if (exit.succeeded) {
       commit(script, failures);
     } else {
-      failures.push_back({script.script(),
-                          "gnuplot failed on " + script.script().string() + ":\n" + exit.messages});
+      failures.push_back({script.script(), "gnuplot failed on " + script.script().string() + ":\n" +
+                                               script.named_as_script(exit.messages)});
     }
   }
   return failures;

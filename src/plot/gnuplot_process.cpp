@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -76,9 +77,15 @@ GnuplotExit run_gnuplot_process(const std::filesystem::path& command_file,
   const int spawned = posix_spawn(&child, gnuplot.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) throw std::runtime_error("cannot start gnuplot for " + file);
+  // A signal (Ctrl-C) interrupts the wait without ending gnuplot's: waited for again. A wait
+  // that fails otherwise is a failure, never a success read from an unset status.
   int status = 0;
-  waitpid(child, &status, 0);
-  GnuplotExit exit{.succeeded = WIFEXITED(status) && WEXITSTATUS(status) == 0,
+  pid_t waited = 0;
+  do {
+    waited = waitpid(child, &status, 0);
+  } while (waited < 0 && errno == EINTR);
+  if (waited < 0) status = -1;
+  GnuplotExit exit{.succeeded = waited > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0,
                    .messages = read_text(log)};
   std::filesystem::remove(log);
   return exit;

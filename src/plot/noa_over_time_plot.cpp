@@ -41,9 +41,13 @@ void check_model_reaches(const std::vector<ModelCurve>& curves, const std::files
                          double last_time) {
   for (const ModelCurve& curve : curves) {
     if (std::abs(curve.x.back() - last_time) <= 1e-9 * std::max(1.0, std::abs(last_time))) continue;
+    const std::string folder = file.parent_path().empty() ? "." : file.parent_path().string();
     throw InputError(file.string() + ": the model's " + curve.variant + " curve ends at time " +
                      csv_number(curve.x.back()) + ", the run at time " + csv_number(last_time) +
-                     ": cut short or edited since; run the world again");
+                     (curve.x.back() > last_time
+                          ? ": a model of another run; `swarmagg model " + folder +
+                                "/world.resolved.yaml --out " + folder + "` gives this run's"
+                          : ": cut short or edited since; run the world again"));
   }
 }
 

@@ -2,9 +2,11 @@
 
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "output/atomic_file.hpp"
 #include "plot/gnuplot.hpp"
+#include "plot/png_size.hpp"
 
 namespace swarmagg {
 namespace {
@@ -57,9 +59,25 @@ StagedScript::~StagedScript() {
   for (const auto& [temporary, png] : outputs_) discard_temporary(temporary);
 }
 
+std::string StagedScript::named_as_script(std::string messages) const {
+  const std::string copy = to_run_.filename().string(), script = script_.filename().string();
+  for (auto at = messages.find(copy); at != std::string::npos;
+       at = messages.find(copy, at + script.size()))
+    messages.replace(at, copy.size(), script);
+  return messages;
+}
+
 void StagedScript::commit() {
   auto outputs = std::move(outputs_);
   outputs_.clear();
+  // gnuplot says nothing when a PNG could not be written whole (a full disk): such a plot
+  // must not replace the earlier one.
+  for (const auto& [temporary, png] : outputs) {
+    if (png.extension() == ".png" && !png_complete(temporary)) {
+      for (const auto& output : outputs) discard_temporary(output.first);
+      throw std::runtime_error(png.string() + ": gnuplot wrote an incomplete file (disk full?)");
+    }
+  }
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     try {
       rename_or_discard(outputs[k].first, outputs[k].second);

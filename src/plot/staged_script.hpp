@@ -26,6 +26,8 @@ class StagedScript {
   const std::filesystem::path& script() const { return script_; }
   // The copy to load, in the script's folder.
   const std::filesystem::path& to_run() const { return to_run_; }
+  // gnuplot's messages about the copy, naming the user's script instead (the same lines).
+  std::string named_as_script(std::string messages) const;
   // Once gnuplot drew the copy: its PNGs replace the earlier ones (std::system_error naming a
   // PNG that cannot be written).
   void commit();
