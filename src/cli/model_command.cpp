@@ -42,6 +42,13 @@ struct ModelCommandOptions {
 // have measured them, with a warning for each reason to doubt they belong to it.
 MeasuredTerms read_measured_terms(const std::string& rates_csv, const WorldSpec& spec) {
   const std::vector<RateRow> rows = read_rates_csv(rates_csv);
+  // A header alone measured nothing: its `measured` variants would be the world's own, named
+  // as measured.
+  if (rows.empty()) {
+    throw InputError(rates_csv +
+                     ": holds a header but no rows; expected the terms a run measured (the "
+                     "rates.csv of `swarmagg rates` or `run --rates`)");
+  }
   MeasuredTerms terms = measured_terms(rows);
   try {
     check_measured_terms(spec, terms);

@@ -239,7 +239,8 @@ WorldKey optional_real_key(std::string path, Access<std::optional<double>> acces
 }
 
 WorldKey name_key() {
-  const std::string expected = "a name of letters, digits, '-', '_' or '.'";
+  const std::string expected =
+      "a name of 1 to 128 letters, digits, '-', '_' or '.', not starting with '.'";
   auto read = [expected](WorldSpec& w, const YAML::Node& node) {
     const std::string text = scalar_text(node, expected);
     const bool ok = !text.empty() && text.size() <= 128 && text.front() != '.' &&

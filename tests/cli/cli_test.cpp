@@ -160,6 +160,12 @@ TEST(Cli, AWalledRunNotesThatTheModelsHaveNoWalls) {
 }
 
 TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
+  // A rates.csv with its header and no rows measured nothing: a `measured` variant from it
+  // would be the world's own model under another name.
+  const std::filesystem::path header_only = temp_dir("header-only-rates") / "rates.csv";
+  std::filesystem::create_directories(header_only.parent_path());
+  std::ofstream(header_only) << "term,size,events,exposure,rate,ci_low,ci_high,model,variant,"
+                                "model_rate\n";
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"run /nonexistent.yaml", "/nonexistent.yaml"},
       {"validate worlds/examples/demo.yaml --set robots.radius=-2", "robots.radius"},
@@ -173,6 +179,9 @@ TEST(Cli, BadInputExitsTwoWithTheFileAndKey) {
        "--set: 'robots' is a block of keys: set one of them, e.g. robots."},
       {"model worlds/examples/demo.yaml --rates worlds --out " + temp_dir("model-rates").string(),
        "worlds: is a folder; expected the rates.csv of `swarmagg rates` or `run --rates`"},
+      {"model worlds/examples/demo.yaml --rates " + header_only.string() + " --out " +
+           temp_dir("model-header-only").string(),
+       "rates.csv: holds a header but no rows; expected the terms a run measured"},
       {"video /nonexistent-frames v.mp4", "/nonexistent-frames: no such folder"},
       // Frame and video options a run would not use: the frames or video expected would not
       // come.
